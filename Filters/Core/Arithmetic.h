@@ -1,0 +1,132 @@
+// Number types for the walks through Voronoi faces. Walk points are iterated
+// rational constructions, so predicates on them are evaluated with interval
+// arithmetic first and redone with exact rationals when an interval cannot
+// decide (flow-complex-algorithm.md §4.4).
+#ifndef flowrecon_Arithmetic_h
+#define flowrecon_Arithmetic_h
+
+#include "FlowComplex.h"
+
+#include <CGAL/Exact_rational.h>
+#include <CGAL/FPU.h>
+#include <CGAL/Interval_nt.h>
+#include <CGAL/Uncertain.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace flowrecon
+{
+
+using IntervalFT = CGAL::Interval_nt_advanced; // needs a Protect_FPU_rounding scope
+using ExactFT = CGAL::Exact_rational;
+
+template <class FT>
+struct Vec
+{
+  FT X, Y, Z;
+
+  static Vec From(const Point3& p) { return Vec{ FT(p[0]), FT(p[1]), FT(p[2]) }; }
+  Vec operator+(const Vec& o) const { return Vec{ X + o.X, Y + o.Y, Z + o.Z }; }
+  Vec operator-(const Vec& o) const { return Vec{ X - o.X, Y - o.Y, Z - o.Z }; }
+  Vec operator*(const FT& s) const { return Vec{ X * s, Y * s, Z * s }; }
+  Vec operator/(const FT& s) const { return Vec{ X / s, Y / s, Z / s }; }
+  FT Dot(const Vec& o) const { return X * o.X + Y * o.Y + Z * o.Z; }
+  FT SquaredLength() const { return this->Dot(*this); }
+  Vec Cross(const Vec& o) const
+  {
+    return Vec{ Y * o.Z - Z * o.Y, Z * o.X - X * o.Z, X * o.Y - Y * o.X };
+  }
+  Point3 ToDouble() const { return Point3{ { CGAL::to_double(X), CGAL::to_double(Y), CGAL::to_double(Z) } }; }
+};
+
+/// Sign of x; throws CGAL::Uncertain_conversion_exception if an interval cannot tell.
+inline int CertainSign(const IntervalFT& x)
+{
+  return static_cast<int>(CGAL::sign(x).make_certain());
+}
+inline int CertainSign(const ExactFT& x)
+{
+  return static_cast<int>(CGAL::sign(x));
+}
+
+/// Circumcentre of triangle abc inside its own plane.
+template <class FT>
+Vec<FT> Circumcenter(const Vec<FT>& a, const Vec<FT>& b, const Vec<FT>& c)
+{
+  const Vec<FT> u = b - a, v = c - a;
+  const Vec<FT> n = u.Cross(v);
+  return a + (v * u.SquaredLength() - u * v.SquaredLength()).Cross(n) / (FT(2) * n.SquaredLength());
+}
+
+/// Circumcentre of tetrahedron abcd.
+template <class FT>
+Vec<FT> Circumcenter(const Vec<FT>& a, const Vec<FT>& b, const Vec<FT>& c, const Vec<FT>& d)
+{
+  const Vec<FT> u = b - a, v = c - a, w = d - a;
+  const Vec<FT> num =
+    v.Cross(w) * u.SquaredLength() + w.Cross(u) * v.SquaredLength() + u.Cross(v) * w.SquaredLength();
+  return a + num / (FT(2) * u.Dot(v.Cross(w)));
+}
+
+/// Run f<IntervalFT>() under directed rounding; if an interval comparison is
+/// undecided, run f<ExactFT>(). `fallbacks` counts the exact reruns.
+template <class F>
+auto Filtered(F&& f, Id& fallbacks)
+{
+  {
+    try
+    {
+      CGAL::Protect_FPU_rounding<true> protect;
+      return f(IntervalFT());
+    }
+    catch (CGAL::Uncertain_conversion_exception&)
+    {
+    }
+  }
+  ++fallbacks;
+  return f(ExactFT());
+}
+
+inline bool IsTight(const IntervalFT& x)
+{
+  const double w = x.sup() - x.inf();
+  return std::isfinite(w) && w <= 1e-15 * std::max(std::fabs(x.inf()), std::fabs(x.sup()));
+}
+
+/// Doubles within a relative 1e-15 of the exact values of a rational construction
+/// f<FT>() -> std::array<FT, N>: interval values when tight, else exact ones.
+template <std::size_t N, class F>
+std::array<double, N> Certified(F&& f)
+{
+  {
+    CGAL::Protect_FPU_rounding<true> protect;
+    const std::array<IntervalFT, N> r = f(IntervalFT());
+    bool tight = true;
+    for (const IntervalFT& x : r)
+    {
+      tight = tight && IsTight(x);
+    }
+    if (tight)
+    {
+      std::array<double, N> out;
+      for (std::size_t i = 0; i < N; ++i)
+      {
+        out[i] = CGAL::to_double(r[i]);
+      }
+      return out;
+    }
+  }
+  const std::array<ExactFT, N> r = f(ExactFT());
+  std::array<double, N> out;
+  for (std::size_t i = 0; i < N; ++i)
+  {
+    out[i] = CGAL::to_double(r[i]);
+  }
+  return out;
+}
+
+} // namespace flowrecon
+
+#endif

@@ -1,0 +1,30 @@
+// CGAL types of the core: exact predicates on the input points (EPICK), a 3D
+// Delaunay triangulation whose vertices carry the input id and whose cells carry
+// a dense index (for per-cell memo tables).
+#ifndef flowrecon_Delaunay_h
+#define flowrecon_Delaunay_h
+
+#include "FlowComplex.h"
+
+#include <CGAL/Delaunay_triangulation_3.h>
+#include <CGAL/Delaunay_triangulation_cell_base_3.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_cell_base_with_info_3.h>
+#include <CGAL/Triangulation_vertex_base_with_info_3.h>
+
+namespace flowrecon
+{
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using KPoint = Kernel::Point_3;
+using VertexBase = CGAL::Triangulation_vertex_base_with_info_3<Id, Kernel>;
+using CellBase = CGAL::Triangulation_cell_base_with_info_3<Id, Kernel,
+  CGAL::Delaunay_triangulation_cell_base_3<Kernel>>;
+using Tds = CGAL::Triangulation_data_structure_3<VertexBase, CellBase>;
+using Delaunay = CGAL::Delaunay_triangulation_3<Kernel, Tds>;
+using VertexHandle = Delaunay::Vertex_handle;
+using CellHandle = Delaunay::Cell_handle;
+
+} // namespace flowrecon
+
+#endif

@@ -1,0 +1,117 @@
+// The flow complex of the distance function to a finite point set in R^3:
+// critical points (Hasse nodes), their incidences (Hasse arcs) and the
+// geometry of their stable and unstable manifolds. Plain data, no VTK.
+#ifndef flowrecon_FlowComplex_h
+#define flowrecon_FlowComplex_h
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace flowrecon
+{
+
+using Id = std::int64_t;
+using Point3 = std::array<double, 3>;
+
+/// A critical point of d_P, i.e. a node of the Hasse diagram.
+struct Node
+{
+  int Index = 0;                  ///< 0..3; the maximum at infinity has index 3
+  double Value = 0;               ///< d_P at the critical point (+inf for infinity)
+  Point3 Location{ { 0, 0, 0 } }; ///< the critical point (for infinity: bounding-box centre)
+  std::array<Id, 4> Simplex{ { -1, -1, -1, -1 } }; ///< sorted input ids of N(x), -1 padded
+  bool IsInfinity() const { return Simplex[0] < 0; }
+};
+
+/// Arc of the Hasse diagram from an index-i node to an index-(i+1) node.
+/// Multiplicity counts how many times the flow arrives: for 1->2 arcs the number of
+/// descending walks of the upper stable manifold ending on the Gabriel edge, for
+/// 2->3 arcs how many of the two unstable flow lines reach the maximum.
+struct Arc
+{
+  Id Lower = -1;
+  Id Upper = -1;
+  int Multiplicity = 1;
+};
+
+/// One unstable flow line of an index-2 point, from the point to a maximum.
+struct FlowLine
+{
+  Id Node = -1;              ///< the index-2 node it leaves
+  Id Target = -1;            ///< the maximum (possibly the maximum at infinity)
+  std::vector<Point3> Points; ///< polyline; ends with a finite stub when Target is infinity
+};
+
+/// What was done about degenerate input (§2.6 of flow-complex-algorithm.md).
+struct DegeneracyReport
+{
+  Id InputPoints = 0;
+  Id DuplicatePoints = 0;     ///< merged into their first occurrence
+  Id RightAngles = 0;         ///< right triangles seen in the first attempt
+  Id ApexOnSphere = 0;        ///< apex on a facet's diametral sphere (first attempt)
+  Id WalkTies = 0;            ///< ties or zero steps met by a walk (first attempt)
+  int Attempts = 1;           ///< 1 = no perturbation was needed
+  double PerturbationMagnitude = 0; ///< max displacement applied to each coordinate
+  Id ExactFallbacks = 0;      ///< walks whose interval filter failed and were redone exactly
+  bool Perturbed() const { return Attempts > 1; }
+};
+
+/// Wall-clock seconds per phase.
+struct Timings
+{
+  double Delaunay = 0, CriticalPoints = 0, StableManifolds = 0, UnstableManifolds = 0,
+         Assembly = 0, Total = 0;
+};
+
+struct FlowComplex
+{
+  /// Vertices of all manifold geometry: the input points first (ids = input ids),
+  /// then constructed points (critical points and walk vertices).
+  std::vector<Point3> Points;
+  Id NumberOfInputPoints = 0;
+  /// Representative[i] = the input id that stands for input point i (duplicates merged).
+  std::vector<Id> Representative;
+
+  /// Nodes sorted by (Index, Simplex); the maximum at infinity is the last one.
+  std::vector<Node> Nodes;
+  Id InfinityNode = -1;
+  /// Point id (into Points) of each node's critical point; -1 for infinity.
+  std::vector<Id> NodePoint;
+  /// Arcs sorted by (Lower, Upper).
+  std::vector<Arc> Arcs;
+
+  /// Stable manifolds. Index 0: the sample itself; index 1: its Gabriel edge
+  /// (Simplex[0], Simplex[1]). Index 2: triangles over Points, grouped by node.
+  std::vector<std::array<Id, 3>> Triangles;
+  std::vector<Id> TriangleNode;
+  /// Index 3: tetrahedra (cone from the maximum over its odd-multiplicity boundary patches).
+  std::vector<std::array<Id, 4>> Tetrahedra;
+  std::vector<Id> TetrahedronNode;
+
+  /// Unstable manifolds of index-2 nodes: two flow lines each.
+  std::vector<FlowLine> FlowLines;
+
+  DegeneracyReport Report;
+  Timings Time;
+
+  /// Number of nodes of each index 0..3, the maximum at infinity not counted.
+  std::array<Id, 4> CountByIndex() const
+  {
+    std::array<Id, 4> n{ { 0, 0, 0, 0 } };
+    for (const Node& node : this->Nodes)
+    {
+      if (!node.IsInfinity())
+      {
+        ++n[node.Index];
+      }
+    }
+    return n;
+  }
+};
+
+} // namespace flowrecon
+
+#endif

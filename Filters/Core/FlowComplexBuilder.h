@@ -1,0 +1,30 @@
+// Computes the flow complex of a point cloud: the entry point of the core.
+#ifndef flowrecon_FlowComplexBuilder_h
+#define flowrecon_FlowComplexBuilder_h
+
+#include "FlowComplex.h"
+#include "Progress.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace flowrecon
+{
+
+struct BuildOptions
+{
+  bool StableManifolds = true;   ///< triangulated index-2 patches and index-3 cones
+  bool UnstableManifolds = true; ///< polylines of index-2 unstable manifolds
+  std::uint64_t Seed = 1;        ///< seed of the perturbation of degenerate input
+  int MaxAttempts = 6;           ///< perturbations tried before giving up
+};
+
+/// The flow complex of `points`. Throws InputError for unusable input (non-finite
+/// coordinates, fewer than 4 distinct points, coplanar points) and Aborted when
+/// `progress` asks to stop. Degenerate input is perturbed (see Report).
+FlowComplex BuildFlowComplex(
+  const std::vector<Point3>& points, const BuildOptions& options, const Progress& progress);
+
+} // namespace flowrecon
+
+#endif

@@ -1,0 +1,34 @@
+// Turning raw samples into triangulation input: validation, merging of
+// duplicate points, and the deterministic perturbation used when the input is
+// not in general position (§2.6 of flow-complex-algorithm.md).
+#ifndef flowrecon_InputPreparation_h
+#define flowrecon_InputPreparation_h
+
+#include "FlowComplex.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace flowrecon
+{
+
+struct PreparedInput
+{
+  std::vector<Point3> Unique;  ///< distinct points, in order of first occurrence
+  std::vector<Id> InputId;     ///< input id of each unique point
+  std::vector<Id> Representative; ///< per input point: the input id standing for it
+  double Diagonal = 0;         ///< bounding-box diagonal
+  Point3 Centre{ { 0, 0, 0 } };
+};
+
+/// Checks coordinates (finite), merges exact duplicates and requires at least 4
+/// distinct points. Throws InputError with a one-line message.
+PreparedInput PrepareInput(const std::vector<Point3>& points);
+
+/// `points` moved by a pseudo-random amount of at most `magnitude` per coordinate;
+/// the same seed always gives the same result on every platform.
+std::vector<Point3> Perturb(const std::vector<Point3>& points, double magnitude, std::uint64_t seed);
+
+} // namespace flowrecon
+
+#endif

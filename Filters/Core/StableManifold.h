@@ -1,0 +1,31 @@
+// The stable manifold of an index-2 critical point: the descending walk through
+// Voronoi facets of flow-complex-algorithm.md §4.2 (Giesen & John's
+// STABLEFLOWCOMPLEX). It yields a triangulated patch and the Gabriel edges the
+// walk arrives at (the 1-2 incidences, with multiplicity).
+#ifndef flowrecon_StableManifold_h
+#define flowrecon_StableManifold_h
+
+#include "CriticalSimplices.h"
+
+namespace flowrecon
+{
+
+struct Patch
+{
+  /// Constructed vertices; [0] is the critical point c_f.
+  std::vector<Point3> Constructed;
+  /// Triangles; a vertex v >= 0 is a triangulation vertex, v < 0 is Constructed[-1 - v].
+  std::vector<std::array<Id, 3>> Triangles;
+  /// Positions in CriticalSimplices::Edges of the Gabriel edges reached, one per arrival.
+  std::vector<Id> Arrivals;
+};
+
+/// Stable manifold of the acute Gabriel facet `facet`. With `withGeometry` false
+/// only Arrivals are filled. Throws Degenerate if the walk meets a Voronoi vertex.
+/// `fallbacks` counts walks redone in exact arithmetic.
+Patch ComputeStableManifold(const Triangulation& tri, const CriticalSimplices& cs,
+  const std::array<Id, 3>& facet, bool withGeometry, Id& fallbacks);
+
+} // namespace flowrecon
+
+#endif

@@ -1,0 +1,66 @@
+// Unstable manifolds (§5 of flow-complex-algorithm.md): from a Voronoi vertex
+// c_T the future of the flow is determined, so NEXT(T) is computed once per
+// Delaunay cell (lazily, memoised) and ROOT(T) -- the maximum reached, or
+// infinity -- follows NEXT with memoisation.
+#ifndef flowrecon_SuccessorForest_h
+#define flowrecon_SuccessorForest_h
+
+#include "Triangulation.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace flowrecon
+{
+
+class SuccessorForest
+{
+public:
+  /// `maximumOfCell[cellId]` is the node id of the maximum at a self-centred cell
+  /// (else -1); `infinity` the node id of the maximum at infinity; `stub` the
+  /// length of the segment drawn for a flow line that escapes to infinity.
+  SuccessorForest(const Triangulation& tri, const std::vector<Id>& maximumOfCell, Id infinity,
+    double stub);
+
+  /// The maximum reached by the flow from the Voronoi vertex of finite cell `cell`.
+  Id Root(Id cell);
+
+  /// Appends the polyline of the flow from c_T (excluded) to its maximum, or to a
+  /// stub pointing toward infinity.
+  void AppendPath(Id cell, std::vector<Point3>& out);
+
+  /// Circumcentre of a finite cell (certified double).
+  Point3 Circumcentre(Id cell) const;
+
+  Id ExactFallbacks = 0;
+
+private:
+  enum : std::int8_t
+  {
+    Unknown,
+    ToMaximum,
+    ToCell,
+    ToInfinity
+  };
+  struct Step
+  {
+    std::int8_t Kind = Unknown;
+    Id Target = -1;          // node id (ToMaximum) or cell id (ToCell)
+    std::uint32_t PathCount = 0;
+    std::int64_t PathBegin = 0; // into Paths: walk points (and the stub for ToInfinity)
+  };
+  const Step& Next(Id cell);
+  void ComputeNext(Id cell, Step& step);
+
+  const Triangulation& Tri;
+  const std::vector<Id>& MaximumOfCell;
+  Id Infinity;
+  double Stub;
+  std::vector<Step> Steps;
+  std::vector<Id> Roots;
+  std::vector<Point3> Paths;
+};
+
+} // namespace flowrecon
+
+#endif

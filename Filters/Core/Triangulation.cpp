@@ -1,0 +1,85 @@
+#include "Triangulation.h"
+
+#include <utility>
+
+namespace flowrecon
+{
+
+Triangulation::Triangulation(const std::vector<Point3>& points)
+  : Coords(points)
+{
+  std::vector<std::pair<KPoint, Id>> items;
+  items.reserve(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    items.emplace_back(KPoint(points[i][0], points[i][1], points[i][2]), static_cast<Id>(i));
+  }
+  // The range insertion spatially sorts the points first.
+  this->DT.insert(items.begin(), items.end());
+  std::vector<std::pair<KPoint, Id>>().swap(items);
+
+  this->Vertices.assign(points.size(), VertexHandle());
+  for (auto v = this->DT.finite_vertices_begin(); v != this->DT.finite_vertices_end(); ++v)
+  {
+    this->Vertices[v->info()] = v;
+  }
+  for (auto c = this->DT.all_cells_begin(); c != this->DT.all_cells_end(); ++c)
+  {
+    c->info() = -1;
+  }
+  this->Cells.reserve(this->DT.number_of_finite_cells());
+  for (auto c = this->DT.finite_cells_begin(); c != this->DT.finite_cells_end(); ++c)
+  {
+    c->info() = static_cast<Id>(this->Cells.size());
+    this->Cells.push_back(c);
+  }
+}
+
+bool Triangulation::Link(Id u, Id v, std::vector<Id>& out) const
+{
+  CellHandle cell;
+  int i = 0, j = 0;
+  if (!this->DT.is_edge(this->Vertices[u], this->Vertices[v], cell, i, j))
+  {
+    return false;
+  }
+  // Consecutive cells around the edge share one link vertex: collect each once.
+  const std::size_t first = out.size();
+  auto start = this->DT.incident_cells(Delaunay::Edge(cell, i, j));
+  auto cc = start;
+  do
+  {
+    for (int k = 0; k < 4; ++k)
+    {
+      const VertexHandle w = cc->vertex(k);
+      if (w == this->Vertices[u] || w == this->Vertices[v] || this->DT.is_infinite(w))
+      {
+        continue;
+      }
+      const Id id = w->info();
+      bool seen = false;
+      for (std::size_t t = first; t < out.size(); ++t)
+      {
+        seen = seen || out[t] == id;
+      }
+      if (!seen)
+      {
+        out.push_back(id);
+      }
+    }
+  } while (++cc != start);
+  return true;
+}
+
+bool Triangulation::Facet(Id a, Id b, Id c, CellHandle& cell, int& opposite) const
+{
+  int i = 0, j = 0, k = 0;
+  if (!this->DT.is_facet(this->Vertices[a], this->Vertices[b], this->Vertices[c], cell, i, j, k))
+  {
+    return false;
+  }
+  opposite = 6 - i - j - k;
+  return true;
+}
+
+} // namespace flowrecon

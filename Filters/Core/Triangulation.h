@@ -1,0 +1,50 @@
+// The Delaunay triangulation of the (deduplicated) samples, with the queries the
+// flow-complex walks need: vertex handles by sample index, dense cell ids, the
+// link of an edge and the cells of a facet.
+#ifndef flowrecon_Triangulation_h
+#define flowrecon_Triangulation_h
+
+#include "Delaunay.h"
+
+#include <vector>
+
+namespace flowrecon
+{
+
+class Triangulation
+{
+public:
+  /// Builds the triangulation of `points` (inserted with spatial sorting); vertex
+  /// info is the index into `points`. Points must be pairwise distinct.
+  explicit Triangulation(const std::vector<Point3>& points);
+
+  const Delaunay& Dt() const { return this->DT; }
+  int Dimension() const { return this->DT.dimension(); }
+  const Point3& Coord(Id k) const { return this->Coords[k]; }
+  const KPoint& KCoord(Id k) const { return this->Vertices[k]->point(); }
+  VertexHandle Vertex(Id k) const { return this->Vertices[k]; }
+  Id NumberOfVertices() const { return static_cast<Id>(this->Vertices.size()); }
+
+  /// Dense ids 0..NumberOfCells()-1 of the finite cells; -1 for infinite ones.
+  Id CellId(CellHandle c) const { return c->info(); }
+  CellHandle Cell(Id id) const { return this->Cells[id]; }
+  Id NumberOfCells() const { return static_cast<Id>(this->Cells.size()); }
+
+  /// Appends to `out` the finite vertices s such that (u, v, s) is a Delaunay facet.
+  /// Returns false if uv is not a Delaunay edge.
+  bool Link(Id u, Id v, std::vector<Id>& out) const;
+
+  /// Finds the Delaunay facet abc: a cell containing it and the index of the
+  /// opposite vertex in that cell. Returns false if abc is not a facet.
+  bool Facet(Id a, Id b, Id c, CellHandle& cell, int& opposite) const;
+
+private:
+  std::vector<Point3> Coords;
+  Delaunay DT;
+  std::vector<VertexHandle> Vertices;
+  std::vector<CellHandle> Cells;
+};
+
+} // namespace flowrecon
+
+#endif

@@ -1,0 +1,13 @@
+# Recipe of the FlowRecon::Filters VTK module (included from the staged module
+# folder, see the root CMakeLists.txt): sources are named by absolute path.
+set(_flowrecon_filters_dir "${CMAKE_CURRENT_LIST_DIR}")
+vtk_module_add_module(FlowRecon::Filters
+  CLASSES
+    ${_flowrecon_filters_dir}/vtkFlowComplex
+    ${_flowrecon_filters_dir}/vtkPointCloudReader
+  PRIVATE_HEADERS
+    ${_flowrecon_filters_dir}/FlowComplexConversion.h
+  SOURCES
+    ${_flowrecon_filters_dir}/FlowComplexConversion.cxx)
+vtk_module_include(FlowRecon::Filters PUBLIC "$<BUILD_INTERFACE:${_flowrecon_filters_dir}>")
+vtk_module_link(FlowRecon::Filters PRIVATE "$<BUILD_INTERFACE:FlowReconCore>")

@@ -1,0 +1,96 @@
+/**
+ * @class   vtkFlowComplex
+ * @brief   The flow complex of the distance function to a point cloud.
+ *
+ * Input: any vtkPointSet (its points are the samples; cells are ignored) or a
+ * vtkTable whose first three numeric columns (or columns named x, y, z) are the
+ * coordinates. Output: a vtkMultiBlockDataSet with the blocks
+ * - `CriticalPoints` (vtkPolyData): one point per Hasse node with point data
+ *   `NodeId`, `Index`, `CriticalValue`; the maximum at infinity is the last point
+ *   (value +inf) and has no vertex cell, so it is never drawn.
+ * - `HasseDiagram` (vtkPolyData): one line per arc, cell data `Multiplicity`,
+ *   `Ratio`, `LowerNodeId`, `UpperNodeId`; point data `NodeId`. Arcs to infinity
+ *   end on a short outward stub.
+ * - `StableManifolds` (vtkUnstructuredGrid): vertices, Gabriel edges, triangulated
+ *   index-2 patches and index-3 cones, cell data `NodeId`, `Index`,
+ *   `CriticalValue`; point data `vtkOriginalPointIds` (-1 for constructed points).
+ * - `UnstableManifolds` (vtkPolyData): polylines from each index-2 point to its
+ *   maxima, cell data `NodeId`, `TargetNodeId`.
+ * The field data of the output and of `CriticalPoints` report node counts, the
+ * degeneracy handling (duplicates, perturbation) and timings.
+ *
+ * The computation is exact (see flow-complex-algorithm.md): predicates use
+ * CGAL's exact-predicates kernel, walks are interval-filtered with an exact
+ * rational fallback; degenerate input is perturbed deterministically and says so.
+ */
+#ifndef vtkFlowComplex_h
+#define vtkFlowComplex_h
+
+#include "FlowReconFiltersModule.h" // for export macro
+#include "vtkMultiBlockDataSetAlgorithm.h"
+
+class FLOWRECONFILTERS_EXPORT vtkFlowComplex : public vtkMultiBlockDataSetAlgorithm
+{
+public:
+  static vtkFlowComplex* New();
+  vtkTypeMacro(vtkFlowComplex, vtkMultiBlockDataSetAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * Build the triangulated stable manifolds of index-2 points (and the index-3
+   * cones over them). Off gives only critical points and the Hasse diagram,
+   * which is enough for simplification and persistence. Default on.
+   */
+  vtkSetMacro(ComputeStableManifolds, bool);
+  vtkGetMacro(ComputeStableManifolds, bool);
+  vtkBooleanMacro(ComputeStableManifolds, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Record the polylines of the unstable manifolds of index-2 points. The 2->3
+   * arcs are always computed. Default on.
+   */
+  vtkSetMacro(ComputeUnstableManifolds, bool);
+  vtkGetMacro(ComputeUnstableManifolds, bool);
+  vtkBooleanMacro(ComputeUnstableManifolds, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Seed of the deterministic perturbation applied when the input is degenerate
+   * (grids, cospherical points, right angles). Default 1.
+   */
+  vtkSetMacro(PerturbationSeed, int);
+  vtkGetMacro(PerturbationSeed, int);
+  ///@}
+
+  /// Names of the output blocks, in order.
+  static const char* BlockName(int block);
+  enum Blocks
+  {
+    CRITICAL_POINTS = 0,
+    HASSE_DIAGRAM = 1,
+    STABLE_MANIFOLDS = 2,
+    UNSTABLE_MANIFOLDS = 3,
+    NUMBER_OF_BLOCKS = 4
+  };
+
+protected:
+  vtkFlowComplex();
+  ~vtkFlowComplex() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  bool ComputeStableManifolds = true;
+  bool ComputeUnstableManifolds = true;
+  int PerturbationSeed = 1;
+
+private:
+  vtkFlowComplex(const vtkFlowComplex&) = delete;
+  void operator=(const vtkFlowComplex&) = delete;
+};
+
+#endif
