@@ -72,9 +72,17 @@ Vec<FT> Circumcenter(const Vec<FT>& a, const Vec<FT>& b, const Vec<FT>& c, const
 
 /// Run f<IntervalFT>() under directed rounding; if an interval comparison is
 /// undecided, run f<ExactFT>(). `fallbacks` counts the exact reruns.
+/// When true (tests), walks skip the interval stage and run in exact arithmetic.
+inline bool& ExactOnly()
+{
+  static thread_local bool exact = false;
+  return exact;
+}
+
 template <class F>
 auto Filtered(F&& f, Id& fallbacks)
 {
+  if (!ExactOnly())
   {
     try
     {
@@ -92,10 +100,31 @@ auto Filtered(F&& f, Id& fallbacks)
 inline bool IsTight(const IntervalFT& x)
 {
   const double w = x.sup() - x.inf();
-  return std::isfinite(w) && w <= 1e-15 * std::max(std::fabs(x.inf()), std::fabs(x.sup()));
+  return std::isfinite(w) && w <= 1e-13 * std::max(std::fabs(x.inf()), std::fabs(x.sup()));
 }
 
-/// Doubles within a relative 1e-15 of the exact values of a rational construction
+/// The double value of a constructed point; from intervals only when they are
+/// tight (else the caller's exact fallback recomputes it), so that output
+/// geometry is as accurate as the combinatorics.
+inline Point3 RequireTight(const Vec<IntervalFT>& p)
+{
+  // Widths are judged against the point's magnitude, so that a coordinate near
+  // zero does not count as loose.
+  const double mag = std::max({ std::fabs(p.X.inf()), std::fabs(p.X.sup()), std::fabs(p.Y.inf()),
+    std::fabs(p.Y.sup()), std::fabs(p.Z.inf()), std::fabs(p.Z.sup()) });
+  const double w = std::max({ p.X.sup() - p.X.inf(), p.Y.sup() - p.Y.inf(), p.Z.sup() - p.Z.inf() });
+  if (!(std::isfinite(w) && w <= 1e-9 * mag))
+  {
+    throw CGAL::Uncertain_conversion_exception("loose constructed point");
+  }
+  return p.ToDouble();
+}
+inline Point3 RequireTight(const Vec<ExactFT>& p)
+{
+  return p.ToDouble();
+}
+
+/// Doubles within a relative 1e-13 of the exact values of a rational construction
 /// f<FT>() -> std::array<FT, N>: interval values when tight, else exact ones.
 template <std::size_t N, class F>
 std::array<double, N> Certified(F&& f)

@@ -35,7 +35,7 @@ CriticalSimplices FindCriticalSimplices(const Triangulation& tri, const Progress
   auto tick = [&]() {
     if ((++done & 0xFFFF) == 0)
     {
-      progress(done / total, "critical points");
+      progress(0.2 + 0.15 * done / total, "critical points");
     }
   };
 

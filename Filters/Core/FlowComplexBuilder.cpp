@@ -287,7 +287,7 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
           if (record)
           {
             line.Points.push_back(forest.Circumcentre(id));
-            forest.AppendPath(id, line.Points);
+            forest.AppendPath(id, line.Points, true);
           }
         }
       }
@@ -374,6 +374,12 @@ FlowComplex BuildFlowComplex(
   const std::vector<Point3>& points, const BuildOptions& options, const Progress& progress)
 {
   const auto start = Clock::now();
+  struct ExactScope
+  {
+    bool Saved = ExactOnly();
+    ~ExactScope() { ExactOnly() = this->Saved; }
+  } exactScope;
+  ExactOnly() = options.ExactOnly;
   const PreparedInput in = PrepareInput(points);
   FlowComplex fc;
   fc.Representative = in.Representative;
@@ -381,8 +387,10 @@ FlowComplex BuildFlowComplex(
   fc.Report.DuplicatePoints = static_cast<Id>(points.size() - in.Unique.size());
   Builder builder(in, points, options, progress, fc);
 
-  // Perturbations are relative to the cloud size but never below a few ulps of
-  // the coordinates, so that they always move the points.
+  // Perturbations are relative to the cloud size (never below a few ulps of the
+  // coordinates). Degenerate configurations split their critical values only at
+  // second order in the perturbation, so 1e-6 of the diagonal keeps those gaps
+  // (~1e-12) well above double precision: values stay strictly ordered.
   double maxAbs = 0;
   for (const Point3& p : in.Unique)
   {
@@ -395,7 +403,7 @@ FlowComplex BuildFlowComplex(
   for (int attempt = 1;; ++attempt)
   {
     const double magnitude =
-      attempt == 1 ? 0 : std::max(1e-9 * in.Diagonal * std::ldexp(1.0, 2 * (attempt - 2)), floor);
+      attempt == 1 ? 0 : std::max(1e-6 * in.Diagonal * std::ldexp(1.0, attempt - 2), floor);
     try
     {
       if (attempt == 1)

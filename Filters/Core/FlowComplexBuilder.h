@@ -17,6 +17,7 @@ struct BuildOptions
   bool UnstableManifolds = true; ///< polylines of index-2 unstable manifolds
   std::uint64_t Seed = 1;        ///< seed of the perturbation of degenerate input
   int MaxAttempts = 6;           ///< perturbations tried before giving up
+  bool ExactOnly = false;        ///< skip the interval filter (for testing the exact path)
 };
 
 /// The flow complex of `points`. Throws InputError for unusable input (non-finite

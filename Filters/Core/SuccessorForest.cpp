@@ -1,6 +1,6 @@
 #include "SuccessorForest.h"
 
-#include "Arithmetic.h"
+#include "VoronoiWalk.h"
 #include "Driver.h"
 #include "Progress.h"
 
@@ -36,12 +36,9 @@ struct WalkEnd
 // link sample becomes equidistant; then either slides along the Voronoi edge of
 // an acute triangle to a Voronoi vertex, or continues in another Voronoi facet.
 template <class FT>
-WalkEnd FacetWalk(const Triangulation& tri, const Vec<FT>& start, Id a, Id b, std::vector<Id> excl)
+WalkEnd FacetWalk(const Triangulation& tri, EdgePoint<FT> x, Id a, Id b, std::vector<Id> excl)
 {
-  auto P = [&](Id k) { return Vec<FT>::From(tri.Coord(k)); };
-  const Delaunay& dt = tri.Dt();
   WalkEnd end;
-  Vec<FT> x = start;
   std::vector<Id> link;
   for (Id steps = 0;; ++steps)
   {
@@ -49,108 +46,66 @@ WalkEnd FacetWalk(const Triangulation& tri, const Vec<FT>& start, Id a, Id b, st
     {
       throw std::runtime_error("ascending walk did not terminate");
     }
-    const Vec<FT> pa = P(a);
-    const Vec<FT> w = x - (pa + P(b)) / FT(2);
-    const FT xa = (x - pa).SquaredLength();
-    link.clear();
-    tri.Link(a, b, link);
-    Id best = -1;
-    FT bestNum(0), bestDen(1);
-    for (const Id s : link)
+    Id s = -1;
+    EdgePoint<FT> y;
+    if (!FirstExit(tri, x, a, b, excl, false, link, s, y))
     {
-      bool excluded = false;
-      for (const Id e : excl)
-      {
-        excluded = excluded || e == s;
-      }
-      if (excluded)
-      {
-        continue;
-      }
-      const Vec<FT> ps = P(s);
-      const FT den = w.Dot(ps - pa);
-      if (CertainSign(den) <= 0)
-      {
-        continue;
-      }
-      const FT num = (x - ps).SquaredLength() - xa;
-      if (CertainSign(num) <= 0)
-      {
-        throw Degenerate("ascending walk starts on a degenerate Voronoi vertex");
-      }
-      if (best >= 0)
-      {
-        const int cmp = CertainSign(num * bestDen - bestNum * den);
-        if (cmp == 0)
-        {
-          throw Degenerate("ascending walk meets a Voronoi vertex");
-        }
-        if (cmp > 0)
-        {
-          continue;
-        }
-      }
-      best = s;
-      bestNum = num;
-      bestDen = den;
-    }
-    if (best < 0)
-    {
-      end.Escape = w.ToDouble(); // unbounded Voronoi facet
+      // Unbounded Voronoi facet: the flow goes to infinity, away from m_ab.
+      const Point3 p = Frame<FT>(tri, x.G).At(x.Lambda).ToDouble();
+      const Point3 &pa = tri.Coord(a), &pb = tri.Coord(b);
+      end.Escape = { { p[0] - 0.5 * (pa[0] + pb[0]), p[1] - 0.5 * (pa[1] + pb[1]),
+        p[2] - 0.5 * (pa[2] + pb[2]) } };
       return end;
     }
-    const Vec<FT> y = x + w * (bestNum / (FT(2) * bestDen));
-    end.Points.push_back(y.ToDouble());
-    const Id s = best;
+    const Frame<FT> frame(tri, y.G);
+    end.Points.push_back(RequireTight(frame.At(y.Lambda)));
     const int obtuse = ObtuseCorner(tri.KCoord(a), tri.KCoord(b), tri.KCoord(s));
     if (obtuse == 2)
     {
       throw Degenerate("ascending walk exits through a triangle obtuse at the new sample");
     }
-    if (obtuse == 1) // obtuse at b: driver is the midpoint of a s
+    if (obtuse >= 0)
     {
-      excl.assign(1, b);
-      b = s;
+      // Obtuse at b (resp. a): the driver is the midpoint of a s (resp. b s).
+      excl.assign(1, obtuse == 1 ? b : a);
+      (obtuse == 1 ? b : a) = s;
       x = y;
       continue;
     }
-    if (obtuse == 0) // obtuse at a: driver is the midpoint of b s
+    // abs is acute: slide along its Voronoi edge away from c_abs, i.e. along
+    // sign(lambda) n, to the Voronoi vertex of the cell whose apex lies ahead.
+    const int side = CertainSign(y.Lambda);
+    if (side == 0)
     {
-      excl.assign(1, a);
-      a = s;
-      x = y;
-      continue;
+      throw Degenerate("ascending walk stops at a critical point");
     }
-    // abs is acute: slide along its Voronoi edge away from c_abs to the Voronoi
-    // vertex of the cell on that side (the apex t with w'.(t - a) > 0).
     CellHandle cell;
     int opposite = 0;
     if (!tri.Facet(a, b, s, cell, opposite))
     {
       throw std::runtime_error("ascending walk lost its Voronoi edge");
     }
-    const Vec<FT> w2 = y - Circumcenter(pa, P(b), P(s));
     const CellHandle sides[2] = { cell, cell->neighbor(opposite) };
     const VertexHandle apex[2] = { cell->vertex(opposite),
       sides[1]->vertex(sides[1]->index(cell)) };
     for (int k = 0; k < 2; ++k)
     {
-      // Exactly one apex lies ahead (they are on opposite sides of the plane).
-      const int ahead = dt.is_infinite(apex[k])
-        ? -1
-        : CertainSign(w2.Dot(P(apex[k]->info()) - pa));
-      if (ahead == 0)
+      if (tri.Dt().is_infinite(apex[k]))
       {
-        throw Degenerate("ascending walk stops at a critical point");
+        continue;
       }
-      if (ahead > 0)
+      // sign(n . (t - g0)) is an exact orientation test on input points.
+      const int o = static_cast<int>(CGAL::orientation(tri.KCoord(y.G[0]), tri.KCoord(y.G[1]),
+        tri.KCoord(y.G[2]), apex[k]->point()));
+      if (o * side > 0)
       {
         end.Cell = tri.CellId(sides[k]);
         return end;
       }
     }
     // No finite apex ahead: the Voronoi edge is a ray to infinity.
-    end.Escape = w2.ToDouble();
+    const Point3 n = frame.N.ToDouble();
+    end.Escape = { { side * n[0], side * n[1], side * n[2] } };
     return end;
   }
 }
@@ -168,15 +123,22 @@ SuccessorForest::SuccessorForest(
 {
 }
 
-Point3 SuccessorForest::Circumcentre(Id cell) const
+Point3 SuccessorForest::Circumcentre(Id cell)
 {
-  const CellHandle c = this->Tri.Cell(cell);
-  return Certified<3>([&](auto ft) {
-    using FT = decltype(ft);
-    auto P = [&](int i) { return Vec<FT>::From(this->Tri.Coord(c->vertex(i)->info())); };
-    const Vec<FT> o = Circumcenter(P(0), P(1), P(2), P(3));
-    return std::array<FT, 3>{ { o.X, o.Y, o.Z } };
-  });
+  if (this->Centres.empty())
+  {
+    this->Centres.resize(this->Steps.size());
+    this->HasCentre.assign(this->Steps.size(), false);
+  }
+  if (!this->HasCentre[cell])
+  {
+    const CellHandle c = this->Tri.Cell(cell);
+    const KPoint o = CGAL::circumcenter(
+      c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(), c->vertex(3)->point());
+    this->Centres[cell] = { { o.x(), o.y(), o.z() } };
+    this->HasCentre[cell] = true;
+  }
+  return this->Centres[cell];
 }
 
 const SuccessorForest::Step& SuccessorForest::Next(Id cell)
@@ -242,8 +204,13 @@ void SuccessorForest::ComputeNext(Id id, Step& step)
   WalkEnd end = Filtered(
     [&](auto ft) {
       using FT = decltype(ft);
+      // c_T lies on the Voronoi edge of (a, b, excl[0]): find its lambda there.
+      EdgePoint<FT> start{ SortedTriangle(a, b, excl[0]), FT(0) };
+      const Frame<FT> frame(this->Tri, start.G);
       auto P = [&](int i) { return Vec<FT>::From(this->Tri.Coord(c->vertex(i)->info())); };
-      return FacetWalk<FT>(this->Tri, Circumcenter(P(0), P(1), P(2), P(3)), a, b, excl);
+      const Vec<FT> centre = Circumcenter(P(0), P(1), P(2), P(3));
+      start.Lambda = (centre - frame.C).Dot(frame.N) / frame.N.SquaredLength();
+      return FacetWalk<FT>(this->Tri, start, a, b, excl);
     },
     this->ExactFallbacks);
   this->Paths.insert(this->Paths.end(), end.Points.begin(), end.Points.end());
@@ -289,21 +256,29 @@ Id SuccessorForest::Root(Id cell)
   return root;
 }
 
-void SuccessorForest::AppendPath(Id cell, std::vector<Point3>& out)
+void SuccessorForest::AppendPath(Id cell, std::vector<Point3>& out, bool shareTails)
 {
+  if (this->Drawn.empty())
+  {
+    this->Drawn.assign(this->Steps.size(), false);
+  }
   Id id = cell;
   for (std::size_t guard = 0; guard <= this->Steps.size(); ++guard)
   {
+    if (shareTails)
+    {
+      if (this->Drawn[id])
+      {
+        return; // the rest of this flow line is already drawn
+      }
+      this->Drawn[id] = true;
+    }
     const Step& step = this->Next(id);
     out.insert(out.end(), this->Paths.begin() + step.PathBegin,
       this->Paths.begin() + step.PathBegin + step.PathCount);
-    if (step.Kind == ToMaximum)
+    if (step.Kind == ToMaximum || step.Kind == ToInfinity)
     {
-      return; // c_T is the maximum itself, already in the polyline
-    }
-    if (step.Kind == ToInfinity)
-    {
-      return;
+      return; // c_T of a maximum is already in the polyline
     }
     id = step.Target;
     out.push_back(this->Circumcentre(id));

@@ -26,11 +26,13 @@ public:
   Id Root(Id cell);
 
   /// Appends the polyline of the flow from c_T (excluded) to its maximum, or to a
-  /// stub pointing toward infinity.
-  void AppendPath(Id cell, std::vector<Point3>& out);
+  /// stub pointing toward infinity. Flow lines merge: with `shareTails`, the
+  /// polyline stops at the first Voronoi vertex an earlier call already drew, so
+  /// that the union of all lines is stored once (linear size).
+  void AppendPath(Id cell, std::vector<Point3>& out, bool shareTails);
 
-  /// Circumcentre of a finite cell (certified double).
-  Point3 Circumcentre(Id cell) const;
+  /// Circumcentre of a finite cell (for drawing; cached).
+  Point3 Circumcentre(Id cell);
 
   Id ExactFallbacks = 0;
 
@@ -59,6 +61,8 @@ private:
   std::vector<Step> Steps;
   std::vector<Id> Roots;
   std::vector<Point3> Paths;
+  std::vector<Point3> Centres;
+  std::vector<bool> HasCentre, Drawn;
 };
 
 } // namespace flowrecon

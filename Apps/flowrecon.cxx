@@ -1,0 +1,679 @@
+// flowrecon: the command-line front end of the FlowRecon VTK filters.
+//
+//   flowrecon complex INPUT -o OUT.vtm [--no-stable] [--no-unstable] [--quiet]
+//   flowrecon info    INPUT [--no-stable] [--no-unstable] [--quiet]
+//
+// Every command is a function over parsed arguments listed in `Commands`, so
+// new ones (reconstruct, diagram) are one function and one table entry each.
+// Exit codes: 0 success, 1 bad input or failed computation, 2 usage error,
+// 130 interrupted (Ctrl-C). Errors are one line on stderr; VTK's own messages
+// are captured, never printed.
+
+#include "vtkFlowComplex.h"
+#include "vtkPointCloudReader.h"
+
+#include "vtkCommand.h"
+#include "vtkCompositeDataSet.h"
+#include "vtkDataArray.h"
+#include "vtkDataObjectTreeIterator.h"
+#include "vtkExecutive.h"
+#include "vtkFieldData.h"
+#include "vtkInformation.h"
+#include "vtkLogger.h"
+#include "vtkMultiBlockDataSet.h"
+#include "vtkNew.h"
+#include "vtkOutputWindow.h"
+#include "vtkSmartPointer.h"
+#include "vtkVersion.h"
+#include "vtkXMLMultiBlockDataReader.h"
+#include "vtkXMLMultiBlockDataWriter.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cctype>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <unistd.h> // isatty, _exit
+
+#ifndef FLOWRECON_VERSION
+#define FLOWRECON_VERSION "unknown"
+#endif
+
+namespace
+{
+
+constexpr int ExitInputError = 1;
+constexpr int ExitUsage = 2;
+constexpr int ExitInterrupted = 130;
+
+// A command-line mistake: reported with a hint to the help, exit code 2.
+class UsageError : public std::runtime_error
+{
+public:
+  UsageError(const std::string& message, std::string helpCommand = "flowrecon --help")
+    : std::runtime_error(message)
+    , HelpCommand(std::move(helpCommand))
+  {
+  }
+  std::string HelpCommand;
+};
+
+// Bad input or a failed computation: one line, exit code 1.
+class Failure : public std::runtime_error
+{
+public:
+  using std::runtime_error::runtime_error;
+};
+
+// Ctrl-C was pressed: exit code 130.
+class Interrupted : public std::exception
+{
+};
+
+// ---------------------------------------------------------------------------
+// Ctrl-C: the first press asks the running filter to stop (the progress
+// observer forwards the request); a second one exits at once.
+
+std::atomic<bool> InterruptRequested{ false };
+
+extern "C" void OnInterrupt(int)
+{
+  if (InterruptRequested.exchange(true))
+  {
+    _exit(ExitInterrupted);
+  }
+}
+
+void ThrowIfInterrupted()
+{
+  if (InterruptRequested)
+  {
+    throw Interrupted();
+  }
+}
+
+// ---------------------------------------------------------------------------
+// VTK messages: kept instead of printed, so that a failure prints one line.
+
+class CapturingOutputWindow : public vtkOutputWindow
+{
+public:
+  static CapturingOutputWindow* New();
+  vtkTypeMacro(CapturingOutputWindow, vtkOutputWindow);
+  void DisplayText(const char*) override {}
+  void DisplayErrorText(const char* text) override
+  {
+    if (this->FirstError.empty())
+    {
+      this->FirstError = MessageText(text);
+    }
+  }
+  void DisplayWarningText(const char*) override {}
+  void DisplayGenericWarningText(const char*) override {}
+  void DisplayDebugText(const char*) override {}
+
+  // "ERROR: In file.cxx, line 12\nvtkClass (0x...): text\n\n" -> "text".
+  static std::string MessageText(const char* text)
+  {
+    std::string t = text ? text : "";
+    if (t.rfind("ERROR: In ", 0) == 0 || t.rfind("Warning: In ", 0) == 0)
+    {
+      const std::size_t newline = t.find('\n');
+      t = newline == std::string::npos ? std::string() : t.substr(newline + 1);
+    }
+    const std::size_t object = t.find(" (0x");
+    const std::size_t colon = t.find("): ");
+    if (object != std::string::npos && colon != std::string::npos && object < colon &&
+      t.find_first_of(" \n") == object)
+    {
+      t = t.substr(colon + 3);
+    }
+    t = t.substr(0, t.find('\n'));
+    while (!t.empty() && std::isspace(static_cast<unsigned char>(t.back())))
+    {
+      t.pop_back();
+    }
+    return t;
+  }
+
+  std::string FirstError;
+};
+vtkStandardNewMacro(CapturingOutputWindow);
+
+vtkSmartPointer<CapturingOutputWindow> Messages;
+
+void CaptureVtkMessages()
+{
+  // VTK's logger prints errors to stderr by itself, besides the output window.
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+  Messages = vtkSmartPointer<CapturingOutputWindow>::New();
+  vtkOutputWindow::SetInstance(Messages);
+}
+
+// ---------------------------------------------------------------------------
+// Progress: "\r[command] 42%  phase" on a terminal; also forwards Ctrl-C.
+
+class ProgressLine : public vtkCommand
+{
+public:
+  static ProgressLine* New() { return new ProgressLine; }
+
+  void Execute(vtkObject* caller, unsigned long, void* callData) override
+  {
+    auto* algorithm = vtkAlgorithm::SafeDownCast(caller);
+    if (InterruptRequested && algorithm)
+    {
+      algorithm->SetAbortExecute(1);
+    }
+    if (!this->Show || !algorithm || !callData)
+    {
+      return;
+    }
+    const int percent = static_cast<int>(100 * *static_cast<double*>(callData));
+    const char* phase = algorithm->GetProgressText();
+    std::string line =
+      "[" + this->Label + "] " + std::to_string(percent) + "%  " + (phase ? phase : "");
+    line = line.substr(0, 79);
+    if (line == this->Last)
+    {
+      return;
+    }
+    // Pad with blanks to erase the rest of a longer previous line.
+    const std::size_t width = std::max(line.size(), this->Last.size());
+    std::fprintf(stderr, "\r%-*s", static_cast<int>(width), line.c_str());
+    std::fflush(stderr);
+    this->Last = line;
+  }
+
+  // Ends the progress line, if one was drawn.
+  void Finish()
+  {
+    if (!this->Last.empty())
+    {
+      std::fputc('\n', stderr);
+      this->Last.clear();
+    }
+  }
+
+  std::string Label;
+  bool Show = false;
+
+private:
+  std::string Last;
+};
+
+// ---------------------------------------------------------------------------
+// Command table and argument parsing.
+
+struct Option
+{
+  const char* Long;  // "--output"
+  const char* Short; // "-o" or nullptr
+  const char* Value; // placeholder of its value ("OUT.vtm"), nullptr for a flag
+  const char* Help;
+};
+
+struct Arguments
+{
+  std::vector<std::string> Inputs;
+  std::map<std::string, std::string> Values; // by long name, flags map to ""
+  bool Has(const char* name) const { return this->Values.count(name) > 0; }
+};
+
+struct Command
+{
+  const char* Name;
+  const char* Summary;     // one line in 'flowrecon --help'
+  const char* Description; // paragraph in 'flowrecon NAME --help'
+  const char* Synopsis;    // after "flowrecon NAME"
+  std::vector<Option> Options;
+  int (*Run)(const Arguments&);
+};
+
+const Option QuietOption{ "--quiet", "-q", nullptr,
+  "no progress line on the terminal (and no summary line)" };
+const Option NoStableOption{ "--no-stable", nullptr, nullptr,
+  "skip the triangulated stable manifolds of index-2 and index-3 nodes" };
+const Option NoUnstableOption{ "--no-unstable", nullptr, nullptr,
+  "skip the polylines of the unstable manifolds" };
+
+int RunComplex(const Arguments& args);
+int RunInfo(const Arguments& args);
+
+const std::vector<Command>& Commands()
+{
+  static const std::vector<Command> commands = {
+    { "complex", "compute the flow complex of a point cloud, write it as .vtm",
+      "Compute the flow complex of the distance function to the points of INPUT and\n"
+      "write its blocks CriticalPoints, HasseDiagram, StableManifolds and\n"
+      "UnstableManifolds to OUT.vtm (VTK XML multiblock, binary, compressed).",
+      "INPUT -o OUT.vtm [options]",
+      { { "--output", "-o", "OUT.vtm", "the multiblock file to write (.vtm)" }, NoStableOption,
+        NoUnstableOption, QuietOption },
+      RunComplex },
+    { "info", "print node counts, Euler characteristic, degeneracies, timings",
+      "Compute the flow complex of INPUT (or read a .vtm written by 'complex') and\n"
+      "print the number of nodes of each index, the Euler characteristic\n"
+      "n0 - n1 + n2 - n3 (always 1), the number of arcs, of input points and of\n"
+      "merged duplicates, the perturbation applied to degenerate input, and the\n"
+      "time of each phase.",
+      "INPUT [options]", { NoStableOption, NoUnstableOption, QuietOption }, RunInfo },
+  };
+  return commands;
+}
+
+const char* const InputHelp =
+  "INPUT: .xyz .txt .pts (x y z per line, extra columns ignored), .csv, .off, .ply, .obj,\n"
+  "       legacy .vtk, VTK XML (.vtp .vtu .vts .vtr .vti .vtm ...): the points are used.\n";
+
+void PrintHelp(std::ostream& os)
+{
+  os << "Usage: flowrecon COMMAND [options] INPUT\n\n"
+        "Flow-complex reconstruction of 3D compact sets (Cazals & Cohen-Steiner 2009).\n\n"
+        "Commands:\n";
+  for (const Command& command : Commands())
+  {
+    os << "  " << std::left << std::setw(10) << command.Name << command.Summary << "\n";
+  }
+  os << "\nOptions:\n"
+        "  -h, --help     show this help; 'flowrecon COMMAND --help' for a command\n"
+        "  --version      print the version\n\n"
+     << InputHelp
+     << "\nExit status: 0 success, 1 bad input or failed computation, 2 usage error,\n"
+        "130 interrupted.\n";
+}
+
+void PrintCommandHelp(const Command& command, std::ostream& os)
+{
+  os << "Usage: flowrecon " << command.Name << " " << command.Synopsis << "\n\n"
+     << command.Description << "\n\nOptions:\n";
+  for (const Option& option : command.Options)
+  {
+    std::string names = option.Short ? std::string(option.Short) + ", " : "    ";
+    names += option.Long;
+    if (option.Value)
+    {
+      names += std::string(" ") + option.Value;
+    }
+    os << "  " << std::left << std::setw(24) << names << option.Help << "\n";
+  }
+  os << "  " << std::left << std::setw(24) << "-h, --help"
+     << "show this help\n\n"
+     << InputHelp;
+}
+
+// Parses the arguments after the command name; returns false if help was shown.
+bool ParseArguments(const Command& command, const std::vector<std::string>& argv, Arguments& args)
+{
+  const std::string help = std::string("flowrecon ") + command.Name + " --help";
+  bool optionsEnded = false;
+  for (std::size_t i = 0; i < argv.size(); ++i)
+  {
+    const std::string& arg = argv[i];
+    if (optionsEnded || arg.size() < 2 || arg[0] != '-')
+    {
+      args.Inputs.push_back(arg);
+      continue;
+    }
+    if (arg == "--")
+    {
+      optionsEnded = true;
+      continue;
+    }
+    if (arg == "-h" || arg == "--help")
+    {
+      PrintCommandHelp(command, std::cout);
+      return false;
+    }
+    // "--name=value" or "--name value" / "-n value".
+    const std::size_t equal = arg.rfind("--", 0) == 0 ? arg.find('=') : std::string::npos;
+    const std::string name = arg.substr(0, equal);
+    const auto option = std::find_if(command.Options.begin(), command.Options.end(),
+      [&name](const Option& o) { return name == o.Long || (o.Short && name == o.Short); });
+    if (option == command.Options.end())
+    {
+      throw UsageError("unknown option '" + name + "' for '" + command.Name + "'", help);
+    }
+    if (!option->Value)
+    {
+      if (equal != std::string::npos)
+      {
+        throw UsageError("option '" + name + "' takes no value", help);
+      }
+      args.Values[option->Long] = "";
+    }
+    else if (equal != std::string::npos)
+    {
+      args.Values[option->Long] = arg.substr(equal + 1);
+    }
+    else if (i + 1 < argv.size())
+    {
+      args.Values[option->Long] = argv[++i];
+    }
+    else
+    {
+      throw UsageError("option '" + name + "' needs a value (" + option->Value + ")", help);
+    }
+  }
+  if (args.Inputs.empty())
+  {
+    throw UsageError(std::string("'") + command.Name + "' needs an INPUT file", help);
+  }
+  if (args.Inputs.size() > 1)
+  {
+    throw UsageError("unexpected argument '" + args.Inputs[1] + "'", help);
+  }
+  return true;
+}
+
+// ---------------------------------------------------------------------------
+// Pipelines.
+
+std::string Lower(std::string s)
+{
+  std::transform(s.begin(), s.end(), s.begin(),
+    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return s;
+}
+
+std::string ExtensionOf(const std::string& path)
+{
+  return Lower(std::filesystem::path(path).extension().string());
+}
+
+// The CriticalPoints block of a flow complex (it carries the report in its
+// field data), or nullptr if `data` is not one.
+vtkDataObject* CriticalPointsBlock(vtkDataObject* data)
+{
+  auto* tree = vtkMultiBlockDataSet::SafeDownCast(data);
+  if (!tree)
+  {
+    return nullptr;
+  }
+  for (unsigned int b = 0; b < tree->GetNumberOfBlocks(); ++b)
+  {
+    vtkInformation* meta = tree->HasMetaData(b) ? tree->GetMetaData(b) : nullptr;
+    const char* name = meta ? meta->Get(vtkCompositeDataSet::NAME()) : nullptr;
+    vtkDataObject* block = tree->GetBlock(b);
+    if (name && std::string(name) == vtkFlowComplex::BlockName(vtkFlowComplex::CRITICAL_POINTS) &&
+      block && block->GetFieldData()->GetArray("NodeCountByIndex"))
+    {
+      return block;
+    }
+  }
+  return nullptr;
+}
+
+// A .vtm written by 'complex', or nullptr when `file` is a point cloud. The
+// point cloud reader runs first: it rejects corrupt files VTK would crash on.
+vtkSmartPointer<vtkMultiBlockDataSet> LoadStoredFlowComplex(const std::string& file)
+{
+  if (ExtensionOf(file) != ".vtm")
+  {
+    return nullptr;
+  }
+  vtkNew<vtkPointCloudReader> check;
+  check->SetFileName(file.c_str());
+  if (!check->GetExecutive()->Update())
+  {
+    throw Failure(check->GetErrorMessage());
+  }
+  vtkNew<vtkXMLMultiBlockDataReader> reader;
+  reader->SetFileName(file.c_str());
+  reader->Update();
+  vtkSmartPointer<vtkMultiBlockDataSet> data =
+    vtkMultiBlockDataSet::SafeDownCast(reader->GetOutputDataObject(0));
+  return CriticalPointsBlock(data) ? data : nullptr;
+}
+
+struct FlowComplexOptions
+{
+  bool Stable = true;
+  bool Unstable = true;
+  bool Quiet = false;
+  std::string Label;
+};
+
+FlowComplexOptions CommonOptions(const Arguments& args, const char* label)
+{
+  FlowComplexOptions options;
+  options.Stable = !args.Has("--no-stable");
+  options.Unstable = !args.Has("--no-unstable");
+  options.Quiet = args.Has("--quiet");
+  options.Label = label;
+  return options;
+}
+
+// Reads the point cloud `file` and computes its flow complex.
+vtkSmartPointer<vtkMultiBlockDataSet> ComputeFlowComplex(
+  const std::string& file, const FlowComplexOptions& options)
+{
+  vtkNew<vtkPointCloudReader> reader;
+  reader->SetFileName(file.c_str());
+  if (!reader->GetExecutive()->Update())
+  {
+    throw Failure(reader->GetErrorMessage());
+  }
+  ThrowIfInterrupted();
+
+  vtkNew<vtkFlowComplex> filter;
+  filter->SetInputConnection(reader->GetOutputPort());
+  filter->SetComputeStableManifolds(options.Stable);
+  filter->SetComputeUnstableManifolds(options.Unstable);
+  vtkNew<ProgressLine> progress;
+  progress->Label = options.Label;
+  progress->Show = !options.Quiet && isatty(2);
+  filter->AddObserver(vtkCommand::ProgressEvent, progress);
+  Messages->FirstError.clear();
+  const int ok = filter->GetExecutive()->Update();
+  progress->Finish();
+  ThrowIfInterrupted();
+  auto* output = vtkMultiBlockDataSet::SafeDownCast(filter->GetOutputDataObject(0));
+  if (!ok || !output || output->GetNumberOfBlocks() == 0)
+  {
+    throw Failure(file + ": " +
+      (Messages->FirstError.empty() ? std::string("flow complex computation failed")
+                                    : Messages->FirstError));
+  }
+  return output;
+}
+
+// ---------------------------------------------------------------------------
+// Commands.
+
+int RunComplex(const Arguments& args)
+{
+  const std::string& input = args.Inputs[0];
+  if (!args.Has("--output"))
+  {
+    throw UsageError("'complex' needs an output file: -o OUT.vtm", "flowrecon complex --help");
+  }
+  const std::string output = args.Values.at("--output");
+  if (ExtensionOf(output) != ".vtm")
+  {
+    throw UsageError(
+      "the output file must have the .vtm extension: '" + output + "'", "flowrecon complex --help");
+  }
+  const std::filesystem::path directory = std::filesystem::path(output).parent_path();
+  std::error_code error;
+  if (!directory.empty() && !std::filesystem::is_directory(directory, error))
+  {
+    throw Failure(output + ": directory '" + directory.string() + "' does not exist");
+  }
+  if (LoadStoredFlowComplex(input))
+  {
+    throw Failure(input + ": already a flow complex (use 'flowrecon info' to inspect it)");
+  }
+  const FlowComplexOptions options = CommonOptions(args, "complex");
+  vtkSmartPointer<vtkMultiBlockDataSet> complex = ComputeFlowComplex(input, options);
+
+  vtkNew<vtkXMLMultiBlockDataWriter> writer;
+  writer->SetFileName(output.c_str());
+  writer->SetInputData(complex);
+  writer->SetDataModeToAppended();
+  writer->EncodeAppendedDataOff(); // raw binary, zlib-compressed (the default compressor)
+  vtkNew<ProgressLine> abortOnly;  // forwards Ctrl-C, draws nothing
+  writer->AddObserver(vtkCommand::ProgressEvent, abortOnly);
+  Messages->FirstError.clear();
+  const int written = writer->Write();
+  if (InterruptRequested)
+  {
+    std::filesystem::remove(output, error); // no valid-looking partial result
+    throw Interrupted();
+  }
+  if (!written || writer->GetErrorCode() != 0)
+  {
+    throw Failure(output + ": cannot write (" +
+      (Messages->FirstError.empty() ? std::string("unknown error") : Messages->FirstError) + ")");
+  }
+  if (!options.Quiet)
+  {
+    vtkFieldData* fd = CriticalPointsBlock(complex)->GetFieldData();
+    vtkDataArray* counts = fd->GetArray("NodeCountByIndex");
+    std::cout << output << ": nodes by index " << counts->GetComponent(0, 0) << " "
+              << counts->GetComponent(0, 1) << " " << counts->GetComponent(0, 2) << " "
+              << counts->GetComponent(0, 3) << ", "
+              << (fd->GetArray("ArcCount") ? fd->GetArray("ArcCount")->GetComponent(0, 0) : 0)
+              << " arcs\n";
+  }
+  return 0;
+}
+
+// One value of a field data array as text (`decimals` >= 0: fixed notation);
+// "unknown" if the array is absent.
+std::string Field(vtkFieldData* fd, const char* name, int component = 0, int decimals = -1)
+{
+  vtkDataArray* array = fd->GetArray(name);
+  if (!array || array->GetNumberOfTuples() < 1 || component >= array->GetNumberOfComponents())
+  {
+    return "unknown";
+  }
+  std::ostringstream os;
+  if (decimals >= 0)
+  {
+    os << std::fixed << std::setprecision(decimals);
+  }
+  os << array->GetComponent(0, component);
+  return os.str();
+}
+
+int RunInfo(const Arguments& args)
+{
+  const std::string& input = args.Inputs[0];
+  vtkSmartPointer<vtkMultiBlockDataSet> complex = LoadStoredFlowComplex(input);
+  const bool stored = complex != nullptr;
+  if (!stored)
+  {
+    complex = ComputeFlowComplex(input, CommonOptions(args, "info"));
+  }
+  vtkFieldData* fd = CriticalPointsBlock(complex)->GetFieldData();
+  const std::string attempts = Field(fd, "PerturbationAttempts");
+  std::ostringstream out;
+  out << "input:                 " << input << (stored ? " (flow complex file)" : " (point cloud)")
+      << "\n"
+      << "input points:          " << Field(fd, "InputPointCount") << "\n"
+      << "duplicates merged:     " << Field(fd, "DuplicatePointCount") << "\n"
+      << "perturbed:             "
+      << (attempts == "1" ? std::string("no")
+                          : "yes (" + attempts + " attempts, magnitude " +
+               Field(fd, "PerturbationMagnitude") + ")")
+      << "\n"
+      << "nodes by index:        " << Field(fd, "NodeCountByIndex", 0) << " "
+      << Field(fd, "NodeCountByIndex", 1) << " " << Field(fd, "NodeCountByIndex", 2) << " "
+      << Field(fd, "NodeCountByIndex", 3)
+      << " (n0 n1 n2 n3; finite nodes, the maximum at infinity is not counted)\n"
+      << "Euler characteristic:  " << Field(fd, "EulerCharacteristic") << " (n0 - n1 + n2 - n3)\n"
+      << "arcs:                  " << Field(fd, "ArcCount") << "\n"
+      << "degeneracies:          " << Field(fd, "RightAngleCount") << " right angles, "
+      << Field(fd, "ApexOnSphereCount") << " apex on sphere, " << Field(fd, "WalkTieCount")
+      << " walk ties, " << Field(fd, "ExactFallbackCount") << " exact fallbacks\n"
+      << "timings (s):          ";
+  static const char* const phases[6] = { "Delaunay", "CriticalPoints", "StableManifolds",
+    "UnstableManifolds", "Assembly", "Total" };
+  for (int k = 0; k < 6; ++k)
+  {
+    out << " " << phases[k] << " " << Field(fd, "Timings", k, 6);
+  }
+  out << "\n";
+  std::cout << out.str();
+  return 0;
+}
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  const std::vector<std::string> argv1(argv + 1, argv + argc);
+  try
+  {
+    if (argv1.empty())
+    {
+      throw UsageError("missing command");
+    }
+    const std::string& first = argv1[0];
+    if (first == "-h" || first == "--help" || first == "help")
+    {
+      PrintHelp(std::cout);
+      return 0;
+    }
+    if (first == "--version")
+    {
+      std::cout << "flowrecon " << FLOWRECON_VERSION << " (VTK " << vtkVersion::GetVTKVersion()
+#ifdef FLOWRECON_CGAL_VERSION
+                << ", CGAL " << FLOWRECON_CGAL_VERSION
+#endif
+                << ")\n";
+      return 0;
+    }
+    const auto& commands = Commands();
+    const auto command = std::find_if(
+      commands.begin(), commands.end(), [&first](const Command& c) { return first == c.Name; });
+    if (command == commands.end())
+    {
+      throw UsageError((first[0] == '-' ? "unknown option '" : "unknown command '") + first + "'");
+    }
+    Arguments args;
+    if (!ParseArguments(*command, { argv1.begin() + 1, argv1.end() }, args))
+    {
+      return 0;
+    }
+    CaptureVtkMessages();
+    std::signal(SIGINT, OnInterrupt);
+    return command->Run(args);
+  }
+  catch (const UsageError& e)
+  {
+    std::cerr << "flowrecon: " << e.what() << "\nTry '" << e.HelpCommand
+              << "' for more information.\n";
+    return ExitUsage;
+  }
+  catch (const Failure& e)
+  {
+    std::cerr << "flowrecon: " << e.what() << "\n";
+    return ExitInputError;
+  }
+  catch (const Interrupted&)
+  {
+    std::cerr << "flowrecon: aborted\n";
+    return ExitInterrupted;
+  }
+  catch (const std::bad_alloc&)
+  {
+    std::cerr << "flowrecon: out of memory\n";
+    return ExitInputError;
+  }
+  catch (const std::exception& e)
+  {
+    std::cerr << "flowrecon: " << e.what() << "\n";
+    return ExitInputError;
+  }
+}

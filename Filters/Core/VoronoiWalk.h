@@ -1,0 +1,166 @@
+// The primitive shared by the descending (stable manifold) and ascending
+// (unstable manifold) walks: inside the Voronoi facet V(uv), a point z on a
+// Voronoi edge V(g) moves along the line through the midpoint m of uv until a
+// link sample s becomes equidistant (flow-complex-algorithm.md §3.2).
+//
+// Why this form: a walk point is written z = c_g + lambda * n_g, where c_g and
+// n_g (circumcentre and normal of the triangle g) depend on input points only.
+// The next point's lambda is then a Moebius function of this one, and every
+// predicate is a polynomial of degree <= 2 in lambda with coefficients computed
+// from the inputs. Interval enclosures therefore widen only with the true
+// conditioning of the flow, not with the length of the walk, and the exact
+// fallback handles one growing rational instead of three.
+#ifndef flowrecon_VoronoiWalk_h
+#define flowrecon_VoronoiWalk_h
+
+#include "Arithmetic.h"
+#include "Progress.h"
+#include "Triangulation.h"
+
+#include <algorithm>
+#include <array>
+#include <vector>
+
+namespace flowrecon
+{
+
+/// A point on the Voronoi edge of triangle G (sorted vertex indices).
+template <class FT>
+struct EdgePoint
+{
+  std::array<Id, 3> G;
+  FT Lambda;
+};
+
+/// Circumcentre and normal (v1 - v0) x (v2 - v0) of the sorted triangle g.
+template <class FT>
+struct Frame
+{
+  Vec<FT> C, N;
+
+  Frame(const Triangulation& tri, const std::array<Id, 3>& g)
+  {
+    const Vec<FT> a = Vec<FT>::From(tri.Coord(g[0])), b = Vec<FT>::From(tri.Coord(g[1])),
+                  c = Vec<FT>::From(tri.Coord(g[2]));
+    this->C = Circumcenter(a, b, c);
+    this->N = (b - a).Cross(c - a);
+  }
+  Vec<FT> At(const FT& lambda) const { return this->C + this->N * lambda; }
+};
+
+inline std::array<Id, 3> SortedTriangle(Id a, Id b, Id c)
+{
+  std::array<Id, 3> g{ { a, b, c } };
+  std::sort(g.begin(), g.end());
+  return g;
+}
+
+/// f(lambda) = -(a + b lambda) / (c + d lambda) over an interval: f is monotone
+/// where the denominator keeps its sign, so the hull of the end values encloses it.
+inline IntervalFT Moebius(const IntervalFT& a, const IntervalFT& b, const IntervalFT& c,
+  const IntervalFT& d, const IntervalFT& lambda)
+{
+  if (CertainSign(c + d * lambda) == 0)
+  {
+    throw Degenerate("walk runs parallel to a Voronoi edge");
+  }
+  const IntervalFT lo(lambda.inf()), hi(lambda.sup());
+  const IntervalFT flo = -(a + b * lo) / (c + d * lo), fhi = -(a + b * hi) / (c + d * hi);
+  return IntervalFT(std::min(flo.inf(), fhi.inf()), std::max(flo.sup(), fhi.sup()));
+}
+inline ExactFT Moebius(
+  const ExactFT& a, const ExactFT& b, const ExactFT& c, const ExactFT& d, const ExactFT& lambda)
+{
+  const ExactFT den = c + d * lambda;
+  if (CGAL::sign(den) == CGAL::ZERO)
+  {
+    throw Degenerate("walk runs parallel to a Voronoi edge");
+  }
+  return -(a + b * lambda) / den;
+}
+
+/// The first exit of the walk from z (on V(z.G), inside V(uv)) along the line
+/// through m_uv: toward m_uv if `descending`, away from it otherwise. Candidates
+/// are link samples of uv not in `excluded`. Returns false if no sample is met
+/// (the walk leaves an unbounded Voronoi facet). Throws Degenerate on ties and
+/// CGAL::Uncertain_conversion_exception when intervals cannot decide.
+/// With `descending`, also requires the exit to come before m_uv (t < 1).
+template <class FT>
+bool FirstExit(const Triangulation& tri, const EdgePoint<FT>& z, Id u, Id v,
+  const std::vector<Id>& excluded, bool descending, std::vector<Id>& link, Id& exitSample,
+  EdgePoint<FT>& exitPoint)
+{
+  const Frame<FT> frame(tri, z.G);
+  const Vec<FT> pu = Vec<FT>::From(tri.Coord(u)), pv = Vec<FT>::From(tri.Coord(v));
+  const Vec<FT> m = (pu + pv) / FT(2);
+  const Vec<FT> cm = frame.C - m; // z - m = cm + lambda N
+  const FT uu = pu.SquaredLength();
+  link.clear();
+  tri.Link(u, v, link);
+  Id best = -1;
+  // For candidate s: num = |z-s|^2 - |z-u|^2 >= 0 and D = +-(m - z).(s - u) > 0;
+  // the exit parameter is num / (2 D). Both are affine in lambda.
+  FT bestNum(0), bestDen(1);
+  for (const Id s : link)
+  {
+    if (std::find(excluded.begin(), excluded.end(), s) != excluded.end())
+    {
+      continue;
+    }
+    const Vec<FT> ps = Vec<FT>::From(tri.Coord(s));
+    const Vec<FT> su = ps - pu;
+    FT den = -(cm.Dot(su) + z.Lambda * frame.N.Dot(su)); // (m - z).(s - u)
+    if (!descending)
+    {
+      den = -den;
+    }
+    if (CertainSign(den) <= 0)
+    {
+      continue;
+    }
+    const FT num = FT(2) * (frame.C.Dot(pu - ps) + z.Lambda * frame.N.Dot(pu - ps)) +
+      (ps.SquaredLength() - uu);
+    if (CertainSign(num) <= 0)
+    {
+      throw Degenerate("walk starts on a Voronoi vertex");
+    }
+    if (best >= 0)
+    {
+      const int cmp = CertainSign(num * bestDen - bestNum * den);
+      if (cmp == 0)
+      {
+        throw Degenerate("walk meets a Voronoi vertex");
+      }
+      if (cmp > 0)
+      {
+        continue;
+      }
+    }
+    best = s;
+    bestNum = num;
+    bestDen = den;
+  }
+  if (best < 0)
+  {
+    return false;
+  }
+  if (descending && CertainSign(bestNum - FT(2) * bestDen) >= 0)
+  {
+    throw Degenerate("descending walk reaches the driver of a non-Gabriel edge");
+  }
+  // The exit point y = c' + lambda' n' of V(u v s) is collinear with m and z in
+  // the bisector plane of uv (normal e): ((y - m) x (z - m)).e = 0.
+  exitSample = best;
+  exitPoint.G = SortedTriangle(u, v, best);
+  const Frame<FT> next(tri, exitPoint.G);
+  const Vec<FT> e = pv - pu;
+  const Vec<FT> cm2 = next.C - m;
+  const FT a = cm2.Cross(cm).Dot(e), b = cm2.Cross(frame.N).Dot(e);
+  const FT c = next.N.Cross(cm).Dot(e), d = next.N.Cross(frame.N).Dot(e);
+  exitPoint.Lambda = Moebius(a, b, c, d, z.Lambda);
+  return true;
+}
+
+} // namespace flowrecon
+
+#endif

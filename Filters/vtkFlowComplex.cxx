@@ -1,0 +1,97 @@
+#include "vtkFlowComplex.h"
+
+#include "FlowComplexBuilder.h"
+#include "FlowComplexConversion.h"
+
+#include "vtkDataObject.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkMultiBlockDataSet.h"
+#include "vtkObjectFactory.h"
+
+#include <string>
+
+vtkStandardNewMacro(vtkFlowComplex);
+
+//------------------------------------------------------------------------------
+vtkFlowComplex::vtkFlowComplex() = default;
+vtkFlowComplex::~vtkFlowComplex() = default;
+
+//------------------------------------------------------------------------------
+const char* vtkFlowComplex::BlockName(int block)
+{
+  static const char* names[NUMBER_OF_BLOCKS] = { "CriticalPoints", "HasseDiagram",
+    "StableManifolds", "UnstableManifolds" };
+  return (block >= 0 && block < NUMBER_OF_BLOCKS) ? names[block] : nullptr;
+}
+
+//------------------------------------------------------------------------------
+int vtkFlowComplex::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Remove(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE());
+  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
+  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkTable");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkFlowComplex::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0);
+  vtkMultiBlockDataSet* output = vtkMultiBlockDataSet::GetData(outputVector, 0);
+  if (!output)
+  {
+    vtkErrorMacro("Missing output.");
+    return 0;
+  }
+  std::vector<flowrecon::Point3> samples;
+  std::string error;
+  if (!flowrecon::ExtractSamples(input, samples, error))
+  {
+    vtkErrorMacro(<< error);
+    return 0;
+  }
+
+  flowrecon::BuildOptions options;
+  options.StableManifolds = this->ComputeStableManifolds;
+  options.UnstableManifolds = this->ComputeUnstableManifolds;
+  options.Seed = static_cast<std::uint64_t>(static_cast<unsigned int>(this->PerturbationSeed));
+  flowrecon::Progress progress;
+  progress.Report = [this](double fraction, const char* phase) {
+    this->SetProgressText(phase);
+    this->UpdateProgress(fraction);
+  };
+  progress.ShouldAbort = [this]() { return this->GetAbortExecute() != 0; };
+  try
+  {
+    const flowrecon::FlowComplex fc = flowrecon::BuildFlowComplex(samples, options, progress);
+    flowrecon::ToMultiBlock(fc, output);
+  }
+  catch (const flowrecon::InputError& e)
+  {
+    vtkErrorMacro(<< e.what());
+    return 0;
+  }
+  catch (const flowrecon::Aborted&)
+  {
+    output->Initialize();
+    return 1; // an abort is not an error; the pipeline reports it
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro(<< "flow complex construction failed: " << e.what());
+    return 0;
+  }
+  this->SetProgressText(nullptr);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkFlowComplex::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "ComputeStableManifolds: " << this->ComputeStableManifolds << "\n";
+  os << indent << "ComputeUnstableManifolds: " << this->ComputeUnstableManifolds << "\n";
+  os << indent << "PerturbationSeed: " << this->PerturbationSeed << "\n";
+}

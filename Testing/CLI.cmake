@@ -1,0 +1,104 @@
+# Tests of the command-line tool `flowrecon` (included from Testing/CMakeLists.txt).
+# Each test runs RunCLI.cmake, which checks the exit code, the number of lines
+# on stderr (one for an error, none on success) and regular expressions on the
+# output. Inputs are in Testing/Data; outputs go to <build>/Testing/CLI.
+set(_flowrecon_cli_data "${CMAKE_CURRENT_LIST_DIR}/Data")
+set(_flowrecon_cli_work "${CMAKE_CURRENT_BINARY_DIR}/CLI")
+file(MAKE_DIRECTORY "${_flowrecon_cli_work}")
+
+# flowrecon_add_cli_test(NAME EXIT code [STDOUT regex] [STDERR regex]
+#   [STDERR_LINES n] [VTM file VTM_BLOCKS a,b,...] [FIXTURES_SETUP f]
+#   [FIXTURES_REQUIRED f] ARGS arguments...)
+function (flowrecon_add_cli_test name)
+  cmake_parse_arguments(PARSE_ARGV 1 arg ""
+    "EXIT;STDOUT;STDERR;STDERR_LINES;VTM;VTM_BLOCKS;FIXTURES_SETUP;FIXTURES_REQUIRED" "ARGS")
+  set(defines "-DFLOWRECON=$<TARGET_FILE:flowrecon>" "-DWORKDIR=${_flowrecon_cli_work}"
+    "-DEXPECT_EXIT=${arg_EXIT}")
+  foreach (key STDOUT STDERR)
+    if (DEFINED arg_${key})
+      list(APPEND defines "-DEXPECT_${key}=${arg_${key}}")
+    endif ()
+  endforeach ()
+  foreach (key STDERR_LINES VTM VTM_BLOCKS)
+    if (DEFINED arg_${key})
+      list(APPEND defines "-D${key}=${arg_${key}}")
+    endif ()
+  endforeach ()
+  add_test(NAME cli.${name}
+    COMMAND "${CMAKE_COMMAND}" ${defines} -P "${CMAKE_CURRENT_LIST_DIR}/RunCLI.cmake" -- ${arg_ARGS})
+  set_tests_properties(cli.${name} PROPERTIES TIMEOUT 120)
+  foreach (key FIXTURES_SETUP FIXTURES_REQUIRED)
+    if (DEFINED arg_${key})
+      set_tests_properties(cli.${name} PROPERTIES ${key} "${arg_${key}}")
+    endif ()
+  endforeach ()
+endfunction ()
+
+set(_d "${_flowrecon_cli_data}")
+set(_w "${_flowrecon_cli_work}")
+
+# Help, version, usage errors (exit code 2, an error line and a hint).
+flowrecon_add_cli_test(Help EXIT 0 STDERR_LINES 0
+  STDOUT "^Usage: flowrecon COMMAND.*complex.*info" ARGS --help)
+flowrecon_add_cli_test(CommandHelp EXIT 0 STDERR_LINES 0
+  STDOUT "^Usage: flowrecon complex INPUT -o OUT.vtm.*--no-stable" ARGS complex --help)
+flowrecon_add_cli_test(Version EXIT 0 STDOUT "^flowrecon ${PROJECT_VERSION} \\(VTK " ARGS --version)
+flowrecon_add_cli_test(NoCommand EXIT 2 STDERR_LINES 2
+  STDERR "^flowrecon: missing command\nTry 'flowrecon --help'" ARGS)
+flowrecon_add_cli_test(UnknownCommand EXIT 2 STDERR_LINES 2
+  STDERR "^flowrecon: unknown command 'frobnicate'\nTry 'flowrecon --help'" ARGS frobnicate)
+flowrecon_add_cli_test(UnknownOption EXIT 2 STDERR_LINES 2
+  STDERR "^flowrecon: unknown option '--frob' for 'complex'\nTry 'flowrecon complex --help'"
+  ARGS complex "${_d}/tetrahedron.xyz" --frob -o out.vtm)
+flowrecon_add_cli_test(MissingOptionValue EXIT 2 STDERR_LINES 2
+  STDERR "^flowrecon: option '-o' needs a value" ARGS complex "${_d}/tetrahedron.xyz" -o)
+flowrecon_add_cli_test(MissingInput EXIT 2 STDERR_LINES 2
+  STDERR "^flowrecon: 'info' needs an INPUT file" ARGS info)
+flowrecon_add_cli_test(MissingOutput EXIT 2 STDERR_LINES 2
+  STDERR "^flowrecon: 'complex' needs an output file" ARGS complex "${_d}/tetrahedron.xyz")
+flowrecon_add_cli_test(OutputNotVtm EXIT 2 STDERR_LINES 2
+  STDERR "^flowrecon: the output file must have the .vtm extension: 'out.vtp'"
+  ARGS complex "${_d}/tetrahedron.xyz" -o out.vtp)
+
+# Bad input: exit code 1 and exactly one line naming the file (and the line).
+flowrecon_add_cli_test(MissingFile EXIT 1 STDERR_LINES 1
+  STDERR "^flowrecon: no_such_cloud\\.xyz: no such file\n$" ARGS info no_such_cloud.xyz)
+flowrecon_add_cli_test(UnparsableLine EXIT 1 STDERR_LINES 1
+  STDERR "^flowrecon: [^\n]*/bad_line\\.xyz:3: cannot parse 'abc' as a number"
+  ARGS complex "${_d}/bad_line.xyz" -o bad_line.vtm)
+flowrecon_add_cli_test(NotANumber EXIT 1 STDERR_LINES 1
+  STDERR "^flowrecon: [^\n]*/nan\\.xyz:2: non-finite x coordinate 'nan'" ARGS info "${_d}/nan.xyz")
+flowrecon_add_cli_test(TooFewPoints EXIT 1 STDERR_LINES 1
+  STDERR "^flowrecon: [^\n]*/three_points\\.xyz: [^\n]*at least 4" ARGS info "${_d}/three_points.xyz")
+flowrecon_add_cli_test(Coplanar EXIT 1 STDERR_LINES 1
+  STDERR "^flowrecon: [^\n]*/coplanar\\.xyz: [^\n]*coplanar" ARGS complex "${_d}/coplanar.xyz" -o coplanar.vtm)
+flowrecon_add_cli_test(OutputDirectoryMissing EXIT 1 STDERR_LINES 1
+  STDERR "^flowrecon: no_such_directory/out\\.vtm: directory 'no_such_directory' does not exist"
+  ARGS complex "${_d}/tetrahedron.xyz" -o no_such_directory/out.vtm)
+
+# Results.
+flowrecon_add_cli_test(ComplexWritesVtm EXIT 0 STDERR_LINES 0
+  STDOUT "tetrahedron\\.vtm: nodes by index 4 6 4 1, "
+  VTM "${_w}/tetrahedron.vtm" VTM_BLOCKS "CriticalPoints,HasseDiagram,StableManifolds,UnstableManifolds"
+  FIXTURES_SETUP flowrecon_cli_vtm
+  ARGS complex "${_d}/tetrahedron.xyz" -o "${_w}/tetrahedron.vtm")
+flowrecon_add_cli_test(InfoTetrahedron EXIT 0 STDERR_LINES 0
+  STDOUT "input points: +4\n.*nodes by index: +4 6 4 1 .*Euler characteristic: +1 .*timings.*Total"
+  ARGS info "${_d}/tetrahedron.xyz")
+flowrecon_add_cli_test(InfoSmallCloud EXIT 0 STDERR_LINES 0
+  STDOUT "input points: +30\n.*Euler characteristic: +1 " ARGS info --quiet "${_d}/small_cloud.xyz")
+flowrecon_add_cli_test(InfoStoredComplex EXIT 0 STDERR_LINES 0
+  STDOUT "\\(flow complex file\\).*nodes by index: +4 6 4 1 .*Euler characteristic: +1 "
+  FIXTURES_REQUIRED flowrecon_cli_vtm ARGS info "${_w}/tetrahedron.vtm")
+flowrecon_add_cli_test(ComplexOfComplex EXIT 1 STDERR_LINES 1
+  STDERR "already a flow complex" FIXTURES_REQUIRED flowrecon_cli_vtm
+  ARGS complex "${_w}/tetrahedron.vtm" -o again.vtm)
+
+# Ctrl-C stops a long run cleanly (needs coreutils' timeout to send SIGINT).
+find_program(FLOWRECON_TIMEOUT_PROGRAM timeout)
+mark_as_advanced(FLOWRECON_TIMEOUT_PROGRAM)
+if (FLOWRECON_TIMEOUT_PROGRAM)
+  add_test(NAME cli.Interrupt
+    COMMAND sh "${CMAKE_CURRENT_LIST_DIR}/RunInterrupt.sh" "$<TARGET_FILE:flowrecon>" "${_w}")
+  set_tests_properties(cli.Interrupt PROPERTIES TIMEOUT 120)
+endif ()

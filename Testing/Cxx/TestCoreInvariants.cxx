@@ -1,0 +1,334 @@
+// Invariants that hold for every point cloud (flow-complex-algorithm.md §8.1):
+// Euler characteristic, boundary of boundary, monotone values along arcs, arc
+// counts, EMST inside the Gabriel graph, patches bounded by their Gabriel edges,
+// contractible total complex, determinism; on random, structured and degenerate
+// clouds.
+#include "Check.h"
+
+#include "FlowComplexBuilder.h"
+#include "Persistence.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <numeric>
+#include <random>
+#include <set>
+#include <string>
+#include <vector>
+
+using namespace flowrecon;
+
+namespace
+{
+
+using Cloud = std::vector<Point3>;
+
+// Clouds are generated with a fixed generator and our own mapping to [0,1), so
+// that they are the same everywhere.
+struct Rng
+{
+  std::mt19937_64 g;
+  explicit Rng(std::uint64_t seed)
+    : g(seed)
+  {
+  }
+  double U() { return static_cast<double>(g() >> 11) * 0x1.0p-53; }
+  double N()
+  {
+    const double u = std::max(this->U(), 1e-300), v = this->U();
+    return std::sqrt(-2 * std::log(u)) * std::cos(2 * M_PI * v);
+  }
+};
+
+Cloud Cube(int n, std::uint64_t seed)
+{
+  Rng r(seed);
+  Cloud c(n);
+  for (Point3& p : c)
+  {
+    p = { { r.U(), r.U(), r.U() } };
+  }
+  return c;
+}
+
+Cloud Sphere(int n, std::uint64_t seed)
+{
+  Rng r(seed);
+  Cloud c(n);
+  for (Point3& p : c)
+  {
+    const double x = r.N(), y = r.N(), z = r.N(), l = std::sqrt(x * x + y * y + z * z);
+    p = { { x / l, y / l, z / l } };
+  }
+  return c;
+}
+
+Cloud Torus(int n, std::uint64_t seed)
+{
+  Rng r(seed);
+  Cloud c(n);
+  for (Point3& p : c)
+  {
+    const double u = 2 * M_PI * r.U(), v = 2 * M_PI * r.U();
+    p = { { (1 + 0.35 * std::cos(v)) * std::cos(u), (1 + 0.35 * std::cos(v)) * std::sin(u),
+      0.35 * std::sin(v) } };
+  }
+  return c;
+}
+
+Cloud Grid(int k, double jitter, std::uint64_t seed)
+{
+  Rng r(seed);
+  Cloud c;
+  for (int i = 0; i < k; ++i)
+    for (int j = 0; j < k; ++j)
+      for (int l = 0; l < k; ++l)
+        c.push_back({ { i + jitter * (r.U() - 0.5), j + jitter * (r.U() - 0.5),
+          l + jitter * (r.U() - 0.5) } });
+  return c;
+}
+
+/// Exactly cospherical points with integer coordinates on the sphere of radius 5.
+Cloud Cospherical()
+{
+  Cloud c;
+  for (int x = -5; x <= 5; ++x)
+    for (int y = -5; y <= 5; ++y)
+      for (int z = -5; z <= 5; ++z)
+        if (x * x + y * y + z * z == 25)
+          c.push_back({ { double(x), double(y), double(z) } });
+  return c;
+}
+
+Cloud WithDuplicates(Cloud c)
+{
+  const std::size_t n = c.size();
+  for (std::size_t i = 0; i < n; i += 3)
+  {
+    c.push_back(c[i]);
+  }
+  return c;
+}
+
+double Dist2(const Point3& a, const Point3& b)
+{
+  return (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
+    (a[2] - b[2]) * (a[2] - b[2]);
+}
+
+/// Edges of a Euclidean minimum spanning tree of the distinct points (Prim, O(n^2)).
+std::set<std::pair<Id, Id>> Emst(const Cloud& c, const std::vector<Id>& rep)
+{
+  std::vector<Id> ids;
+  for (Id i = 0; i < static_cast<Id>(c.size()); ++i)
+  {
+    if (rep[i] == i)
+    {
+      ids.push_back(i);
+    }
+  }
+  std::vector<double> best(ids.size(), HUGE_VAL);
+  std::vector<Id> from(ids.size(), -1);
+  std::vector<bool> in(ids.size(), false);
+  std::set<std::pair<Id, Id>> edges;
+  best[0] = 0;
+  for (std::size_t it = 0; it < ids.size(); ++it)
+  {
+    std::size_t u = ids.size();
+    for (std::size_t i = 0; i < ids.size(); ++i)
+      if (!in[i] && (u == ids.size() || best[i] < best[u]))
+        u = i;
+    in[u] = true;
+    if (from[u] >= 0)
+      edges.insert({ std::min(ids[u], ids[from[u]]), std::max(ids[u], ids[from[u]]) });
+    for (std::size_t i = 0; i < ids.size(); ++i)
+    {
+      const double d = Dist2(c[ids[u]], c[ids[i]]);
+      if (!in[i] && d < best[i])
+      {
+        best[i] = d;
+        from[i] = static_cast<Id>(u);
+      }
+    }
+  }
+  return edges;
+}
+
+void CheckComplex(const std::string& name, const Cloud& cloud, bool emst)
+{
+  std::cout << "-- " << name << " (" << cloud.size() << " points)\n";
+  const FlowComplex fc = BuildFlowComplex(cloud, BuildOptions(), Progress());
+  const auto n = fc.CountByIndex();
+  CHECK(n[0] - n[1] + n[2] - n[3] == 1);
+  CHECK(fc.Nodes.back().IsInfinity() && fc.InfinityNode == static_cast<Id>(fc.Nodes.size()) - 1);
+
+  // Arcs go up one index with strictly increasing values.
+  std::vector<int> down(fc.Nodes.size(), 0), up(fc.Nodes.size(), 0);
+  for (const Arc& a : fc.Arcs)
+  {
+    CHECK(fc.Nodes[a.Upper].Index == fc.Nodes[a.Lower].Index + 1);
+    CHECK(fc.Nodes[a.Lower].Value < fc.Nodes[a.Upper].Value);
+    CHECK(a.Multiplicity >= 1);
+    down[a.Upper] += a.Multiplicity;
+    if (fc.Nodes[a.Lower].Index == 2)
+    {
+      up[a.Lower] += a.Multiplicity;
+    }
+  }
+  for (std::size_t i = 0; i < fc.Nodes.size(); ++i)
+  {
+    const Node& node = fc.Nodes[i];
+    if (node.Index == 1)
+      CHECK(down[i] == 2);
+    if (node.Index == 2)
+      CHECK(up[i] == 2 && down[i] >= 1);
+    if (node.Index == 3 && !node.IsInfinity())
+      CHECK(down[i] >= 1);
+  }
+
+  // Boundary of boundary is zero over Z/2 (arcs to infinity excluded).
+  std::map<Id, std::vector<std::pair<Id, int>>> below;
+  for (const Arc& a : fc.Arcs)
+  {
+    if (a.Upper != fc.InfinityNode && a.Multiplicity % 2 == 1)
+      below[a.Upper].push_back({ a.Lower, 1 });
+  }
+  bool dd = true;
+  for (const auto& entry : below)
+  {
+    std::map<Id, int> parity;
+    for (const auto& b : entry.second)
+      for (const auto& bb : below[b.first])
+        parity[bb.first] ^= 1;
+    for (const auto& p : parity)
+      dd = dd && p.second == 0;
+  }
+  CHECK(dd);
+
+  // The finite complex is contractible: one essential class, and every maximum
+  // kills a 2-cycle (boundaries of maxima are independent, GJ Theorem 2).
+  int essential = 0, dimension3 = 0;
+  for (const PersistencePair& p : ComputePersistence(fc.Nodes, fc.Arcs))
+  {
+    essential += p.Death < 0 ? 1 : 0;
+    dimension3 += p.Dimension == 3 ? 1 : 0;
+  }
+  CHECK(essential == 1);
+  CHECK(dimension3 == 0);
+
+  // Each patch is a surface whose boundary edges are its Gabriel edges, counted
+  // with the arc multiplicity; other edges are shared by exactly two triangles.
+  std::map<Id, std::map<std::pair<Id, Id>, int>> edgeUse;
+  for (std::size_t t = 0; t < fc.Triangles.size(); ++t)
+  {
+    const auto& tr = fc.Triangles[t];
+    for (int k = 0; k < 3; ++k)
+    {
+      const Id a = std::min(tr[k], tr[(k + 1) % 3]), b = std::max(tr[k], tr[(k + 1) % 3]);
+      ++edgeUse[fc.TriangleNode[t]][{ a, b }];
+    }
+  }
+  std::map<std::pair<Id, Id>, Id> gabriel;
+  for (std::size_t i = 0; i < fc.Nodes.size(); ++i)
+    if (fc.Nodes[i].Index == 1)
+      gabriel[{ fc.Nodes[i].Simplex[0], fc.Nodes[i].Simplex[1] }] = static_cast<Id>(i);
+  std::map<std::pair<Id, Id>, int> arcMult;
+  for (const Arc& a : fc.Arcs)
+    arcMult[{ a.Lower, a.Upper }] = a.Multiplicity;
+  bool patches = true;
+  for (const auto& patch : edgeUse)
+  {
+    for (const auto& e : patch.second)
+    {
+      const bool samples = e.first.first < fc.NumberOfInputPoints && e.first.second < fc.NumberOfInputPoints;
+      if (samples)
+      {
+        const auto g = gabriel.find(e.first);
+        patches = patches && g != gabriel.end() && arcMult[{ g->second, patch.first }] == e.second;
+      }
+      else
+      {
+        patches = patches && e.second == 2;
+      }
+    }
+  }
+  CHECK(patches);
+
+  if (emst)
+  {
+    bool inside = true;
+    for (const auto& e : Emst(cloud, fc.Representative))
+      inside = inside && gabriel.count(e) == 1;
+    CHECK(inside);
+  }
+
+  // Determinism: a second run gives the same nodes, arcs and triangles.
+  const FlowComplex again = BuildFlowComplex(cloud, BuildOptions(), Progress());
+  bool same = again.Nodes.size() == fc.Nodes.size() && again.Arcs.size() == fc.Arcs.size() &&
+    again.Triangles == fc.Triangles && again.Points == fc.Points;
+  for (std::size_t i = 0; same && i < fc.Nodes.size(); ++i)
+    same = again.Nodes[i].Simplex == fc.Nodes[i].Simplex && again.Nodes[i].Value == fc.Nodes[i].Value;
+  for (std::size_t i = 0; same && i < fc.Arcs.size(); ++i)
+    same = again.Arcs[i].Lower == fc.Arcs[i].Lower && again.Arcs[i].Upper == fc.Arcs[i].Upper &&
+      again.Arcs[i].Multiplicity == fc.Arcs[i].Multiplicity;
+  CHECK(same);
+  std::cout << "   nodes " << n[0] << "/" << n[1] << "/" << n[2] << "/" << n[3]
+            << ", triangles " << fc.Triangles.size() << ", attempts " << fc.Report.Attempts
+            << ", duplicates " << fc.Report.DuplicatePoints << "\n";
+}
+
+/// The interval-filtered walks and the exact-only walks give the same complex.
+void CheckExactAgreement(const std::string& name, const Cloud& cloud)
+{
+  std::cout << "-- exact agreement: " << name << "\n";
+  BuildOptions exact;
+  exact.ExactOnly = true;
+  const FlowComplex a = BuildFlowComplex(cloud, BuildOptions(), Progress());
+  const FlowComplex b = BuildFlowComplex(cloud, exact, Progress());
+  CHECK(b.Report.ExactFallbacks > 0);
+  CHECK(a.Nodes.size() == b.Nodes.size() && a.Arcs.size() == b.Arcs.size());
+  CHECK(a.Triangles == b.Triangles && a.TriangleNode == b.TriangleNode);
+  bool arcs = a.Arcs.size() == b.Arcs.size();
+  for (std::size_t i = 0; arcs && i < a.Arcs.size(); ++i)
+    arcs = a.Arcs[i].Lower == b.Arcs[i].Lower && a.Arcs[i].Upper == b.Arcs[i].Upper &&
+      a.Arcs[i].Multiplicity == b.Arcs[i].Multiplicity;
+  CHECK(arcs);
+  double worst = 0;
+  for (std::size_t i = 0; i < std::min(a.Points.size(), b.Points.size()); ++i)
+    worst = std::max(worst, std::sqrt(Dist2(a.Points[i], b.Points[i])));
+  CHECK(a.Points.size() == b.Points.size() && worst < 1e-8);
+  bool lines = a.FlowLines.size() == b.FlowLines.size();
+  for (std::size_t i = 0; lines && i < a.FlowLines.size(); ++i)
+    lines = a.FlowLines[i].Target == b.FlowLines[i].Target;
+  CHECK(lines);
+}
+
+} // namespace
+
+int main()
+{
+  for (std::uint64_t seed = 1; seed <= 6; ++seed)
+  {
+    CheckComplex("cube " + std::to_string(seed), Cube(20 + 40 * static_cast<int>(seed), seed), true);
+    CheckComplex("sphere " + std::to_string(seed), Sphere(30 + 50 * static_cast<int>(seed), seed), true);
+    CheckComplex("torus " + std::to_string(seed), Torus(60 * static_cast<int>(seed), seed), true);
+  }
+  CheckComplex("cube 5000", Cube(5000, 7), false);
+  CheckComplex("torus 8000", Torus(8000, 8), false);
+  CheckExactAgreement("cube", Cube(400, 21));
+  CheckExactAgreement("torus", Torus(600, 22));
+  CheckExactAgreement("jittered grid", Grid(5, 1e-3, 23));
+  CheckComplex("jittered grid", Grid(6, 1e-3, 9), true);
+  CheckComplex("exact grid", Grid(5, 0, 0), true);
+  const FlowComplex grid = BuildFlowComplex(Grid(4, 0, 0), BuildOptions(), Progress());
+  CHECK(grid.Report.Perturbed() && grid.Report.RightAngles > 0);
+  CheckComplex("cospherical", Cospherical(), true);
+  const Cloud dup = WithDuplicates(Sphere(100, 11));
+  CheckComplex("duplicates", dup, true);
+  const FlowComplex fd = BuildFlowComplex(dup, BuildOptions(), Progress());
+  CHECK(fd.Report.DuplicatePoints == 34 && fd.CountByIndex()[0] == 100);
+  return check::Finish("TestCoreInvariants");
+}

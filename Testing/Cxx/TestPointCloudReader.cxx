@@ -1,0 +1,457 @@
+// vtkPointCloudReader: every text format parsed exactly; every kind of bad
+// input rejected with one line naming the file (and the line where one
+// applies), raised as a VTK error too; files written by VTK's writers read back.
+// Usage: TestPointCloudReader WORKDIR (files go to WORKDIR/PointCloudReader).
+
+#include "Check.h"
+#include "vtkPointCloudReader.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCellArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkExecutive.h"
+#include "vtkImageData.h"
+#include "vtkLogger.h"
+#include "vtkMultiBlockDataSet.h"
+#include "vtkNew.h"
+#include "vtkOBJWriter.h"
+#include "vtkPLYWriter.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataWriter.h"
+#include "vtkSmartPointer.h"
+#include "vtkXMLImageDataWriter.h"
+#include "vtkXMLMultiBlockDataWriter.h"
+#include "vtkXMLPolyDataWriter.h"
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+using Points = std::vector<std::array<double, 3>>;
+
+std::string Directory;
+
+std::string PathOf(const std::string& name)
+{
+  return Directory + "/" + name;
+}
+
+std::string Write(const std::string& name, const std::string& content)
+{
+  std::ofstream out(PathOf(name), std::ios::binary | std::ios::trunc);
+  out << content;
+  return PathOf(name);
+}
+
+struct Result
+{
+  bool Ok = false;
+  std::string Message;     // GetErrorMessage()
+  std::string ErrorEvents; // text of the VTK errors the reader raised
+  vtkSmartPointer<vtkPolyData> Output;
+};
+
+Result Read(const std::string& path)
+{
+  Result result;
+  vtkNew<vtkPointCloudReader> reader;
+  reader->SetFileName(path.c_str());
+  vtkNew<vtkCallbackCommand> onError;
+  onError->SetClientData(&result.ErrorEvents);
+  onError->SetCallback([](vtkObject*, unsigned long, void* clientData, void* callData) {
+    *static_cast<std::string*>(clientData) += static_cast<const char*>(callData);
+  });
+  reader->AddObserver(vtkCommand::ErrorEvent, onError);
+  result.Ok = reader->GetExecutive()->Update() != 0;
+  result.Message = reader->GetErrorMessage();
+  result.Output = reader->GetOutput();
+  return result;
+}
+
+void ExpectPoints(const std::string& path, const Points& expected)
+{
+  const Result r = Read(path);
+  CHECK(r.Ok);
+  CHECK(r.Message.empty());
+  if (!r.Ok)
+  {
+    std::cout << "  reading " << path << ": " << r.Message << "\n";
+    return;
+  }
+  vtkPolyData* out = r.Output;
+  CHECK(out->GetNumberOfPoints() == static_cast<vtkIdType>(expected.size()));
+  CHECK(out->GetPoints()->GetDataType() == VTK_DOUBLE);
+  CHECK(out->GetNumberOfVerts() == out->GetNumberOfPoints());
+  CHECK(out->GetVerts()->GetNumberOfConnectivityIds() == out->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints() && i < vtkIdType(expected.size()); ++i)
+  {
+    double p[3];
+    out->GetPoint(i, p);
+    const bool same = p[0] == expected[i][0] && p[1] == expected[i][1] && p[2] == expected[i][2];
+    CHECK(same);
+    if (!same)
+    {
+      std::cout.precision(17);
+      std::cout << "  " << path << " point " << i << ": " << p[0] << " " << p[1] << " " << p[2]
+                << " expected " << expected[i][0] << " " << expected[i][1] << " " << expected[i][2]
+                << "\n";
+    }
+  }
+}
+
+// `line` 0: the message must be "PATH: ..."; otherwise "PATH:LINE: ...".
+void ExpectError(const std::string& path, int line, const std::string& words)
+{
+  const Result r = Read(path);
+  const std::string prefix = path + (line > 0 ? ":" + std::to_string(line) : std::string()) + ": ";
+  const bool ok = !r.Ok && r.Message.rfind(prefix, 0) == 0 &&
+    r.Message.find(words) != std::string::npos && r.Message.find('\n') == std::string::npos &&
+    r.ErrorEvents.find(r.Message) != std::string::npos;
+  CHECK(ok);
+  if (!ok)
+  {
+    std::cout << "  " << path << ": ok=" << r.Ok << " message [" << r.Message
+              << "] expected prefix [" << prefix << "] and [" << words << "]\n";
+  }
+}
+
+// Big-endian bytes of a float (the PLY test below is written by hand).
+std::string BigEndian(float value)
+{
+  std::uint32_t bits;
+  std::memcpy(&bits, &value, 4);
+  std::string bytes(4, '\0');
+  for (int k = 0; k < 4; ++k)
+  {
+    bytes[k] = static_cast<char>((bits >> (24 - 8 * k)) & 0xff);
+  }
+  return bytes;
+}
+
+void TestTextFormats()
+{
+  ExpectPoints(Write("a.xyz",
+                 "# comment\n// comment\n\n1 2 3\n  -1.5\t2.25  1e-3 extra words\n+4,5,6\r\n"
+                 "0.1 0.2 0.3\n1e-400 -0 7\n"),
+    { { 1, 2, 3 }, { -1.5, 2.25, 1e-3 }, { 4, 5, 6 }, { 0.1, 0.2, 0.3 }, { 0, 0, 7 } });
+  // Byte order mark, old Mac line ends, upper-case extension.
+  ExpectPoints(Write("b.TXT",
+                 "\xEF\xBB\xBF"
+                 "1 2 3\r4 5 6\r"),
+    { { 1, 2, 3 }, { 4, 5, 6 } });
+  ExpectPoints(
+    Write("c.pts", "2\n1 2 3 100 200 150 250\n4 5 6 90 10 20 30\n"), { { 1, 2, 3 }, { 4, 5, 6 } });
+  // Header names the columns, in any order and case.
+  ExpectPoints(
+    Write("d.csv", "id,label,Z,Y,X\n1,a,3,2,1\n2,b,6,5,4\n"), { { 1, 2, 3 }, { 4, 5, 6 } });
+  ExpectPoints(Write("e.csv", "\"Points:0\",\"Points:1\",\"Points:2\",\"val\"\n0.5,1.5,2.5,7\n"),
+    { { 0.5, 1.5, 2.5 } });
+  // No header: the first three numeric columns.
+  ExpectPoints(Write("f.csv", "p1,1,2,3,9\np2,4,5,6,9\n"), { { 1, 2, 3 }, { 4, 5, 6 } });
+  ExpectPoints(Write("g.csv", "a,b,c,d\n1,2,3,4\n"), { { 1, 2, 3 } });
+  ExpectPoints(Write("h.csv", "x;y;z\n1;2;3\n"), { { 1, 2, 3 } });
+  ExpectPoints(Write("i.csv", "name,x,y,z\n\"a, b\",1,2,3\n"), { { 1, 2, 3 } });
+  ExpectPoints(Write("j.csv", "1 2 3\n"), { { 1, 2, 3 } });
+  ExpectPoints(Write("k.off", "OFF\n# comment\n3 1 0\n\n0 0 0\n1 0.5 0\n0 1 2\n3 0 1 2\n"),
+    { { 0, 0, 0 }, { 1, 0.5, 0 }, { 0, 1, 2 } });
+  ExpectPoints(Write("l.off", "COFF 2 0 0\n1 2 3 255 0 0 255\n4 5 6 0 255 0 255\n"),
+    { { 1, 2, 3 }, { 4, 5, 6 } });
+  ExpectPoints(
+    Write("m.obj", "# c\nmtllib a.mtl\nv 1 2 3\nvn 0 0 1\nvt 0.5 0.5\nv 4 5 6 1.0\nf 1 2 1\n"),
+    { { 1, 2, 3 }, { 4, 5, 6 } });
+
+  // ASCII PLY with an element before the vertices, normals and colors.
+  const Result ply = Read(Write("n.ply",
+    "ply\nformat ascii 1.0\ncomment made by hand\nelement info 1\nproperty list uchar int ids\n"
+    "element vertex 2\nproperty float x\nproperty float y\nproperty float z\n"
+    "property float nx\nproperty float ny\nproperty float nz\n"
+    "property uchar red\nproperty uchar green\nproperty uchar blue\n"
+    "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
+    "2 7 8\n0.5 1.5 -2 0 0 1 255 128 0\n3 4 5 1 0 0 1 2 3\n3 0 1 1\n"));
+  CHECK(ply.Ok);
+  if (ply.Ok)
+  {
+    vtkPolyData* out = ply.Output;
+    CHECK(out->GetNumberOfPoints() == 2);
+    CHECK(out->GetPoint(0)[0] == 0.5 && out->GetPoint(0)[1] == 1.5 && out->GetPoint(0)[2] == -2);
+    CHECK(out->GetPoint(1)[0] == 3 && out->GetPoint(1)[1] == 4 && out->GetPoint(1)[2] == 5);
+    vtkDataArray* normals = out->GetPointData()->GetNormals();
+    CHECK(normals && normals->GetNumberOfComponents() == 3 && normals->GetComponent(0, 2) == 1);
+    vtkDataArray* rgb = out->GetPointData()->GetArray("RGB");
+    CHECK(rgb && rgb->GetDataType() == VTK_UNSIGNED_CHAR && rgb->GetComponent(0, 1) == 128 &&
+      rgb->GetComponent(1, 2) == 3);
+  }
+
+  // Binary big-endian PLY, with a list element to skip before the vertices.
+  std::string binary = "ply\nformat binary_big_endian 1.0\nelement info 1\n"
+                       "property list uchar int ids\nelement vertex 2\nproperty float x\n"
+                       "property float y\nproperty float z\nproperty uchar intensity\nend_header\n";
+  binary += std::string("\x02\x00\x00\x00\x07\x00\x00\x00\x08", 9);
+  binary += BigEndian(1.5f) + BigEndian(-2.25f) + BigEndian(1e-3f) + "\x09";
+  binary += BigEndian(4.f) + BigEndian(5.f) + BigEndian(6.f) + "\x0a";
+  const Result big = Read(Write("o.ply", binary));
+  CHECK(big.Ok);
+  if (big.Ok)
+  {
+    CHECK(big.Output->GetNumberOfPoints() == 2);
+    CHECK(big.Output->GetPoint(0)[0] == 1.5 && big.Output->GetPoint(0)[1] == -2.25 &&
+      big.Output->GetPoint(0)[2] == double(1e-3f));
+    CHECK(big.Output->GetPoint(1)[2] == 6);
+    vtkDataArray* intensity = big.Output->GetPointData()->GetArray("intensity");
+    CHECK(intensity && intensity->GetComponent(1, 0) == 10);
+  }
+}
+
+void TestBadInput()
+{
+  ExpectError(PathOf("missing.xyz"), 0, "no such file");
+  std::filesystem::create_directories(PathOf("folder.xyz"));
+  ExpectError(PathOf("folder.xyz"), 0, "directory");
+  ExpectError(Write("unknown.foo", "1 2 3\n"), 0, "unknown file extension '.foo'");
+  ExpectError(Write("noextension", "1 2 3\n"), 0, "no file extension");
+  ExpectError(Write("empty.xyz", ""), 0, "file is empty");
+  ExpectError(Write("comments.xyz", "# only\n\n// comments\n"), 0, "no points found");
+  ExpectError(Write("word.xyz", "1 2 3\n4 5 6\n7 eight 9\n"), 3, "cannot parse 'eight'");
+  ExpectError(Write("two.xyz", "1 2 3\n\n4 5\n"), 3, "expected 3 coordinates (x y z), found 2");
+  ExpectError(Write("count.xyz", "2\n1 2 3\n"), 1, "found 1"); // a count line only in .pts
+  ExpectError(Write("count.pts", "2\n3\n"), 2, "found 1");
+  ExpectError(Write("nan.xyz", "1 2 3\nnan 1 2\n"), 2, "non-finite x coordinate 'nan'");
+  ExpectError(Write("inf.txt", "1 2 3\n4 5 6\n1 -inf 2\n"), 3, "non-finite y coordinate");
+  ExpectError(Write("overflow.xyz", "1e999 0 0\n"), 1, "out of range");
+  ExpectError(Write("binary.xyz", std::string("1 2 3\n\x01\x02\x00\xff\n", 10)), 2, "binary data");
+  ExpectError(Write("narrow.csv", "a,b\n1,2\n"), 2, "at least 3 numeric columns");
+  ExpectError(Write("short.csv", "x,y,z\n1,2,3\n4,5\n"), 3, "missing z coordinate");
+  ExpectError(Write("word.csv", "x,y,z\n1,2,3\n4,five,6\n"), 3, "cannot parse 'five'");
+  ExpectError(Write("nan.csv", "x,y,z\n1,2,NaN\n"), 2, "non-finite z coordinate");
+  ExpectError(
+    Write("truncated.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n"), 4, "file ends after 2 of 4 vertices");
+  ExpectError(Write("huge.off", "OFF\n999999999999 1 0\n0 0 0\n"), 3,
+    "file ends after 1 of 999999999999 vertices");
+  ExpectError(Write("header.off", "OFX\n0 0 0\n"), 1, "expected the OFF header keyword");
+  ExpectError(Write("counts.off", "OFF\n-3 1 0\n"), 2, "expected the counts");
+  ExpectError(Write("vertex.off", "OFF\n2 0 0\n0 0 0\n1 x 0\n"), 4, "cannot parse 'x'");
+  ExpectError(
+    Write("faces.off", "OFF\n1 2 0\n0 0 0\n3 0 0 0\n"), 4, "file ends after 1 of 2 faces");
+  ExpectError(Write("short.obj", "v 1 2 3\nv 4 5\n"), 2, "expected 3 coordinates after 'v'");
+  ExpectError(Write("faces.obj", "f 1 2 3\n"), 0, "no points found");
+
+  const std::string plyHeader =
+    "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+    "property float z\nend_header\n";
+  ExpectError(Write("truncated.ply", plyHeader + "1.000 2.000 3.000\n4 5 6\n"), 9,
+    "file ends after 2 of 3 vertex elements");
+  ExpectError(Write("nan.ply", plyHeader + "1 2 3\n4 5 6\n7 nan 9\n"), 10, "non-finite y");
+  ExpectError(Write("huge.ply",
+                "ply\nformat binary_little_endian 1.0\nelement vertex 4000000000\n"
+                "property float x\nproperty float y\nproperty float z\nend_header\n" +
+                  std::string(24, '\0')),
+    0, "announces 4000000000 vertices");
+  ExpectError(Write("noz.ply",
+                "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+                "end_header\n1 2\n"),
+    0, "no 'z' property");
+  ExpectError(
+    Write("garbage.ply", std::string("\x7f\x45LF\x02\x01\x01\x00 junk", 13)), 0, "not a PLY file");
+  ExpectError(Write("garbage.vtp", std::string("\x89PNG\r\n\x1a\n\x00\x00 junk", 14)), 0,
+    "cannot read VTK XML file");
+  ExpectError(Write("huge.vtk",
+                "# vtk DataFile Version 3.0\nx\nASCII\nDATASET POLYDATA\n"
+                "POINTS 999999999999 float\n1 2 3\n"),
+    5, "invalid count");
+  ExpectError(Write("truncated.vtk",
+                "# vtk DataFile Version 3.0\nx\nASCII\nDATASET POLYDATA\nPOINTS 3 float\n"
+                "1 2 3\n4 5 6\n"),
+    0, "cannot read legacy VTK file");
+  ExpectError(Write("version.vtk",
+                "# vtk DataFile Version 1e30.1\nx\nASCII\nDATASET POLYDATA\nPOINTS 1 float\n"
+                "1 2 3\n"),
+    1, "not a legacy VTK file");
+}
+
+vtkSmartPointer<vtkPolyData> Cloud(const Points& points, const char* arrayName, double first)
+{
+  auto cloud = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> p;
+  p->SetDataTypeToDouble();
+  vtkNew<vtkDoubleArray> values;
+  values->SetName(arrayName);
+  vtkNew<vtkCellArray> polys;
+  for (const auto& q : points)
+  {
+    values->InsertNextValue(first + p->InsertNextPoint(q.data()));
+  }
+  const vtkIdType triangle[3] = { 0, 1, 2 };
+  polys->InsertNextCell(3, triangle);
+  cloud->SetPoints(p);
+  cloud->SetPolys(polys);
+  cloud->GetPointData()->AddArray(values);
+  return cloud;
+}
+
+void ExpectArray(const std::string& path, const char* name, const std::vector<double>& values)
+{
+  const Result r = Read(path);
+  vtkDataArray* array = r.Ok ? r.Output->GetPointData()->GetArray(name) : nullptr;
+  CHECK(array && array->GetNumberOfTuples() == static_cast<vtkIdType>(values.size()));
+  for (std::size_t i = 0; array && i < values.size(); ++i)
+  {
+    CHECK(array->GetComponent(static_cast<vtkIdType>(i), 0) == values[i]);
+  }
+}
+
+// Copies `source` with the first `from` replaced by `to` and expects the reader
+// to refuse the copy, naming the line of the change.
+void Corrupt(const char* source, const char* target, const std::string& from, const std::string& to,
+  const std::string& words)
+{
+  std::ifstream in(PathOf(source), std::ios::binary);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t at = text.find(from);
+  CHECK(at != std::string::npos);
+  if (at != std::string::npos)
+  {
+    text.replace(at, from.size(), to);
+    const int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + at, '\n'));
+    ExpectError(Write(target, text), line, words);
+  }
+}
+
+void TestVtkWrittenFiles()
+{
+  // Values exact in float, since PLY and OBJ writers store floats.
+  const Points points = { { 0.5, -1.25, 2 }, { 3, 0.125, -4 }, { -0.75, 6, 8.5 }, { 1, 2, 3 } };
+  auto cloud = Cloud(points, "Temperature", 10);
+
+  for (const int type : { VTK_ASCII, VTK_BINARY })
+  {
+    const std::string name = type == VTK_ASCII ? "written_ascii.ply" : "written_binary.ply";
+    vtkNew<vtkPLYWriter> ply;
+    ply->SetInputData(cloud);
+    ply->SetFileType(type);
+    ply->SetFileName(PathOf(name).c_str());
+    CHECK(ply->Write() == 1);
+    ExpectPoints(PathOf(name), points);
+  }
+
+  vtkNew<vtkOBJWriter> obj;
+  obj->SetInputData(cloud);
+  obj->SetFileName(PathOf("written.obj").c_str());
+  CHECK(obj->Write() == 1);
+  ExpectPoints(PathOf("written.obj"), points);
+
+  vtkNew<vtkPolyDataWriter> legacy;
+  legacy->SetInputData(cloud);
+  legacy->SetFileName(PathOf("written.vtk").c_str());
+  CHECK(legacy->Write() == 1);
+  ExpectPoints(PathOf("written.vtk"), points);
+  ExpectArray(PathOf("written.vtk"), "Temperature", { 10, 11, 12, 13 });
+
+  // XML: ascii, base64 and raw appended, compressed or not.
+  struct XmlVariant
+  {
+    const char* Name;
+    int Mode;
+    bool Encode;
+    bool Compress;
+  };
+  for (const XmlVariant& v : { XmlVariant{ "written_ascii.vtp", vtkXMLWriter::Ascii, true, true },
+         XmlVariant{ "written_base64.vtp", vtkXMLWriter::Appended, true, true },
+         XmlVariant{ "written_raw.vtp", vtkXMLWriter::Appended, false, true },
+         XmlVariant{ "written_inline.vtp", vtkXMLWriter::Binary, true, true },
+         XmlVariant{ "written_plain.vtp", vtkXMLWriter::Appended, false, false } })
+  {
+    vtkNew<vtkXMLPolyDataWriter> xml;
+    xml->SetInputData(cloud);
+    xml->SetDataMode(v.Mode);
+    xml->SetEncodeAppendedData(v.Encode);
+    if (!v.Compress)
+    {
+      xml->SetCompressorTypeToNone();
+    }
+    xml->SetFileName(PathOf(v.Name).c_str());
+    CHECK(xml->Write() == 1);
+    ExpectPoints(PathOf(v.Name), points);
+    ExpectArray(PathOf(v.Name), "Temperature", { 10, 11, 12, 13 });
+  }
+
+  // Image data: implicit points.
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(2, 2, 2);
+  image->SetOrigin(1, 2, 3);
+  image->SetSpacing(0.5, 0.25, 2);
+  vtkNew<vtkXMLImageDataWriter> vti;
+  vti->SetInputData(image);
+  vti->SetFileName(PathOf("written.vti").c_str());
+  CHECK(vti->Write() == 1);
+  ExpectPoints(PathOf("written.vti"),
+    { { 1, 2, 3 }, { 1.5, 2, 3 }, { 1, 2.25, 3 }, { 1.5, 2.25, 3 }, { 1, 2, 5 }, { 1.5, 2, 5 },
+      { 1, 2.25, 5 }, { 1.5, 2.25, 5 } });
+
+  // Multiblock: the points of the leaves in order, the arrays they share.
+  const Points more = { { 7, 8, 9 }, { -7, -8, -9 }, { 0, 0, 1 } };
+  auto second = Cloud(more, "Temperature", 20);
+  vtkNew<vtkDoubleArray> other;
+  other->SetName("Other");
+  other->SetNumberOfTuples(3);
+  other->Fill(1);
+  second->GetPointData()->AddArray(other);
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  blocks->SetBlock(0, cloud);
+  blocks->SetBlock(1, second);
+  vtkNew<vtkXMLMultiBlockDataWriter> vtm;
+  vtm->SetInputData(blocks);
+  vtm->SetFileName(PathOf("written.vtm").c_str());
+  CHECK(vtm->Write() == 1);
+  Points all = points;
+  all.insert(all.end(), more.begin(), more.end());
+  ExpectPoints(PathOf("written.vtm"), all);
+  ExpectArray(PathOf("written.vtm"), "Temperature", { 10, 11, 12, 13, 20, 21, 22 });
+  const Result multi = Read(PathOf("written.vtm"));
+  CHECK(multi.Ok && !multi.Output->GetPointData()->GetArray("Other"));
+
+  // Corruptions of files VTK itself wrote that crash or hang VTK's readers are
+  // refused before those readers run.
+  Corrupt("written_raw.vtp", "corrupt_count.vtp", "NumberOfPoints=\"4\"",
+    "NumberOfPoints=\"99999999999\"", "implausible NumberOfPoints");
+  Corrupt("written_raw.vtp", "corrupt_type.vtp", "type=\"Float64\"", "type=\"Int6-1\"",
+    "implausible type='Int6-1'");
+  Corrupt("written.vtm", "corrupt_index.vtm", "index=\"1\"", "index=\"-1\"", "implausible index");
+  Corrupt("written.vtk", "corrupt_count.vtk", "POLYGONS 2 3", "POLYGONS 2 -3", "invalid count");
+}
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  if (argc < 2)
+  {
+    std::cout << "usage: TestPointCloudReader WORKDIR\n";
+    return EXIT_FAILURE;
+  }
+  Directory = std::string(argv[1]) + "/PointCloudReader";
+  std::filesystem::remove_all(Directory);
+  std::filesystem::create_directories(Directory);
+  // The reader's messages are checked through its ErrorEvent; keep stderr quiet.
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+
+  CHECK(vtkPointCloudReader::CanReadFile("a/b.XYZ"));
+  CHECK(vtkPointCloudReader::CanReadFile("cloud.vtm"));
+  CHECK(!vtkPointCloudReader::CanReadFile("image.png"));
+  CHECK(!vtkPointCloudReader::CanReadFile(nullptr));
+
+  TestTextFormats();
+  TestBadInput();
+  TestVtkWrittenFiles();
+  return check::Finish("TestPointCloudReader");
+}
