@@ -1,5 +1,5 @@
 #!/bin/sh
-# Ctrl-C test: SIGINT one second into `flowrecon complex` on a 50000-point
+# Ctrl-C test: SIGINT two seconds into `flowrecon complex` on a 50000-point
 # cloud (a run of several seconds) must stop it cleanly: exit code 130, the
 # single line "flowrecon: aborted" on stderr, and no output file.
 # Usage: RunInterrupt.sh FLOWRECON WORKDIR
@@ -11,7 +11,7 @@ cloud="$work/interrupt.xyz"
 out="$work/interrupt.vtm"
 rm -f "$out"
 awk 'BEGIN { srand(7); for (i = 0; i < 50000; i++) printf "%.9f %.9f %.9f\n", rand(), rand(), rand() }' > "$cloud"
-timeout -s INT --preserve-status 1 "$flowrecon" complex "$cloud" -o "$out" 2> "$work/interrupt.err"
+timeout -s INT --preserve-status 2 "$flowrecon" complex "$cloud" -o "$out" 2> "$work/interrupt.err"
 code=$?
 err=$(cat "$work/interrupt.err")
 echo "exit code $code, stderr: [$err]"

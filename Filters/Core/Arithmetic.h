@@ -75,7 +75,7 @@ Vec<FT> Circumcenter(const Vec<FT>& a, const Vec<FT>& b, const Vec<FT>& c, const
 /// When true (tests), walks skip the interval stage and run in exact arithmetic.
 inline bool& ExactOnly()
 {
-  static thread_local bool exact = false;
+  static bool exact = false; // process-wide: walks run on worker threads too
   return exact;
 }
 

@@ -1,6 +1,7 @@
 #include "CriticalSimplices.h"
 
 #include "Driver.h"
+#include "FastPredicates.h"
 
 #include <algorithm>
 
@@ -9,9 +10,11 @@ namespace flowrecon
 
 Id CriticalSimplices::FindEdge(Id u, Id v) const
 {
-  const std::array<Id, 2> key{ { std::min(u, v), std::max(u, v) } };
-  const auto it = std::lower_bound(this->Edges.begin(), this->Edges.end(), key);
-  return (it != this->Edges.end() && *it == key) ? static_cast<Id>(it - this->Edges.begin()) : -1;
+  const Id a = std::min(u, v), b = std::max(u, v);
+  const auto first = this->Neighbours.begin() + this->Offsets[a];
+  const auto last = this->Neighbours.begin() + this->Offsets[a + 1];
+  const auto it = std::lower_bound(first, last, b);
+  return (it != last && *it == b) ? this->GabrielIndex[it - this->Neighbours.begin()] : -1;
 }
 
 namespace
@@ -27,9 +30,8 @@ std::array<Id, N> Sorted(std::array<Id, N> a)
 CriticalSimplices FindCriticalSimplices(const Triangulation& tri, const Progress& progress)
 {
   const Delaunay& dt = tri.Dt();
-  const auto sbs3 = Kernel().side_of_bounded_sphere_3_object();
   CriticalSimplices cs;
-  const double total = static_cast<double>(dt.number_of_finite_edges() +
+  const double total = static_cast<double>(
     dt.number_of_finite_facets() + dt.number_of_finite_cells() + 1);
   std::size_t done = 0;
   auto tick = [&]() {
@@ -38,75 +40,152 @@ CriticalSimplices FindCriticalSimplices(const Triangulation& tri, const Progress
       progress(0.2 + 0.15 * done / total, "critical points");
     }
   };
-
-  // Index 1: Gabriel edges (CGAL's test: no link vertex strictly inside the
-  // diametral ball; a vertex on it is a right angle, counted with the facets).
-  for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e)
+  // All edges as sorted adjacency lists (u < v), collected from the cells:
+  // CGAL's edge iterator circulates around every edge, this is much cheaper.
+  const Id m = tri.NumberOfVertices();
+  cs.Offsets.assign(static_cast<std::size_t>(m + 1), 0);
+  static const int pairs[6][2] = { { 0, 1 }, { 0, 2 }, { 0, 3 }, { 1, 2 }, { 1, 3 }, { 2, 3 } };
+  for (int pass = 0; pass < 2; ++pass)
   {
-    tick();
-    if (dt.is_Gabriel(*e))
+    std::vector<Id> fill;
+    if (pass == 1)
     {
-      const Id u = e->first->vertex(e->second)->info();
-      const Id v = e->first->vertex(e->third)->info();
-      cs.Edges.push_back(Sorted<2>({ { u, v } }));
+      for (Id u = 0; u < m; ++u)
+      {
+        cs.Offsets[u + 1] += cs.Offsets[u];
+      }
+      cs.Neighbours.resize(static_cast<std::size_t>(cs.Offsets[m]));
+      fill.assign(cs.Offsets.begin(), cs.Offsets.end() - 1);
+    }
+    for (Id id = 0; id < tri.NumberOfCells(); ++id)
+    {
+      const CellHandle c = tri.Cell(id);
+      for (const auto& p : pairs)
+      {
+        Id u = c->vertex(p[0])->info(), v = c->vertex(p[1])->info();
+        if (u > v)
+        {
+          std::swap(u, v);
+        }
+        if (pass == 0)
+        {
+          ++cs.Offsets[u + 1];
+        }
+        else
+        {
+          cs.Neighbours[fill[u]++] = v;
+        }
+      }
     }
   }
-  std::sort(cs.Edges.begin(), cs.Edges.end());
+  {
+    // Sort and deduplicate each list in place, compacting the arrays.
+    Id write = 0;
+    for (Id u = 0; u < m; ++u)
+    {
+      const auto first = cs.Neighbours.begin() + cs.Offsets[u];
+      const auto last = cs.Neighbours.begin() + cs.Offsets[u + 1];
+      std::sort(first, last);
+      const auto end = std::unique(first, last);
+      cs.Offsets[u] = write;
+      write = static_cast<Id>(std::copy(first, end, cs.Neighbours.begin() + write) - cs.Neighbours.begin());
+    }
+    cs.Offsets[m] = write;
+    cs.Neighbours.resize(static_cast<std::size_t>(write));
+    cs.Neighbours.shrink_to_fit();
+  }
+  auto position = [&](Id u, Id v) {
+    if (u > v)
+    {
+      std::swap(u, v);
+    }
+    const auto first = cs.Neighbours.begin() + cs.Offsets[u];
+    return std::lower_bound(first, cs.Neighbours.begin() + cs.Offsets[u + 1], v) - cs.Neighbours.begin();
+  };
+  std::vector<char> gabrielEdge(cs.Neighbours.size(), 1);
 
-  // Index 2: acute facets whose diametral ball has both apices strictly outside.
+  // One pass over the facets. A facet obtuse at t puts t strictly inside the
+  // diametral ball of the opposite edge, so that edge is not Gabriel; every link
+  // vertex of an edge is the third vertex of one of its facets, so the edges
+  // never marked are exactly the Gabriel edges (CGAL's is_Gabriel, in one pass).
+  std::vector<std::pair<std::array<Id, 3>, std::pair<CellHandle, int>>> facets;
   for (auto f = dt.finite_facets_begin(); f != dt.finite_facets_end(); ++f)
   {
     tick();
     const CellHandle c = f->first;
     const int i = f->second;
-    const KPoint& a = c->vertex((i + 1) % 4)->point();
-    const KPoint& b = c->vertex((i + 2) % 4)->point();
-    const KPoint& d = c->vertex((i + 3) % 4)->point();
+    const VertexHandle v[3] = { c->vertex((i + 1) % 4), c->vertex((i + 2) % 4),
+      c->vertex((i + 3) % 4) };
     int obtuse = -1;
     try
     {
-      obtuse = ObtuseCorner(a, b, d);
+      obtuse = ObtuseCorner(v[0]->point(), v[1]->point(), v[2]->point());
     }
     catch (const flowrecon::Degenerate&)
     {
       ++cs.RightAngles;
       continue;
     }
-    bool gabriel = true;
-    const CellHandle cells[2] = { c, c->neighbor(i) };
-    for (const CellHandle cell : cells)
+    if (obtuse >= 0)
     {
-      const VertexHandle apex = (cell == c) ? c->vertex(i) : cell->vertex(cell->index(c));
-      if (dt.is_infinite(apex))
+      gabrielEdge[position(v[(obtuse + 1) % 3]->info(), v[(obtuse + 2) % 3]->info())] = 0;
+      continue; // an obtuse facet is not self-centred
+    }
+    // Acute: critical iff both apices lie strictly outside its diametral ball.
+    bool gabriel = true;
+    const CellHandle n = c->neighbor(i);
+    const VertexHandle apex[2] = { c->vertex(i), n->vertex(n->index(c)) };
+    for (const VertexHandle a : apex)
+    {
+      if (dt.is_infinite(a))
       {
         continue;
       }
-      const CGAL::Bounded_side side = sbs3(a, b, d, apex->point());
+      const CGAL::Bounded_side side =
+        FastSideOfDiametralSphere(v[0]->point(), v[1]->point(), v[2]->point(), a->point());
       if (side == CGAL::ON_BOUNDARY)
       {
         ++cs.ApexOnSphere;
       }
       gabriel = gabriel && side == CGAL::ON_UNBOUNDED_SIDE;
     }
-    if (obtuse < 0 && gabriel)
+    if (gabriel)
     {
-      cs.Facets.push_back(Sorted<3>({ { c->vertex((i + 1) % 4)->info(),
-        c->vertex((i + 2) % 4)->info(), c->vertex((i + 3) % 4)->info() } }));
+      facets.push_back({ Sorted<3>({ { v[0]->info(), v[1]->info(), v[2]->info() } }), { c, i } });
     }
   }
-  std::sort(cs.Facets.begin(), cs.Facets.end());
   if (cs.Degenerate())
   {
-    return cs; // the cell classification below would only throw
+    return cs; // the caller perturbs and starts again
+  }
+  std::sort(facets.begin(), facets.end(),
+    [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (const auto& f : facets)
+  {
+    cs.Facets.push_back(f.first);
+    cs.FacetCells.push_back(f.second);
   }
 
-  // Index 3: self-centred cells.
+  cs.GabrielIndex.assign(cs.Neighbours.size(), -1);
+  for (Id u = 0; u < m; ++u)
+  {
+    for (Id k = cs.Offsets[u]; k < cs.Offsets[u + 1]; ++k)
+    {
+      if (gabrielEdge[k])
+      {
+        cs.GabrielIndex[k] = static_cast<Id>(cs.Edges.size());
+        cs.Edges.push_back({ { u, cs.Neighbours[k] } });
+      }
+    }
+  }
+
+  // Index 3: self-centred cells (Lemma B.2).
   std::vector<std::pair<std::array<Id, 4>, Id>> cells;
   for (Id id = 0; id < tri.NumberOfCells(); ++id)
   {
     tick();
     const CellHandle c = tri.Cell(id);
-    if (ClassifyCell(c).Type == CellDriver::Cell)
+    if (IsSelfCentred(c))
     {
       cells.emplace_back(Sorted<4>({ { c->vertex(0)->info(), c->vertex(1)->info(),
                            c->vertex(2)->info(), c->vertex(3)->info() } }),

@@ -18,10 +18,17 @@ struct CriticalSimplices
 {
   std::vector<std::array<Id, 2>> Edges;
   std::vector<std::array<Id, 3>> Facets;
+  /// A cell containing each facet and the index of the opposite vertex in it.
+  std::vector<std::pair<CellHandle, int>> FacetCells;
   std::vector<std::array<Id, 4>> Cells;
   std::vector<Id> CellOfMaximum; ///< triangulation cell id of each entry of Cells
   Id RightAngles = 0;  ///< right triangles among the Delaunay facets
   Id ApexOnSphere = 0; ///< facets with an apex on their diametral sphere
+
+  /// All Delaunay edges (u < v) as adjacency lists: the v of vertex u are
+  /// Neighbours[Offsets[u] .. Offsets[u+1]), sorted; GabrielIndex gives the
+  /// position of that edge in Edges, or -1.
+  std::vector<Id> Offsets, Neighbours, GabrielIndex;
 
   /// Position of Gabriel edge (u, v) in Edges, or -1 if uv is not Gabriel.
   Id FindEdge(Id u, Id v) const;

@@ -1,18 +1,10 @@
 #include "Driver.h"
 
+#include "FastPredicates.h"
 #include "Progress.h"
 
 namespace flowrecon
 {
-
-namespace
-{
-const Kernel& K()
-{
-  static const Kernel kernel;
-  return kernel;
-}
-} // namespace
 
 int ObtuseCorner(const KPoint& a, const KPoint& b, const KPoint& c)
 {
@@ -20,7 +12,7 @@ int ObtuseCorner(const KPoint& a, const KPoint& b, const KPoint& c)
   int obtuse = -1;
   for (int i = 0; i < 3; ++i)
   {
-    const CGAL::Angle angle = CGAL::angle(*p[(i + 1) % 3], *p[i], *p[(i + 2) % 3]);
+    const CGAL::Angle angle = FastAngle(*p[(i + 1) % 3], *p[i], *p[(i + 2) % 3]);
     if (angle == CGAL::RIGHT)
     {
       throw Degenerate("right triangle");
@@ -33,9 +25,26 @@ int ObtuseCorner(const KPoint& a, const KPoint& b, const KPoint& c)
   return obtuse;
 }
 
+bool IsSelfCentred(CellHandle c)
+{
+  for (int i = 0; i < 4; ++i)
+  {
+    const CGAL::Bounded_side side = FastSideOfDiametralSphere(c->vertex((i + 1) % 4)->point(),
+      c->vertex((i + 2) % 4)->point(), c->vertex((i + 3) % 4)->point(), c->vertex(i)->point());
+    if (side == CGAL::ON_BOUNDARY)
+    {
+      throw Degenerate("circumcentre on a facet");
+    }
+    if (side != CGAL::ON_UNBOUNDED_SIDE)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
 CellDriver ClassifyCell(CellHandle c)
 {
-  const auto sbs3 = K().side_of_bounded_sphere_3_object();
   const KPoint* p[4];
   for (int i = 0; i < 4; ++i)
   {
@@ -47,7 +56,7 @@ CellDriver ClassifyCell(CellHandle c)
   bool selfCentred = true;
   for (int i = 0; i < 4; ++i)
   {
-    apexSide[i] = sbs3(*p[(i + 1) % 4], *p[(i + 2) % 4], *p[(i + 3) % 4], *p[i]);
+    apexSide[i] = FastSideOfDiametralSphere(*p[(i + 1) % 4], *p[(i + 2) % 4], *p[(i + 3) % 4], *p[i]);
     if (apexSide[i] == CGAL::ON_BOUNDARY)
     {
       throw Degenerate("circumcentre on a facet");
@@ -72,12 +81,13 @@ CellDriver ClassifyCell(CellHandle c)
         {
           continue;
         }
-        const CGAL::Bounded_side side = sbs3(*p[i], *p[j], *p[k]);
-        if (side == CGAL::ON_BOUNDARY)
+        // k is inside the ball of diameter ij iff the angle at k is obtuse.
+        const CGAL::Angle angle = FastAngle(*p[i], *p[k], *p[j]);
+        if (angle == CGAL::RIGHT)
         {
           throw Degenerate("right triangle");
         }
-        inside += side == CGAL::ON_BOUNDED_SIDE ? 1 : 0;
+        inside += angle == CGAL::OBTUSE ? 1 : 0;
       }
       if (inside == 2)
       {

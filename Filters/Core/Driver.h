@@ -26,6 +26,9 @@ struct CellDriver
   int A = -1, B = -1;
 };
 
+/// Whether c_T lies strictly inside the finite cell T (an index-3 critical point).
+bool IsSelfCentred(CellHandle c);
+
 /// Driver of the finite cell `c`.
 CellDriver ClassifyCell(CellHandle c);
 

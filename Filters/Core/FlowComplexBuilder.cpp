@@ -7,10 +7,12 @@
 #include "SuccessorForest.h"
 #include "Triangulation.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <map>
 #include <string>
 
 namespace flowrecon
@@ -25,31 +27,50 @@ double Seconds(Clock::time_point since)
   return std::chrono::duration<double>(Clock::now() - since).count();
 }
 
-/// Squared circumradius and circumcentre of a simplex given by 2..4 points.
-std::array<double, 4> CentreAndSquaredRadius(const std::vector<Point3>& pts)
+/// Circumcentre (within the simplex's affine hull) and squared radius of a
+/// simplex of 2..4 points; double constructions, relative to its first vertex.
+std::array<double, 4> CentreAndSquaredRadius(const KPoint* p, std::size_t n)
 {
-  return Certified<4>([&](auto ft) {
-    using FT = decltype(ft);
-    std::vector<Vec<FT>> p;
-    for (const Point3& q : pts)
-    {
-      p.push_back(Vec<FT>::From(q));
-    }
-    Vec<FT> c = p[0];
-    if (p.size() == 2)
-    {
-      c = (p[0] + p[1]) / FT(2);
-    }
-    else if (p.size() == 3)
-    {
-      c = Circumcenter(p[0], p[1], p[2]);
-    }
-    else
-    {
-      c = Circumcenter(p[0], p[1], p[2], p[3]);
-    }
-    return std::array<FT, 4>{ { c.X, c.Y, c.Z, (c - p[0]).SquaredLength() } };
-  });
+  KPoint c;
+  if (n == 2)
+  {
+    c = CGAL::midpoint(p[0], p[1]);
+  }
+  else if (n == 3)
+  {
+    c = CGAL::circumcenter(p[0], p[1], p[2]);
+  }
+  else
+  {
+    c = CGAL::circumcenter(p[0], p[1], p[2], p[3]);
+  }
+  return { { c.x(), c.y(), c.z(), CGAL::squared_distance(c, p[0]) } };
+}
+
+/// Sorts arcs by (Lower, Upper): a counting sort on Lower, then small sorts.
+void SortArcs(std::vector<Arc>& arcs, std::size_t nodes)
+{
+  std::vector<Id> start(nodes + 1, 0);
+  for (const Arc& a : arcs)
+  {
+    ++start[a.Lower + 1];
+  }
+  for (std::size_t i = 0; i < nodes; ++i)
+  {
+    start[i + 1] += start[i];
+  }
+  std::vector<Arc> sorted(arcs.size());
+  std::vector<Id> fill(start.begin(), start.end() - 1);
+  for (const Arc& a : arcs)
+  {
+    sorted[fill[a.Lower]++] = a;
+  }
+  for (std::size_t i = 0; i < nodes; ++i)
+  {
+    std::sort(sorted.begin() + start[i], sorted.begin() + start[i + 1],
+      [](const Arc& a, const Arc& b) { return a.Upper < b.Upper; });
+  }
+  arcs.swap(sorted);
 }
 
 class Builder
@@ -70,7 +91,7 @@ public:
   void Run(const std::vector<Point3>& coords, bool first);
 
 private:
-  void AddNode(int index, const std::vector<Id>& simplex, const std::vector<Point3>& coords);
+  void AddNode(int index, const Id* simplex, const Triangulation& tri);
 
   const PreparedInput& In;
   const std::vector<Point3>& Input;
@@ -79,15 +100,15 @@ private:
   FlowComplex& FC;
 };
 
-void Builder::AddNode(int index, const std::vector<Id>& simplex, const std::vector<Point3>& coords)
+void Builder::AddNode(int index, const Id* simplex, const Triangulation& tri)
 {
   Node node;
   node.Index = index;
-  std::vector<Point3> pts;
-  for (std::size_t i = 0; i < simplex.size(); ++i)
+  KPoint pts[4];
+  for (int i = 0; i <= index; ++i)
   {
     node.Simplex[i] = this->In.InputId[simplex[i]];
-    pts.push_back(coords[simplex[i]]);
+    pts[i] = tri.KCoord(simplex[i]);
   }
   if (index == 0)
   {
@@ -96,7 +117,7 @@ void Builder::AddNode(int index, const std::vector<Id>& simplex, const std::vect
   }
   else
   {
-    const std::array<double, 4> cr = CentreAndSquaredRadius(pts);
+    const std::array<double, 4> cr = CentreAndSquaredRadius(pts, static_cast<std::size_t>(index + 1));
     node.Location = { { cr[0], cr[1], cr[2] } };
     node.Value = std::sqrt(cr[3]);
   }
@@ -145,19 +166,19 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
   fc.Nodes.reserve(static_cast<std::size_t>(fc.InfinityNode + 1));
   for (Id k = 0; k < m; ++k)
   {
-    this->AddNode(0, { k }, coords);
+    this->AddNode(0, &k, tri);
   }
   for (const auto& e : cs.Edges)
   {
-    this->AddNode(1, { e[0], e[1] }, coords);
+    this->AddNode(1, e.data(), tri);
   }
   for (const auto& f : cs.Facets)
   {
-    this->AddNode(2, { f[0], f[1], f[2] }, coords);
+    this->AddNode(2, f.data(), tri);
   }
   for (const auto& c : cs.Cells)
   {
-    this->AddNode(3, { c[0], c[1], c[2], c[3] }, coords);
+    this->AddNode(3, c.data(), tri);
   }
   {
     Node inf;
@@ -177,20 +198,29 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
   fc.TriangleNode.clear();
   fc.Arcs.clear();
   std::vector<Id> triangleBegin(cs.Facets.size() + 1, 0);
-  std::map<std::pair<Id, Id>, int> arrivals; // (edge node, facet node) -> count
+  std::vector<std::pair<Id, Id>> arrivals; // (edge node, facet node), one per arrival
   const double nf = static_cast<double>(cs.Facets.size()) + 1;
-  for (std::size_t i = 0; i < cs.Facets.size(); ++i)
+  // Patches are independent: compute them in parallel, chunk by chunk, and merge
+  // them in node order on this thread (which also reports progress).
+  const std::size_t chunk = 8192;
+  std::vector<Patch> patches;
+  std::vector<Id> fallbacks;
+  for (std::size_t begin = 0; begin < cs.Facets.size(); begin += chunk)
   {
-    if ((i & 0x3FF) == 0)
-    {
-      this->Report(0.35 + 0.35 * i / nf, "stable manifolds");
-    }
-    const Id node = base2 + static_cast<Id>(i);
-    Patch patch;
+    this->Report(0.35 + 0.35 * begin / nf, "stable manifolds");
+    const std::size_t last = std::min(cs.Facets.size(), begin + chunk);
+    patches.assign(last - begin, Patch());
+    fallbacks.assign(last - begin, 0);
     try
     {
-      patch = ComputeStableManifold(
-        tri, cs, cs.Facets[i], this->Options.StableManifolds, fc.Report.ExactFallbacks);
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(begin, last),
+        [&](const tbb::blocked_range<std::size_t>& r) {
+          for (std::size_t i = r.begin(); i != r.end(); ++i)
+          {
+            patches[i - begin] = ComputeStableManifold(
+              tri, cs, i, this->Options.StableManifolds, fallbacks[i - begin]);
+          }
+        });
     }
     catch (const Degenerate&)
     {
@@ -200,26 +230,33 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
       }
       throw;
     }
-    for (const Id edge : patch.Arrivals)
+    for (std::size_t i = begin; i < last; ++i)
     {
-      ++arrivals[{ base1 + edge, node }];
-    }
-    triangleBegin[i] = static_cast<Id>(fc.Triangles.size());
-    if (this->Options.StableManifolds)
-    {
-      const Id offset = static_cast<Id>(fc.Points.size());
-      fc.Points.insert(fc.Points.end(), patch.Constructed.begin(), patch.Constructed.end());
-      fc.NodePoint[node] = offset; // Constructed[0] is the critical point
-      for (const auto& tr : patch.Triangles)
+      const Id node = base2 + static_cast<Id>(i);
+      Patch& patch = patches[i - begin];
+      fc.Report.ExactFallbacks += fallbacks[i - begin];
+      for (const Id edge : patch.Arrivals)
       {
-        std::array<Id, 3> v;
-        for (int k = 0; k < 3; ++k)
-        {
-          v[k] = tr[k] >= 0 ? this->In.InputId[tr[k]] : offset + (-1 - tr[k]);
-        }
-        fc.Triangles.push_back(v);
-        fc.TriangleNode.push_back(node);
+        arrivals.emplace_back(base1 + edge, node);
       }
+      triangleBegin[i] = static_cast<Id>(fc.Triangles.size());
+      if (this->Options.StableManifolds)
+      {
+        const Id offset = static_cast<Id>(fc.Points.size());
+        fc.Points.insert(fc.Points.end(), patch.Constructed.begin(), patch.Constructed.end());
+        fc.NodePoint[node] = offset; // Constructed[0] is the critical point
+        for (const auto& tr : patch.Triangles)
+        {
+          std::array<Id, 3> v;
+          for (int k = 0; k < 3; ++k)
+          {
+            v[k] = tr[k] >= 0 ? this->In.InputId[tr[k]] : offset + (-1 - tr[k]);
+          }
+          fc.Triangles.push_back(v);
+          fc.TriangleNode.push_back(node);
+        }
+      }
+      patch = Patch(); // release memory early
     }
   }
   triangleBegin[cs.Facets.size()] = static_cast<Id>(fc.Triangles.size());
@@ -244,10 +281,22 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
     }
     const Id node = base2 + static_cast<Id>(i);
     const auto& f = cs.Facets[i];
-    CellHandle cell;
-    int opposite = 0;
-    tri.Facet(f[0], f[1], f[2], cell, opposite);
-    const CellHandle sides[2] = { cell, cell->neighbor(opposite) };
+    const CellHandle cell = cs.FacetCells[i].first;
+    const int opposite = cs.FacetCells[i].second;
+    CellHandle sides[2] = { cell, cell->neighbor(opposite) };
+    // CGAL's spatial sort shuffles with a global generator, so which cell holds
+    // the facet varies between runs: order the two sides by their apex (input id,
+    // infinite last) to keep the output deterministic.
+    {
+      const VertexHandle a0 = cell->vertex(opposite);
+      const VertexHandle a1 = sides[1]->vertex(sides[1]->index(cell));
+      const Id k0 = tri.Dt().is_infinite(a0) ? m : a0->info();
+      const Id k1 = tri.Dt().is_infinite(a1) ? m : a1->info();
+      if (k1 < k0)
+      {
+        std::swap(sides[0], sides[1]);
+      }
+    }
     for (int s = 0; s < 2; ++s)
     {
       FlowLine line;
@@ -318,10 +367,28 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
     fc.Arcs.push_back({ cs.Edges[i][0], node, 1 });
     fc.Arcs.push_back({ cs.Edges[i][1], node, 1 });
   }
-  for (const auto& a : arrivals)
+  // Arrivals are grouped by patch: count the repeats within each group.
+  for (std::size_t i = 0; i < arrivals.size();)
   {
-    fc.Arcs.push_back({ a.first.first, a.first.second, a.second });
+    std::size_t j = i;
+    while (j < arrivals.size() && arrivals[j].second == arrivals[i].second)
+    {
+      ++j;
+    }
+    std::sort(arrivals.begin() + i, arrivals.begin() + j);
+    for (std::size_t k = i; k < j;)
+    {
+      std::size_t l = k;
+      while (l < j && arrivals[l] == arrivals[k])
+      {
+        ++l;
+      }
+      fc.Arcs.push_back({ arrivals[k].first, arrivals[k].second, static_cast<int>(l - k) });
+      k = l;
+    }
+    i = j;
   }
+  std::vector<std::pair<Id, Id>>().swap(arrivals);
   for (std::size_t i = 0; i < ends.size(); ++i)
   {
     const Id node = base2 + static_cast<Id>(i);
@@ -335,9 +402,15 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
       fc.Arcs.push_back({ node, ends[i][1], 1 });
     }
   }
-  std::sort(fc.Arcs.begin(), fc.Arcs.end(), [](const Arc& a, const Arc& b) {
-    return a.Lower != b.Lower ? a.Lower < b.Lower : a.Upper < b.Upper;
-  });
+  SortArcs(fc.Arcs, fc.Nodes.size());
+  // Values increase strictly along arcs in exact arithmetic, but a perturbed
+  // degeneracy can leave a gap below double precision. Arcs are sorted by lower
+  // node, hence by index: one pass makes the doubles non-decreasing along every
+  // arc (a change of at most an ulp or two), which the filtration relies on.
+  for (const Arc& a : fc.Arcs)
+  {
+    fc.Nodes[a.Upper].Value = std::max(fc.Nodes[a.Upper].Value, fc.Nodes[a.Lower].Value);
+  }
 
   fc.Tetrahedra.clear();
   fc.TetrahedronNode.clear();

@@ -21,19 +21,20 @@ struct Item
   EdgePoint<FT> Z; // on the Voronoi edge V(u v w), or c itself (lambda = 0 on V(f))
   Id ZRef;         // its vertex reference in the patch
   Id U, V, W;
+  CellHandle Hint; // a cell containing u, v and w
 };
 
 template <class FT>
 Patch Walk(const Triangulation& tri, const CriticalSimplices& cs, const std::array<Id, 3>& f,
-  bool withGeometry)
+  CellHandle cell, bool withGeometry)
 {
   Patch patch;
   std::vector<EdgePoint<FT>> points{ EdgePoint<FT>{ f, FT(0) } }; // c = c_f
   std::deque<Item<FT>> queue;
-  queue.push_back({ points[0], -1, f[0], f[1], f[2] });
-  queue.push_back({ points[0], -1, f[1], f[2], f[0] });
-  queue.push_back({ points[0], -1, f[2], f[0], f[1] });
-  std::vector<Id> link, excluded(1);
+  queue.push_back({ points[0], -1, f[0], f[1], f[2], cell });
+  queue.push_back({ points[0], -1, f[1], f[2], f[0], cell });
+  queue.push_back({ points[0], -1, f[2], f[0], f[1], cell });
+  std::vector<Id> excluded(1);
   std::size_t items = 0;
   while (!queue.empty())
   {
@@ -59,7 +60,8 @@ Patch Walk(const Triangulation& tri, const CriticalSimplices& cs, const std::arr
     excluded[0] = it.W;
     Id s = -1;
     EdgePoint<FT> y;
-    if (!FirstExit(tri, it.Z, it.U, it.V, excluded, true, link, s, y))
+    CellHandle exitCell;
+    if (!FirstExit(tri, it.Z, it.U, it.V, excluded, true, it.Hint, s, y, exitCell))
     {
       throw Degenerate("descending walk found no exit");
     }
@@ -71,8 +73,8 @@ Patch Walk(const Triangulation& tri, const CriticalSimplices& cs, const std::arr
       patch.Triangles.push_back({ { it.V, it.ZRef, yRef } });
     }
     // Both V(u s) and V(v s) flow into y (uvs is obtuse at s): two branches.
-    queue.push_back({ y, yRef, it.U, s, it.V });
-    queue.push_back({ y, yRef, it.V, s, it.U });
+    queue.push_back({ y, yRef, it.U, s, it.V, exitCell });
+    queue.push_back({ y, yRef, it.V, s, it.U, exitCell });
   }
   if (withGeometry)
   {
@@ -88,9 +90,13 @@ Patch Walk(const Triangulation& tri, const CriticalSimplices& cs, const std::arr
 } // namespace
 
 Patch ComputeStableManifold(const Triangulation& tri, const CriticalSimplices& cs,
-  const std::array<Id, 3>& facet, bool withGeometry, Id& fallbacks)
+  std::size_t facet, bool withGeometry, Id& fallbacks)
 {
-  return Filtered([&](auto ft) { return Walk<decltype(ft)>(tri, cs, facet, withGeometry); },
+  return Filtered(
+    [&](auto ft) {
+      return Walk<decltype(ft)>(
+        tri, cs, cs.Facets[facet], cs.FacetCells[facet].first, withGeometry);
+    },
     fallbacks);
 }
 

@@ -20,11 +20,11 @@ struct Patch
   std::vector<Id> Arrivals;
 };
 
-/// Stable manifold of the acute Gabriel facet `facet`. With `withGeometry` false
+/// Stable manifold of the acute Gabriel facet cs.Facets[facet]. With `withGeometry` false
 /// only Arrivals are filled. Throws Degenerate if the walk meets a Voronoi vertex.
 /// `fallbacks` counts walks redone in exact arithmetic.
 Patch ComputeStableManifold(const Triangulation& tri, const CriticalSimplices& cs,
-  const std::array<Id, 3>& facet, bool withGeometry, Id& fallbacks);
+  std::size_t facet, bool withGeometry, Id& fallbacks);
 
 } // namespace flowrecon
 

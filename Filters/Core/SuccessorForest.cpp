@@ -36,10 +36,10 @@ struct WalkEnd
 // link sample becomes equidistant; then either slides along the Voronoi edge of
 // an acute triangle to a Voronoi vertex, or continues in another Voronoi facet.
 template <class FT>
-WalkEnd FacetWalk(const Triangulation& tri, EdgePoint<FT> x, Id a, Id b, std::vector<Id> excl)
+WalkEnd FacetWalk(
+  const Triangulation& tri, EdgePoint<FT> x, Id a, Id b, std::vector<Id> excl, CellHandle hint)
 {
   WalkEnd end;
-  std::vector<Id> link;
   for (Id steps = 0;; ++steps)
   {
     if (steps > 4 * tri.NumberOfCells() + 16)
@@ -48,7 +48,8 @@ WalkEnd FacetWalk(const Triangulation& tri, EdgePoint<FT> x, Id a, Id b, std::ve
     }
     Id s = -1;
     EdgePoint<FT> y;
-    if (!FirstExit(tri, x, a, b, excl, false, link, s, y))
+    CellHandle cell;
+    if (!FirstExit(tri, x, a, b, excl, false, hint, s, y, cell))
     {
       // Unbounded Voronoi facet: the flow goes to infinity, away from m_ab.
       const Point3 p = Frame<FT>(tri, x.G).At(x.Lambda).ToDouble();
@@ -70,6 +71,7 @@ WalkEnd FacetWalk(const Triangulation& tri, EdgePoint<FT> x, Id a, Id b, std::ve
       excl.assign(1, obtuse == 1 ? b : a);
       (obtuse == 1 ? b : a) = s;
       x = y;
+      hint = cell;
       continue;
     }
     // abs is acute: slide along its Voronoi edge away from c_abs, i.e. along
@@ -79,12 +81,8 @@ WalkEnd FacetWalk(const Triangulation& tri, EdgePoint<FT> x, Id a, Id b, std::ve
     {
       throw Degenerate("ascending walk stops at a critical point");
     }
-    CellHandle cell;
-    int opposite = 0;
-    if (!tri.Facet(a, b, s, cell, opposite))
-    {
-      throw std::runtime_error("ascending walk lost its Voronoi edge");
-    }
+    const int opposite =
+      6 - cell->index(tri.Vertex(a)) - cell->index(tri.Vertex(b)) - cell->index(tri.Vertex(s));
     const CellHandle sides[2] = { cell, cell->neighbor(opposite) };
     const VertexHandle apex[2] = { cell->vertex(opposite),
       sides[1]->vertex(sides[1]->index(cell)) };
@@ -210,7 +208,7 @@ void SuccessorForest::ComputeNext(Id id, Step& step)
       auto P = [&](int i) { return Vec<FT>::From(this->Tri.Coord(c->vertex(i)->info())); };
       const Vec<FT> centre = Circumcenter(P(0), P(1), P(2), P(3));
       start.Lambda = (centre - frame.C).Dot(frame.N) / frame.N.SquaredLength();
-      return FacetWalk<FT>(this->Tri, start, a, b, excl);
+      return FacetWalk<FT>(this->Tri, start, a, b, excl, c);
     },
     this->ExactFallbacks);
   this->Paths.insert(this->Paths.end(), end.Points.begin(), end.Points.end());

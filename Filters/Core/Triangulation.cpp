@@ -35,11 +35,17 @@ Triangulation::Triangulation(const std::vector<Point3>& points)
   }
 }
 
-bool Triangulation::Link(Id u, Id v, std::vector<Id>& out) const
+bool Triangulation::Link(Id u, Id v, std::vector<Id>& out, std::vector<CellHandle>* cells,
+  CellHandle hint) const
 {
+  const VertexHandle vu = this->Vertices[u], vv = this->Vertices[v];
   CellHandle cell;
   int i = 0, j = 0;
-  if (!this->DT.is_edge(this->Vertices[u], this->Vertices[v], cell, i, j))
+  if (hint != CellHandle() && hint->has_vertex(vu, i) && hint->has_vertex(vv, j))
+  {
+    cell = hint;
+  }
+  else if (!this->DT.is_edge(vu, vv, cell, i, j))
   {
     return false;
   }
@@ -52,19 +58,23 @@ bool Triangulation::Link(Id u, Id v, std::vector<Id>& out) const
     for (int k = 0; k < 4; ++k)
     {
       const VertexHandle w = cc->vertex(k);
-      if (w == this->Vertices[u] || w == this->Vertices[v] || this->DT.is_infinite(w))
+      if (w == vu || w == vv || this->DT.is_infinite(w))
       {
         continue;
       }
       const Id id = w->info();
       bool seen = false;
-      for (std::size_t t = first; t < out.size(); ++t)
+      for (std::size_t t = first; t < out.size() && !seen; ++t)
       {
-        seen = seen || out[t] == id;
+        seen = out[t] == id;
       }
       if (!seen)
       {
         out.push_back(id);
+        if (cells)
+        {
+          cells->push_back(cc);
+        }
       }
     }
   } while (++cc != start);

@@ -30,9 +30,12 @@ public:
   CellHandle Cell(Id id) const { return this->Cells[id]; }
   Id NumberOfCells() const { return static_cast<Id>(this->Cells.size()); }
 
-  /// Appends to `out` the finite vertices s such that (u, v, s) is a Delaunay facet.
+  /// Appends to `out` the finite vertices s such that (u, v, s) is a Delaunay facet,
+  /// and to `cells` (if given) a cell containing (u, v, s) for each. `hint`, if
+  /// not null, is a cell known to contain uv (saves the search for the edge).
   /// Returns false if uv is not a Delaunay edge.
-  bool Link(Id u, Id v, std::vector<Id>& out) const;
+  bool Link(Id u, Id v, std::vector<Id>& out, std::vector<CellHandle>* cells = nullptr,
+    CellHandle hint = CellHandle()) const;
 
   /// Finds the Delaunay facet abc: a cell containing it and the index of the
   /// opposite vertex in that cell. Returns false if abc is not a facet.

@@ -85,24 +85,31 @@ inline ExactFT Moebius(
 /// (the walk leaves an unbounded Voronoi facet). Throws Degenerate on ties and
 /// CGAL::Uncertain_conversion_exception when intervals cannot decide.
 /// With `descending`, also requires the exit to come before m_uv (t < 1).
+/// `hint` is a cell containing uv (or null); `exitCell` receives a cell containing
+/// the exit triangle (u, v, s).
 template <class FT>
 bool FirstExit(const Triangulation& tri, const EdgePoint<FT>& z, Id u, Id v,
-  const std::vector<Id>& excluded, bool descending, std::vector<Id>& link, Id& exitSample,
-  EdgePoint<FT>& exitPoint)
+  const std::vector<Id>& excluded, bool descending, CellHandle hint, Id& exitSample,
+  EdgePoint<FT>& exitPoint, CellHandle& exitCell)
 {
+  thread_local std::vector<Id> link;
+  thread_local std::vector<CellHandle> linkCells;
   const Frame<FT> frame(tri, z.G);
   const Vec<FT> pu = Vec<FT>::From(tri.Coord(u)), pv = Vec<FT>::From(tri.Coord(v));
   const Vec<FT> m = (pu + pv) / FT(2);
   const Vec<FT> cm = frame.C - m; // z - m = cm + lambda N
   const FT uu = pu.SquaredLength();
   link.clear();
-  tri.Link(u, v, link);
+  linkCells.clear();
+  tri.Link(u, v, link, &linkCells, hint);
   Id best = -1;
+  CellHandle bestCell;
   // For candidate s: num = |z-s|^2 - |z-u|^2 >= 0 and D = +-(m - z).(s - u) > 0;
   // the exit parameter is num / (2 D). Both are affine in lambda.
   FT bestNum(0), bestDen(1);
-  for (const Id s : link)
+  for (std::size_t k = 0; k < link.size(); ++k)
   {
+    const Id s = link[k];
     if (std::find(excluded.begin(), excluded.end(), s) != excluded.end())
     {
       continue;
@@ -137,6 +144,7 @@ bool FirstExit(const Triangulation& tri, const EdgePoint<FT>& z, Id u, Id v,
       }
     }
     best = s;
+    bestCell = linkCells[k];
     bestNum = num;
     bestDen = den;
   }
@@ -151,6 +159,7 @@ bool FirstExit(const Triangulation& tri, const EdgePoint<FT>& z, Id u, Id v,
   // The exit point y = c' + lambda' n' of V(u v s) is collinear with m and z in
   // the bisector plane of uv (normal e): ((y - m) x (z - m)).e = 0.
   exitSample = best;
+  exitCell = bestCell;
   exitPoint.G = SortedTriangle(u, v, best);
   const Frame<FT> next(tri, exitPoint.G);
   const Vec<FT> e = pv - pu;

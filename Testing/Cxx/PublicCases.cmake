@@ -1,0 +1,1 @@
+flowrecon_add_cxx_test(TestPublicCases FlowReconCore)
