@@ -75,12 +75,14 @@ struct FlowComplex
   /// Representative[i] = the input id that stands for input point i (duplicates merged).
   std::vector<Id> Representative;
 
-  /// Nodes sorted by (Index, Simplex); the maximum at infinity is the last one.
+  /// Nodes grouped by index (0, 1, 2, 3), the maximum at infinity last; within an
+  /// index, in a deterministic order that follows the samples along a Hilbert curve.
   std::vector<Node> Nodes;
   Id InfinityNode = -1;
   /// Point id (into Points) of each node's critical point; -1 for infinity.
   std::vector<Id> NodePoint;
-  /// Arcs sorted by (Lower, Upper).
+  /// Arcs: 0->1 arcs first, then 1->2, then 2->3, each group in node order
+  /// (deterministic); one entry per pair of nodes.
   std::vector<Arc> Arcs;
 
   /// Stable manifolds. Index 0: the sample itself; index 1: its Gabriel edge

@@ -10,6 +10,10 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <CGAL/Spatial_sort_traits_adapter_3.h>
+#include <CGAL/hilbert_sort.h>
+#include <CGAL/property_map.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -45,32 +49,6 @@ std::array<double, 4> CentreAndSquaredRadius(const KPoint* p, std::size_t n)
     c = CGAL::circumcenter(p[0], p[1], p[2], p[3]);
   }
   return { { c.x(), c.y(), c.z(), CGAL::squared_distance(c, p[0]) } };
-}
-
-/// Sorts arcs by (Lower, Upper): a counting sort on Lower, then small sorts.
-void SortArcs(std::vector<Arc>& arcs, std::size_t nodes)
-{
-  std::vector<Id> start(nodes + 1, 0);
-  for (const Arc& a : arcs)
-  {
-    ++start[a.Lower + 1];
-  }
-  for (std::size_t i = 0; i < nodes; ++i)
-  {
-    start[i + 1] += start[i];
-  }
-  std::vector<Arc> sorted(arcs.size());
-  std::vector<Id> fill(start.begin(), start.end() - 1);
-  for (const Arc& a : arcs)
-  {
-    sorted[fill[a.Lower]++] = a;
-  }
-  for (std::size_t i = 0; i < nodes; ++i)
-  {
-    std::sort(sorted.begin() + start[i], sorted.begin() + start[i + 1],
-      [](const Arc& a, const Arc& b) { return a.Upper < b.Upper; });
-  }
-  arcs.swap(sorted);
 }
 
 class Builder
@@ -110,6 +88,7 @@ void Builder::AddNode(int index, const Id* simplex, const Triangulation& tri)
     node.Simplex[i] = this->In.InputId[simplex[i]];
     pts[i] = tri.KCoord(simplex[i]);
   }
+  std::sort(node.Simplex.begin(), node.Simplex.begin() + index + 1);
   if (index == 0)
   {
     node.Location = this->Input[node.Simplex[0]];
@@ -156,7 +135,7 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
     throw Degenerate("input not in general position");
   }
 
-  // Nodes, sorted by (index, input ids): unique indices increase with input ids.
+  // Nodes by index; within an index in the (Hilbert) order of their vertices.
   fc.Nodes.clear();
   fc.NodePoint.clear();
   const Id m = tri.NumberOfVertices();
@@ -402,11 +381,10 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
       fc.Arcs.push_back({ node, ends[i][1], 1 });
     }
   }
-  SortArcs(fc.Arcs, fc.Nodes.size());
   // Values increase strictly along arcs in exact arithmetic, but a perturbed
-  // degeneracy can leave a gap below double precision. Arcs are sorted by lower
-  // node, hence by index: one pass makes the doubles non-decreasing along every
-  // arc (a change of at most an ulp or two), which the filtration relies on.
+  // degeneracy can leave a gap below double precision. Arcs come grouped by the
+  // index of their lower node: one pass makes the doubles non-decreasing along
+  // every arc (a change of at most an ulp or two), which the filtration relies on.
   for (const Arc& a : fc.Arcs)
   {
     fc.Nodes[a.Upper].Value = std::max(fc.Nodes[a.Upper].Value, fc.Nodes[a.Lower].Value);
@@ -441,6 +419,37 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
   fc.Time.Assembly = Seconds(t);
 }
 
+/// Renumbers the distinct points along a Hilbert curve. Every per-vertex table
+/// (adjacency, walks, node lists) is then visited with spatial locality, which
+/// matters more than anything else for large clouds; hilbert_sort is
+/// deterministic (unlike spatial_sort, which shuffles).
+void SpatialOrder(PreparedInput& in)
+{
+  std::vector<KPoint> pts;
+  pts.reserve(in.Unique.size());
+  for (const Point3& p : in.Unique)
+  {
+    pts.emplace_back(p[0], p[1], p[2]);
+  }
+  std::vector<std::size_t> order(pts.size());
+  for (std::size_t i = 0; i < order.size(); ++i)
+  {
+    order[i] = i;
+  }
+  using Map = CGAL::Pointer_property_map<KPoint>::const_type;
+  const Map map = CGAL::make_property_map(static_cast<const std::vector<KPoint>&>(pts));
+  CGAL::hilbert_sort(order.begin(), order.end(), CGAL::Spatial_sort_traits_adapter_3<Kernel, Map>(map));
+  std::vector<Point3> unique(order.size());
+  std::vector<Id> ids(order.size());
+  for (std::size_t i = 0; i < order.size(); ++i)
+  {
+    unique[i] = in.Unique[order[i]];
+    ids[i] = in.InputId[order[i]];
+  }
+  in.Unique.swap(unique);
+  in.InputId.swap(ids);
+}
+
 } // namespace
 
 FlowComplex BuildFlowComplex(
@@ -453,7 +462,8 @@ FlowComplex BuildFlowComplex(
     ~ExactScope() { ExactOnly() = this->Saved; }
   } exactScope;
   ExactOnly() = options.ExactOnly;
-  const PreparedInput in = PrepareInput(points);
+  PreparedInput in = PrepareInput(points);
+  SpatialOrder(in);
   FlowComplex fc;
   fc.Representative = in.Representative;
   fc.Report.InputPoints = static_cast<Id>(points.size());

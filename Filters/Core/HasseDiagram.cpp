@@ -1,0 +1,179 @@
+#include "HasseDiagram.h"
+
+#include "Progress.h"
+
+#include <algorithm>
+#include <string>
+
+namespace flowrecon
+{
+
+HasseDiagram::HasseDiagram(const std::vector<Node>& nodes, const std::vector<Arc>& arcs)
+  : InLists(nodes.size())
+  , OutLists(nodes.size())
+{
+  const Id n = static_cast<Id>(nodes.size());
+  // Reserve the lists (a flow complex has ~3 arcs per node: reallocation shows).
+  std::vector<std::uint32_t> inDegree(nodes.size(), 0), outDegree(nodes.size(), 0);
+  for (const Arc& a : arcs)
+  {
+    if (a.Lower >= 0 && a.Lower < n && a.Upper >= 0 && a.Upper < n)
+    {
+      ++outDegree[a.Lower];
+      ++inDegree[a.Upper];
+    }
+  }
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+  {
+    this->InLists[i].reserve(inDegree[i]);
+    this->OutLists[i].reserve(outDegree[i]);
+  }
+  for (std::size_t i = 0; i < arcs.size(); ++i)
+  {
+    const Arc& a = arcs[i];
+    const auto where = [i] { return "Hasse diagram: arc " + std::to_string(i); };
+    if (a.Lower < 0 || a.Lower >= n || a.Upper < 0 || a.Upper >= n)
+    {
+      throw InputError(where() + " refers to a node that does not exist");
+    }
+    if (nodes[a.Upper].Index != nodes[a.Lower].Index + 1)
+    {
+      throw InputError(where() + " does not go up by one index");
+    }
+    if (a.Multiplicity < 0)
+    {
+      throw InputError(where() + " has a negative multiplicity");
+    }
+    if (a.Multiplicity == 0)
+    {
+      continue;
+    }
+    const std::int64_t k = this->Find(a.Lower, a.Upper);
+    if (k >= 0)
+    {
+      HalfArc& h = this->OutLists[a.Lower][static_cast<std::size_t>(k)];
+      h.Multiplicity += a.Multiplicity;
+      this->InLists[a.Upper][h.Twin].Multiplicity = h.Multiplicity;
+    }
+    else
+    {
+      this->Insert(a.Lower, a.Upper, a.Multiplicity);
+    }
+  }
+}
+
+std::int64_t HasseDiagram::Find(Id lower, Id upper) const
+{
+  const std::vector<HalfArc>& out = this->OutLists[lower];
+  const std::vector<HalfArc>& in = this->InLists[upper];
+  if (out.size() <= in.size())
+  {
+    for (std::size_t k = 0; k < out.size(); ++k)
+    {
+      if (out[k].Node == upper)
+      {
+        return static_cast<std::int64_t>(k);
+      }
+    }
+    return -1;
+  }
+  for (const HalfArc& h : in)
+  {
+    if (h.Node == lower)
+    {
+      return static_cast<std::int64_t>(h.Twin);
+    }
+  }
+  return -1;
+}
+
+int HasseDiagram::Multiplicity(Id lower, Id upper) const
+{
+  const std::int64_t k = this->Find(lower, upper);
+  return k < 0 ? 0 : this->OutLists[lower][static_cast<std::size_t>(k)].Multiplicity;
+}
+
+void HasseDiagram::Insert(Id lower, Id upper, int multiplicity)
+{
+  std::vector<HalfArc>& out = this->OutLists[lower];
+  std::vector<HalfArc>& in = this->InLists[upper];
+  out.push_back(HalfArc{ upper, multiplicity, static_cast<std::uint32_t>(in.size()) });
+  in.push_back(HalfArc{ lower, multiplicity, static_cast<std::uint32_t>(out.size() - 1) });
+}
+
+void HasseDiagram::EraseOut(Id lower, std::size_t k)
+{
+  std::vector<HalfArc>& out = this->OutLists[lower];
+  const Id upper = out[k].Node;
+  const std::size_t j = out[k].Twin;
+  // Swap-and-pop in both lists; the moved entries' mirrors learn where they went.
+  if (k + 1 != out.size())
+  {
+    out[k] = out.back();
+    this->InLists[out[k].Node][out[k].Twin].Twin = static_cast<std::uint32_t>(k);
+  }
+  out.pop_back();
+  std::vector<HalfArc>& in = this->InLists[upper];
+  if (j + 1 != in.size())
+  {
+    in[j] = in.back();
+    this->OutLists[in[j].Node][in[j].Twin].Twin = static_cast<std::uint32_t>(j);
+  }
+  in.pop_back();
+}
+
+int HasseDiagram::FlipParity(Id lower, Id upper)
+{
+  const std::int64_t k = this->Find(lower, upper);
+  if (k < 0)
+  {
+    this->Insert(lower, upper, 1);
+    return 1;
+  }
+  HalfArc& out = this->OutLists[lower][static_cast<std::size_t>(k)];
+  if (out.Multiplicity % 2 == 1)
+  {
+    this->EraseOut(lower, static_cast<std::size_t>(k));
+    return 0;
+  }
+  out.Multiplicity = 1;
+  this->InLists[upper][out.Twin].Multiplicity = 1;
+  return 1;
+}
+
+void HasseDiagram::Isolate(Id node)
+{
+  while (!this->OutLists[node].empty())
+  {
+    this->EraseOut(node, this->OutLists[node].size() - 1);
+  }
+  while (!this->InLists[node].empty())
+  {
+    const HalfArc& h = this->InLists[node].back();
+    this->EraseOut(h.Node, h.Twin);
+  }
+}
+
+std::vector<Arc> HasseDiagram::Arcs() const
+{
+  std::vector<Arc> arcs;
+  std::size_t count = 0;
+  for (const std::vector<HalfArc>& out : this->OutLists)
+  {
+    count += out.size();
+  }
+  arcs.reserve(count);
+  for (Id lower = 0; lower < this->NodeCount(); ++lower)
+  {
+    const std::size_t first = arcs.size();
+    for (const HalfArc& h : this->OutLists[lower])
+    {
+      arcs.push_back(Arc{ lower, h.Node, h.Multiplicity });
+    }
+    std::sort(arcs.begin() + static_cast<std::ptrdiff_t>(first), arcs.end(),
+      [](const Arc& a, const Arc& b) { return a.Upper < b.Upper; });
+  }
+  return arcs;
+}
+
+} // namespace flowrecon

@@ -1,0 +1,65 @@
+// A mutable Hasse diagram: In/Out lists with integer multiplicities, edited by
+// cancellations (Simplification.h). Plain data, no VTK.
+#ifndef flowrecon_HasseDiagram_h
+#define flowrecon_HasseDiagram_h
+
+#include "FlowComplex.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace flowrecon
+{
+
+/// Every arc is stored twice, in Out(lower) and in In(upper), each copy knowing
+/// where the other one is. Removing an arc is then O(1) (swap-and-pop in both
+/// lists), however large a degree grows: merged maxima and the maximum at
+/// infinity collect thousands of arcs, and sorted lists would make
+/// simplification quadratic. Lists are unordered. Finding an arc scans the
+/// shorter of the two lists, which is short in flow complexes (a few entries)
+/// even when the other one is huge.
+class HasseDiagram
+{
+public:
+  struct HalfArc
+  {
+    Id Node;                 ///< the other end
+    int Multiplicity;
+    std::uint32_t Twin;      ///< position of the mirror entry in the other end's list
+  };
+
+  /// Validates the arcs against `nodes` (ids in range, index goes up by one,
+  /// multiplicity >= 0; duplicate arcs are merged by adding multiplicities) and
+  /// throws InputError with a one-line message otherwise.
+  HasseDiagram(const std::vector<Node>& nodes, const std::vector<Arc>& arcs);
+
+  Id NodeCount() const { return static_cast<Id>(this->InLists.size()); }
+  /// Ancestors / successors of `node` with multiplicities, in no particular order.
+  const std::vector<HalfArc>& In(Id node) const { return this->InLists[node]; }
+  const std::vector<HalfArc>& Out(Id node) const { return this->OutLists[node]; }
+  /// 0 when there is no arc.
+  int Multiplicity(Id lower, Id upper) const;
+
+  /// Adds one to the Z/2 incidence of (lower, upper): an arc of odd multiplicity
+  /// disappears, an absent or even one becomes an arc of multiplicity 1 (the
+  /// paper's "counting multiplicities modulo 2"). Returns the new multiplicity.
+  int FlipParity(Id lower, Id upper);
+  /// Removes every arc at `node`.
+  void Isolate(Id node);
+
+  /// Every arc, sorted by (Lower, Upper).
+  std::vector<Arc> Arcs() const;
+
+private:
+  /// Position of `upper` in Out(lower), or -1.
+  std::int64_t Find(Id lower, Id upper) const;
+  void Insert(Id lower, Id upper, int multiplicity);
+  /// Removes the arc at position `k` of Out(lower).
+  void EraseOut(Id lower, std::size_t k);
+
+  std::vector<std::vector<HalfArc>> InLists, OutLists;
+};
+
+} // namespace flowrecon
+
+#endif

@@ -1,0 +1,383 @@
+#include "Reconstruction.h"
+
+#include <algorithm>
+#include <array>
+#include <queue>
+#include <string>
+#include <tuple>
+
+namespace flowrecon
+{
+
+namespace
+{
+
+void CheckArcs(const std::vector<Node>& nodes, const std::vector<Arc>& arcs,
+  const std::vector<bool>* survives)
+{
+  const Id n = static_cast<Id>(nodes.size());
+  for (std::size_t i = 0; i < arcs.size(); ++i)
+  {
+    const Arc& a = arcs[i];
+    const auto where = [i] { return "Hasse diagram: arc " + std::to_string(i); };
+    if (a.Lower < 0 || a.Lower >= n || a.Upper < 0 || a.Upper >= n)
+    {
+      throw InputError(where() + " refers to a node that does not exist");
+    }
+    if (nodes[a.Upper].Index != nodes[a.Lower].Index + 1)
+    {
+      throw InputError(where() + " does not go up by one index");
+    }
+    if (a.Multiplicity < 0)
+    {
+      throw InputError(where() + " has a negative multiplicity");
+    }
+    if (survives && a.Multiplicity > 0 && (!(*survives)[a.Lower] || !(*survives)[a.Upper]))
+    {
+      throw InputError(where() + " touches a cancelled node");
+    }
+  }
+}
+
+/// Static In/Out lists (compressed rows); arcs of multiplicity 0 are not arcs.
+/// Even arcs are kept: the reconstruction follows incidences of the Hasse
+/// diagram (an orbit from a to b exists), not their parity.
+struct Adjacency
+{
+  std::vector<Id> InOffsets, InNodes, OutOffsets, OutNodes;
+
+  Adjacency(std::size_t n, const std::vector<Arc>& arcs)
+    : InOffsets(n + 1, 0)
+    , OutOffsets(n + 1, 0)
+  {
+    for (const Arc& a : arcs)
+    {
+      if (a.Multiplicity > 0)
+      {
+        ++this->InOffsets[a.Upper + 1];
+        ++this->OutOffsets[a.Lower + 1];
+      }
+    }
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      this->InOffsets[i + 1] += this->InOffsets[i];
+      this->OutOffsets[i + 1] += this->OutOffsets[i];
+    }
+    this->InNodes.resize(static_cast<std::size_t>(this->InOffsets[n]));
+    this->OutNodes.resize(static_cast<std::size_t>(this->OutOffsets[n]));
+    std::vector<Id> in(this->InOffsets.begin(), this->InOffsets.end() - 1);
+    std::vector<Id> out(this->OutOffsets.begin(), this->OutOffsets.end() - 1);
+    for (const Arc& a : arcs)
+    {
+      if (a.Multiplicity > 0)
+      {
+        this->InNodes[in[a.Upper]++] = a.Lower;
+        this->OutNodes[out[a.Lower]++] = a.Upper;
+      }
+    }
+    // Sorted rows: the visiting order, hence which sponsor wins a tie, does not
+    // depend on the order of the arcs.
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      std::sort(this->InNodes.begin() + this->InOffsets[i], this->InNodes.begin() + this->InOffsets[i + 1]);
+      std::sort(this->OutNodes.begin() + this->OutOffsets[i], this->OutNodes.begin() + this->OutOffsets[i + 1]);
+    }
+  }
+};
+
+struct Entry
+{
+  double Priority;
+  int Gated; ///< 0 for regularization: it precedes any extension of equal priority
+  Id Node;
+  /// Reversed, so that std::priority_queue pops the least key.
+  bool operator<(const Entry& o) const
+  {
+    return std::tie(this->Priority, this->Gated, this->Node) >
+      std::tie(o.Priority, o.Gated, o.Node);
+  }
+};
+
+/// The best sponsorship of a node not yet inserted.
+struct Offer
+{
+  double Priority = HUGE_VAL;
+  int Gated = 2; ///< larger than any real offer
+  Extension Kind = Extension::Initialization;
+  Id Sponsor = -1;
+};
+
+class Reconstructor
+{
+public:
+  Reconstructor(const std::vector<Node>& nodes, const std::vector<Arc>& arcs,
+    const std::vector<bool>& survives, double tr)
+    : Nodes(nodes)
+    , Survives(survives)
+    , Graph(nodes.size(), arcs)
+    , Tr(tr)
+    , Best(nodes.size())
+  {
+  }
+
+  ReconstructionResult Run(const std::vector<Id>& initializationEdges, const Progress& progress)
+  {
+    this->Result.Nodes.assign(this->Nodes.size(), Insertion());
+    std::vector<Id> edges = initializationEdges;
+    std::sort(edges.begin(), edges.end());
+    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+    for (const Id e : edges)
+    {
+      if (e < 0 || e >= static_cast<Id>(this->Nodes.size()) || this->Nodes[e].Index != 1)
+      {
+        throw InputError("initialization edge " + std::to_string(e) + " is not an index-1 node");
+      }
+    }
+    progress(0, "Reconstructing");
+    // All initialization edges are in before any extension, so that none of
+    // them is reported as sponsored by another.
+    for (const Id e : edges)
+    {
+      if (this->Survives[e])
+      {
+        this->Insert(e, 1, Extension::Initialization, -1);
+      }
+    }
+    this->Result.InitializationCount = static_cast<Id>(this->Result.Order.size());
+    for (Id step = 0; step < this->Result.InitializationCount; ++step)
+    {
+      this->Extend(this->Result.Order[step]);
+    }
+    const double total = std::max<double>(1, static_cast<double>(this->Nodes.size()));
+    while (!this->Queue.empty())
+    {
+      const Entry top = this->Queue.top();
+      this->Queue.pop();
+      const Offer& best = this->Best[top.Node];
+      // Lazy deletion: skip entries superseded by a better offer or already used.
+      if (this->Result.Nodes[top.Node].Step >= 0 || best.Priority != top.Priority ||
+        best.Gated != top.Gated)
+      {
+        continue;
+      }
+      this->Insert(top.Node, best.Priority, best.Kind, best.Sponsor);
+      this->Result.Profile.push_back(best.Priority);
+      this->Extend(top.Node);
+      if (this->Result.Order.size() % 4096 == 0)
+      {
+        progress(static_cast<double>(this->Result.Order.size()) / total, "Reconstructing");
+      }
+    }
+    progress(1, "Reconstructing");
+    return std::move(this->Result);
+  }
+
+private:
+  void Insert(Id node, double priority, Extension kind, Id sponsor)
+  {
+    this->Running = std::max(this->Running, priority);
+    Insertion& ins = this->Result.Nodes[node];
+    ins.Step = static_cast<Id>(this->Result.Order.size());
+    ins.Priority = priority;
+    ins.Threshold = this->Running;
+    ins.Kind = kind;
+    ins.Sponsor = sponsor;
+    this->Result.Order.push_back(node);
+  }
+
+  /// Regularization, upflow, horizontal extension, in this order (paper §3.2).
+  void Extend(Id c)
+  {
+    const Adjacency& g = this->Graph;
+    for (Id k = g.InOffsets[c]; k < g.InOffsets[c + 1]; ++k)
+    {
+      this->Consider(g.InNodes[k], 1, 0, Extension::Regularization, c);
+    }
+    const double vc = this->Nodes[c].Value;
+    // Index-0 nodes have value 0: their upflow ratio is infinite, never < tr.
+    if (!(vc > 0))
+    {
+      return;
+    }
+    for (Id k = g.OutOffsets[c]; k < g.OutOffsets[c + 1]; ++k)
+    {
+      const Id d = g.OutNodes[k];
+      this->Consider(d, this->Nodes[d].Value / vc, 1, Extension::Upflow, c);
+    }
+    // "Index one nodes sponsor nodes with the same dimension": siblings through
+    // a common index-0 ancestor. A shorter sibling would give a ratio below 1;
+    // ratios are >= 1 by definition, so it is clamped (such a sibling is as cheap
+    // as it gets, like a regularization, but still needs 1 < tr).
+    if (this->Nodes[c].Index != 1)
+    {
+      return;
+    }
+    for (Id k = g.InOffsets[c]; k < g.InOffsets[c + 1]; ++k)
+    {
+      const Id b = g.InNodes[k];
+      for (Id j = g.OutOffsets[b]; j < g.OutOffsets[b + 1]; ++j)
+      {
+        const Id d = g.OutNodes[j];
+        if (d != c)
+        {
+          this->Consider(d, std::max(1.0, this->Nodes[d].Value / vc), 1, Extension::Horizontal, c);
+        }
+      }
+    }
+  }
+
+  void Consider(Id d, double ratio, int gated, Extension kind, Id sponsor)
+  {
+    if (this->Result.Nodes[d].Step >= 0 || !this->Survives[d] || this->Nodes[d].IsInfinity())
+    {
+      return;
+    }
+    if (gated && !(ratio < this->Tr))
+    {
+      return;
+    }
+    Offer& best = this->Best[d];
+    // Strictly better only: the first sponsor found keeps ties.
+    if (std::tie(ratio, gated) < std::tie(best.Priority, best.Gated))
+    {
+      best.Priority = ratio;
+      best.Gated = gated;
+      best.Kind = kind;
+      best.Sponsor = sponsor;
+      this->Queue.push(Entry{ ratio, gated, d });
+    }
+  }
+
+  const std::vector<Node>& Nodes;
+  const std::vector<bool>& Survives;
+  Adjacency Graph;
+  double Tr;
+  std::vector<Offer> Best;
+  std::priority_queue<Entry> Queue;
+  double Running = 1;
+  ReconstructionResult Result;
+};
+
+} // namespace
+
+ReconstructionResult Reconstruct(const std::vector<Node>& nodes, const std::vector<Arc>& arcs,
+  const std::vector<bool>& survives, const std::vector<Id>& initializationEdges, double tr,
+  const Progress& progress)
+{
+  if (std::isnan(tr))
+  {
+    throw InputError("reconstruction threshold is not a number");
+  }
+  if (survives.size() != nodes.size())
+  {
+    throw InputError("reconstruction: " + std::to_string(survives.size()) +
+      " survival flags for " + std::to_string(nodes.size()) + " nodes");
+  }
+  CheckArcs(nodes, arcs, &survives);
+  Reconstructor r(nodes, arcs, survives, tr);
+  return r.Run(initializationEdges, progress);
+}
+
+std::vector<Id> InitializationEdges(
+  const std::vector<Node>& nodes, const std::vector<Id>& nearestNeighbour)
+{
+  // Index-1 nodes by their sorted pair of sample ids; binary search, so the
+  // node order of the diagram does not matter.
+  std::vector<std::tuple<Id, Id, Id>> edges;
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+  {
+    if (nodes[i].Index == 1 && !nodes[i].IsInfinity())
+    {
+      const Id a = nodes[i].Simplex[0], b = nodes[i].Simplex[1];
+      edges.emplace_back(std::min(a, b), std::max(a, b), static_cast<Id>(i));
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  std::vector<Id> result;
+  const std::size_t n = std::min(nodes.size(), nearestNeighbour.size());
+  for (std::size_t v = 0; v < n; ++v)
+  {
+    const Id w = nearestNeighbour[v];
+    if (nodes[v].Index != 0 || w < 0)
+    {
+      continue;
+    }
+    if (w >= static_cast<Id>(nodes.size()) || nodes[w].Index != 0)
+    {
+      throw InputError("nearest neighbour of node " + std::to_string(v) + " is not a sample");
+    }
+    const Id a = std::min(nodes[v].Simplex[0], nodes[w].Simplex[0]);
+    const Id b = std::max(nodes[v].Simplex[0], nodes[w].Simplex[0]);
+    const auto it = std::lower_bound(edges.begin(), edges.end(), std::make_tuple(a, b, Id(-1)));
+    if (it != edges.end() && std::get<0>(*it) == a && std::get<1>(*it) == b)
+    {
+      result.push_back(std::get<2>(*it));
+    }
+  }
+  std::sort(result.begin(), result.end());
+  result.erase(std::unique(result.begin(), result.end()), result.end());
+  return result;
+}
+
+std::vector<Id> NearestNeighboursFromDiagram(
+  const std::vector<Node>& nodes, const std::vector<Arc>& arcs)
+{
+  CheckArcs(nodes, arcs, nullptr);
+  const std::size_t n = nodes.size();
+  // The two samples of each Gabriel edge.
+  std::vector<std::array<Id, 2>> ends(n, { { -1, -1 } });
+  std::vector<Id> shortest(n, -1);
+  for (const Arc& a : arcs)
+  {
+    if (a.Multiplicity <= 0 || nodes[a.Lower].Index != 0)
+    {
+      continue;
+    }
+    std::array<Id, 2>& e = ends[a.Upper];
+    if (e[0] < 0)
+    {
+      e[0] = a.Lower;
+    }
+    else if (e[0] != a.Lower)
+    {
+      e[1] = a.Lower;
+    }
+    Id& s = shortest[a.Lower];
+    if (s < 0 || std::make_pair(nodes[a.Upper].Value, a.Upper) < std::make_pair(nodes[s].Value, s))
+    {
+      s = a.Upper;
+    }
+  }
+  std::vector<Id> nn(n, -1);
+  for (std::size_t v = 0; v < n; ++v)
+  {
+    const Id e = shortest[v];
+    if (e >= 0 && ends[e][1] >= 0)
+    {
+      nn[v] = ends[e][0] == static_cast<Id>(v) ? ends[e][1] : ends[e][0];
+    }
+  }
+  return nn;
+}
+
+std::vector<int> EdgeMultiplicities(const std::vector<Node>& nodes,
+  const std::vector<Arc>& arcs, const ReconstructionResult& reconstruction, double t)
+{
+  if (reconstruction.Nodes.size() != nodes.size())
+  {
+    throw InputError("edge multiplicities: the reconstruction does not match the diagram");
+  }
+  CheckArcs(nodes, arcs, nullptr);
+  std::vector<int> m(nodes.size(), 0);
+  for (const Arc& a : arcs)
+  {
+    if (nodes[a.Lower].Index == 1 && reconstruction.Contains(a.Lower, t) &&
+      reconstruction.Contains(a.Upper, t))
+    {
+      m[a.Lower] += a.Multiplicity;
+    }
+  }
+  return m;
+}
+
+} // namespace flowrecon

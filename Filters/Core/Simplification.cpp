@@ -1,0 +1,233 @@
+#include "Simplification.h"
+
+#include "HasseDiagram.h"
+
+#include <algorithm>
+#include <cmath>
+#include <queue>
+#include <string>
+#include <tuple>
+
+namespace flowrecon
+{
+
+namespace
+{
+
+struct Candidate
+{
+  double Ratio;
+  Id Lower, Upper;
+  /// Reversed, so that std::priority_queue pops the least (ratio, lower, upper).
+  bool operator<(const Candidate& o) const
+  {
+    return std::tie(this->Ratio, this->Lower, this->Upper) >
+      std::tie(o.Ratio, o.Lower, o.Upper);
+  }
+};
+
+class Simplifier
+{
+public:
+  Simplifier(const std::vector<Node>& nodes, const std::vector<Arc>& arcs)
+    : Nodes(nodes)
+    , Diagram(nodes, arcs)
+    , Alive(nodes.size(), true)
+    , DirectOwners(nodes.size())
+  {
+  }
+
+  SimplificationResult Run(double threshold, const Progress& progress)
+  {
+    std::vector<Candidate> initial;
+    for (Id lower = 0; lower < this->Diagram.NodeCount(); ++lower)
+    {
+      for (const HasseDiagram::HalfArc& h : this->Diagram.Out(lower))
+      {
+        this->Offer(lower, h.Node, h.Multiplicity, initial);
+      }
+    }
+    const double expected = std::max<double>(1, static_cast<double>(initial.size()));
+    std::priority_queue<Candidate> queue(std::less<Candidate>(), std::move(initial));
+    std::vector<Candidate> fresh;
+    SimplificationResult result;
+    std::size_t pops = 0;
+    progress(0, "Simplifying the Hasse diagram");
+    // t_p < 1 is the paper's "no persistence" (t_p = 0): say so explicitly rather
+    // than rely on every ratio of the input being >= 1.
+    while (threshold >= 1 && !queue.empty())
+    {
+      const Candidate top = queue.top();
+      if (top.Ratio > threshold)
+      {
+        break;
+      }
+      queue.pop();
+      if (++pops % 16384 == 0)
+      {
+        progress(std::min(1.0, static_cast<double>(pops) / expected),
+          "Simplifying the Hasse diagram");
+      }
+      // Lazy deletion: the entry is stale when a node went away or the arc
+      // became even since it was pushed. Its ratio cannot have changed (it only
+      // depends on the two nodes), so a valid entry is a valid candidate.
+      if (!this->Alive[top.Lower] || !this->Alive[top.Upper] ||
+        this->Diagram.Multiplicity(top.Lower, top.Upper) % 2 == 0)
+      {
+        continue;
+      }
+      fresh.clear();
+      this->Cancel(top.Lower, top.Upper, fresh);
+      for (const Candidate& c : fresh)
+      {
+        queue.push(c);
+      }
+      CancelledPair pair;
+      pair.Lower = top.Lower;
+      pair.Upper = top.Upper;
+      pair.Ratio = top.Ratio;
+      pair.Birth = this->Nodes[top.Lower].Value;
+      pair.Death = this->Nodes[top.Upper].Value;
+      pair.PairType = this->Nodes[top.Lower].Index;
+      result.Pairs.push_back(pair);
+    }
+    result.Survives = this->Alive;
+    result.Arcs = this->Diagram.Arcs();
+    this->ResolveOwners(result);
+    progress(1, "Simplifying the Hasse diagram");
+    return result;
+  }
+
+private:
+  /// Pushes (lower, upper) when it may be cancelled. Only odd arcs qualify: a
+  /// cancellation needs an invertible incidence coefficient, and over Z/2 an even
+  /// multiplicity is the coefficient 0. Index-0 nodes have value 0 (infinite
+  /// ratio) and the maximum at infinity is never cancelled.
+  void Offer(Id lower, Id upper, int multiplicity, std::vector<Candidate>& out) const
+  {
+    const Node& a = this->Nodes[lower];
+    const Node& b = this->Nodes[upper];
+    if (multiplicity % 2 == 0 || a.Index == 0 || b.IsInfinity() || !(a.Value > 0))
+    {
+      return;
+    }
+    const double ratio = b.Value / a.Value;
+    if (std::isfinite(ratio))
+    {
+      out.push_back(Candidate{ ratio, lower, upper });
+    }
+  }
+
+  /// The elementary reduction of (a, b): every x with an odd arc x -> b gets its
+  /// Z/2 incidence with every y with an odd arc a -> y flipped, then a and b go.
+  /// That is the paper's "add In(b) x Out(a), counting multiplicities modulo 2",
+  /// i.e. d'y = dy + <dy, a> db over Z/2. Even arcs contribute an even count,
+  /// which changes nothing modulo 2, so they are left alone.
+  void Cancel(Id a, Id b, std::vector<Candidate>& fresh)
+  {
+    this->Lowers.clear();
+    for (const HasseDiagram::HalfArc& x : this->Diagram.In(b))
+    {
+      if (x.Node != a && x.Multiplicity % 2 == 1)
+      {
+        this->Lowers.push_back(x.Node);
+      }
+    }
+    this->Uppers.clear();
+    std::vector<Id>& owners = this->DirectOwners[a];
+    owners.clear();
+    for (const HasseDiagram::HalfArc& y : this->Diagram.Out(a))
+    {
+      if (y.Node == b)
+      {
+        continue;
+      }
+      // Stable manifolds go to every successor of a (even arcs too: a lies in
+      // the boundary of y's manifold either way, so b's manifold glues to it).
+      owners.push_back(y.Node);
+      if (y.Multiplicity % 2 == 1)
+      {
+        this->Uppers.push_back(y.Node);
+      }
+    }
+    std::sort(owners.begin(), owners.end());
+    this->DirectOwners[b] = owners;
+    this->Diagram.Isolate(a);
+    this->Diagram.Isolate(b);
+    this->Alive[a] = false;
+    this->Alive[b] = false;
+    for (const Id x : this->Lowers)
+    {
+      for (const Id y : this->Uppers)
+      {
+        const int m = this->Diagram.FlipParity(x, y);
+        if (m != 0)
+        {
+          this->Offer(x, y, m, fresh);
+        }
+      }
+    }
+    this->Order.push_back(a);
+    this->Order.push_back(b);
+  }
+
+  /// Owners are transitive: a direct owner that was cancelled later hands over
+  /// its own owners. Direct owners were alive at the cancellation, so they were
+  /// cancelled later if at all: resolving in reverse cancellation order finds
+  /// them already resolved.
+  void ResolveOwners(SimplificationResult& result) const
+  {
+    std::vector<std::vector<Id>> resolved(this->Nodes.size());
+    std::vector<Id> merged;
+    for (auto it = this->Order.rbegin(); it != this->Order.rend(); ++it)
+    {
+      merged.clear();
+      for (const Id d : this->DirectOwners[*it])
+      {
+        if (this->Alive[d])
+        {
+          merged.push_back(d);
+        }
+        else
+        {
+          merged.insert(merged.end(), resolved[d].begin(), resolved[d].end());
+        }
+      }
+      std::sort(merged.begin(), merged.end());
+      merged.erase(std::unique(merged.begin(), merged.end()), merged.end());
+      resolved[*it] = merged;
+    }
+    result.OwnerOffsets.assign(this->Nodes.size() + 1, 0);
+    for (std::size_t i = 0; i < this->Nodes.size(); ++i)
+    {
+      result.OwnerOffsets[i + 1] = result.OwnerOffsets[i] + static_cast<Id>(resolved[i].size());
+    }
+    result.Owners.reserve(static_cast<std::size_t>(result.OwnerOffsets.back()));
+    for (const std::vector<Id>& r : resolved)
+    {
+      result.Owners.insert(result.Owners.end(), r.begin(), r.end());
+    }
+  }
+
+  const std::vector<Node>& Nodes;
+  HasseDiagram Diagram;
+  std::vector<bool> Alive;
+  std::vector<std::vector<Id>> DirectOwners;
+  std::vector<Id> Order; ///< cancelled nodes, in cancellation order
+  std::vector<Id> Lowers, Uppers;
+};
+
+} // namespace
+
+SimplificationResult Simplify(const std::vector<Node>& nodes, const std::vector<Arc>& arcs,
+  double persistenceThreshold, const Progress& progress)
+{
+  if (std::isnan(persistenceThreshold))
+  {
+    throw InputError("persistence threshold is not a number");
+  }
+  Simplifier simplifier(nodes, arcs);
+  return simplifier.Run(persistenceThreshold, progress);
+}
+
+} // namespace flowrecon

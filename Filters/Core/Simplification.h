@@ -1,0 +1,62 @@
+// Persistence-guided simplification of the Hasse diagram (paper §3.3):
+// cancellations of incident pairs in order of increasing ratio V(b)/V(a).
+#ifndef flowrecon_Simplification_h
+#define flowrecon_Simplification_h
+
+#include "FlowComplex.h"
+#include "Progress.h"
+
+#include <vector>
+
+namespace flowrecon
+{
+
+/// One cancellation: Lower = a, Upper = b, dim b = dim a + 1.
+struct CancelledPair
+{
+  Id Lower = -1;
+  Id Upper = -1;
+  double Ratio = 1;    ///< V(b) / V(a)
+  double Birth = 0;    ///< V(a)
+  double Death = 0;    ///< V(b)
+  int PairType = 0;    ///< index of a
+};
+
+struct SimplificationResult
+{
+  /// One flag per original node: false for the nodes of a cancelled pair.
+  std::vector<bool> Survives;
+  /// The simplified diagram, original node ids, sorted by (Lower, Upper). Arcs
+  /// no cancellation touched keep their multiplicity; arcs a cancellation
+  /// touched have multiplicity 1 (arcs that became even were removed). Arcs to
+  /// the maximum at infinity are kept.
+  std::vector<Arc> Arcs;
+  /// In the order they were made (non-decreasing Ratio).
+  std::vector<CancelledPair> Pairs;
+  /// Owners of the stable manifold of each cancelled node: the surviving nodes
+  /// it was redistributed to, transitively (compressed rows: node i owns nothing
+  /// and has no owner when it survives). May contain the maximum at infinity,
+  /// and may be empty when Out(a) was {b} alone.
+  std::vector<Id> OwnerOffsets; ///< size = nodes + 1
+  std::vector<Id> Owners;       ///< sorted within each row
+
+  const Id* OwnersBegin(Id node) const { return this->Owners.data() + this->OwnerOffsets[node]; }
+  const Id* OwnersEnd(Id node) const { return this->Owners.data() + this->OwnerOffsets[node + 1]; }
+  std::vector<Id> OwnersOf(Id node) const
+  {
+    return std::vector<Id>(this->OwnersBegin(node), this->OwnersEnd(node));
+  }
+};
+
+/// Cancels, while the least ratio V(b)/V(a) over the candidate arcs (a, b) does
+/// not exceed `persistenceThreshold`, the pair with that least ratio (ties by
+/// lower id, then upper id). Candidates are arcs of odd multiplicity whose lower
+/// node has index >= 1 and whose upper node is not the maximum at infinity.
+/// Any threshold below 1 (the paper's t_p = 0) cancels nothing. Throws InputError for an inconsistent diagram or a NaN threshold,
+/// Aborted when `progress` asks to stop.
+SimplificationResult Simplify(const std::vector<Node>& nodes, const std::vector<Arc>& arcs,
+  double persistenceThreshold, const Progress& progress);
+
+} // namespace flowrecon
+
+#endif
