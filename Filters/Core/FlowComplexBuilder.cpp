@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <string>
 
 namespace flowrecon
@@ -69,7 +70,7 @@ public:
   void Run(const std::vector<Point3>& coords, bool first);
 
 private:
-  void AddNode(int index, const Id* simplex, const Triangulation& tri);
+  void AddNode(int index, const Id* simplex, const std::vector<Point3>& coords);
 
   const PreparedInput& In;
   const std::vector<Point3>& Input;
@@ -78,7 +79,7 @@ private:
   FlowComplex& FC;
 };
 
-void Builder::AddNode(int index, const Id* simplex, const Triangulation& tri)
+void Builder::AddNode(int index, const Id* simplex, const std::vector<Point3>& coords)
 {
   Node node;
   node.Index = index;
@@ -86,7 +87,8 @@ void Builder::AddNode(int index, const Id* simplex, const Triangulation& tri)
   for (int i = 0; i <= index; ++i)
   {
     node.Simplex[i] = this->In.InputId[simplex[i]];
-    pts[i] = tri.KCoord(simplex[i]);
+    const Point3& c = coords[simplex[i]];
+    pts[i] = KPoint(c[0], c[1], c[2]);
   }
   std::sort(node.Simplex.begin(), node.Simplex.begin() + index + 1);
   if (index == 0)
@@ -101,7 +103,6 @@ void Builder::AddNode(int index, const Id* simplex, const Triangulation& tri)
     node.Value = std::sqrt(cr[3]);
   }
   this->FC.Nodes.push_back(node);
-  this->FC.NodePoint.push_back(index == 0 ? node.Simplex[0] : -1);
 }
 
 void Builder::Run(const std::vector<Point3>& coords, bool first)
@@ -109,14 +110,16 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
   FlowComplex& fc = this->FC;
   const auto t0 = Clock::now();
   this->Report(0.0, "Delaunay triangulation");
-  const Triangulation tri(coords);
-  if (tri.Dimension() < 3)
+  // Held by pointer so that it can be freed before the nodes and arcs are built:
+  // the triangulation is the largest structure, and peak memory matters.
+  auto tri = std::make_unique<const Triangulation>(coords);
+  if (tri->Dimension() < 3)
   {
-    throw InputError(tri.Dimension() == 2 ? "all points are coplanar"
-                                          : "all points are collinear");
+    throw InputError(tri->Dimension() == 2 ? "all points are coplanar"
+                                           : "all points are collinear");
   }
-  if (tri.NumberOfVertices() != static_cast<Id>(coords.size()) ||
-    static_cast<Id>(tri.Dt().number_of_vertices()) != tri.NumberOfVertices())
+  if (tri->NumberOfVertices() != static_cast<Id>(coords.size()) ||
+    static_cast<Id>(tri->Dt().number_of_vertices()) != tri->NumberOfVertices())
   {
     throw Degenerate("perturbation created duplicate points");
   }
@@ -124,7 +127,7 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
 
   auto t = Clock::now();
   this->Report(0.2, "critical points");
-  const CriticalSimplices cs = FindCriticalSimplices(tri, this->Report);
+  CriticalSimplices cs = FindCriticalSimplices(*tri, this->Report);
   if (first)
   {
     fc.Report.RightAngles = cs.RightAngles;
@@ -134,38 +137,15 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
   {
     throw Degenerate("input not in general position");
   }
-
-  // Nodes by index; within an index in the (Hilbert) order of their vertices.
-  fc.Nodes.clear();
-  fc.NodePoint.clear();
-  const Id m = tri.NumberOfVertices();
-  const Id base1 = m, base2 = base1 + static_cast<Id>(cs.Edges.size());
-  const Id base3 = base2 + static_cast<Id>(cs.Facets.size());
+  // Node ids: by index; within an index in the (Hilbert) order of their vertices.
+  const Id m = tri->NumberOfVertices();
+  const Id nEdges = static_cast<Id>(cs.Edges.size()), nFacets = static_cast<Id>(cs.Facets.size());
+  const Id base1 = m, base2 = base1 + nEdges, base3 = base2 + nFacets;
   fc.InfinityNode = base3 + static_cast<Id>(cs.Cells.size());
-  fc.Nodes.reserve(static_cast<std::size_t>(fc.InfinityNode + 1));
+  fc.NodePoint.assign(static_cast<std::size_t>(fc.InfinityNode + 1), -1);
   for (Id k = 0; k < m; ++k)
   {
-    this->AddNode(0, &k, tri);
-  }
-  for (const auto& e : cs.Edges)
-  {
-    this->AddNode(1, e.data(), tri);
-  }
-  for (const auto& f : cs.Facets)
-  {
-    this->AddNode(2, f.data(), tri);
-  }
-  for (const auto& c : cs.Cells)
-  {
-    this->AddNode(3, c.data(), tri);
-  }
-  {
-    Node inf;
-    inf.Index = 3;
-    inf.Value = HUGE_VAL;
-    inf.Location = this->In.Centre;
-    fc.Nodes.push_back(inf);
-    fc.NodePoint.push_back(-1);
+    fc.NodePoint[k] = this->In.InputId[k];
   }
   fc.Time.CriticalPoints = Seconds(t);
 
@@ -175,10 +155,10 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
   fc.NumberOfInputPoints = static_cast<Id>(this->Input.size());
   fc.Triangles.clear();
   fc.TriangleNode.clear();
-  fc.Arcs.clear();
+  std::vector<Arc> arcs12;
+  arcs12.reserve(static_cast<std::size_t>(3 * nFacets));
   std::vector<Id> triangleBegin(cs.Facets.size() + 1, 0);
-  std::vector<std::pair<Id, Id>> arrivals; // (edge node, facet node), one per arrival
-  const double nf = static_cast<double>(cs.Facets.size()) + 1;
+  const double nf = static_cast<double>(nFacets) + 1;
   // Patches are independent: compute them in parallel, chunk by chunk, and merge
   // them in node order on this thread (which also reports progress).
   const std::size_t chunk = 8192;
@@ -197,7 +177,7 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
           for (std::size_t i = r.begin(); i != r.end(); ++i)
           {
             patches[i - begin] = ComputeStableManifold(
-              tri, cs, i, this->Options.StableManifolds, fallbacks[i - begin]);
+              *tri, cs, i, this->Options.StableManifolds, fallbacks[i - begin]);
           }
         });
     }
@@ -214,9 +194,17 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
       const Id node = base2 + static_cast<Id>(i);
       Patch& patch = patches[i - begin];
       fc.Report.ExactFallbacks += fallbacks[i - begin];
-      for (const Id edge : patch.Arrivals)
+      // Arrival counts per Gabriel edge are the 1-2 multiplicities.
+      std::sort(patch.Arrivals.begin(), patch.Arrivals.end());
+      for (std::size_t k = 0; k < patch.Arrivals.size();)
       {
-        arrivals.emplace_back(base1 + edge, node);
+        std::size_t l = k;
+        while (l < patch.Arrivals.size() && patch.Arrivals[l] == patch.Arrivals[k])
+        {
+          ++l;
+        }
+        arcs12.push_back({ base1 + patch.Arrivals[k], node, static_cast<int>(l - k) });
+        k = l;
       }
       triangleBegin[i] = static_cast<Id>(fc.Triangles.size());
       if (this->Options.StableManifolds)
@@ -238,136 +226,156 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
       patch = Patch(); // release memory early
     }
   }
+  std::vector<Patch>().swap(patches);
   triangleBegin[cs.Facets.size()] = static_cast<Id>(fc.Triangles.size());
   fc.Time.StableManifolds = Seconds(t);
 
   // Unstable manifolds: the two flow lines of each index-2 point.
   t = Clock::now();
-  std::vector<Id> maximumOfCell(static_cast<std::size_t>(tri.NumberOfCells()), -1);
-  for (std::size_t i = 0; i < cs.Cells.size(); ++i)
-  {
-    maximumOfCell[cs.CellOfMaximum[i]] = base3 + static_cast<Id>(i);
-  }
-  const double stub = 0.25 * this->In.Diagonal;
-  SuccessorForest forest(tri, maximumOfCell, fc.InfinityNode, stub);
   std::vector<std::array<Id, 2>> ends(cs.Facets.size());
   fc.FlowLines.clear();
-  for (std::size_t i = 0; i < cs.Facets.size(); ++i)
   {
-    if ((i & 0x3FF) == 0)
+    std::vector<Id> maximumOfCell(static_cast<std::size_t>(tri->NumberOfCells()), -1);
+    for (std::size_t i = 0; i < cs.Cells.size(); ++i)
     {
-      this->Report(0.7 + 0.2 * i / nf, "unstable manifolds");
+      maximumOfCell[cs.CellOfMaximum[i]] = base3 + static_cast<Id>(i);
     }
-    const Id node = base2 + static_cast<Id>(i);
-    const auto& f = cs.Facets[i];
-    const CellHandle cell = cs.FacetCells[i].first;
-    const int opposite = cs.FacetCells[i].second;
-    CellHandle sides[2] = { cell, cell->neighbor(opposite) };
-    // CGAL's spatial sort shuffles with a global generator, so which cell holds
-    // the facet varies between runs: order the two sides by their apex (input id,
-    // infinite last) to keep the output deterministic.
+    const double stub = 0.25 * this->In.Diagonal;
+    SuccessorForest forest(*tri, maximumOfCell, fc.InfinityNode, stub);
+    for (std::size_t i = 0; i < cs.Facets.size(); ++i)
     {
-      const VertexHandle a0 = cell->vertex(opposite);
-      const VertexHandle a1 = sides[1]->vertex(sides[1]->index(cell));
-      const Id k0 = tri.Dt().is_infinite(a0) ? m : a0->info();
-      const Id k1 = tri.Dt().is_infinite(a1) ? m : a1->info();
-      if (k1 < k0)
+      if ((i & 0x3FF) == 0)
       {
-        std::swap(sides[0], sides[1]);
+        this->Report(0.7 + 0.2 * i / nf, "unstable manifolds");
       }
-    }
-    for (int s = 0; s < 2; ++s)
-    {
-      FlowLine line;
-      line.Node = node;
+      const Id node = base2 + static_cast<Id>(i);
+      const auto& f = cs.Facets[i];
+      const CellHandle cell = cs.FacetCells[i].first;
+      const int opposite = cs.FacetCells[i].second;
+      CellHandle sides[2] = { cell, cell->neighbor(opposite) };
+      // CGAL's spatial sort shuffles with a global generator, so which cell holds
+      // the facet varies between runs: order the two sides by their apex (vertex
+      // index, infinite last) to keep the output deterministic.
+      {
+        const VertexHandle a0 = cell->vertex(opposite);
+        const VertexHandle a1 = sides[1]->vertex(sides[1]->index(cell));
+        const Id k0 = tri->Dt().is_infinite(a0) ? m : a0->info();
+        const Id k1 = tri->Dt().is_infinite(a1) ? m : a1->info();
+        if (k1 < k0)
+        {
+          std::swap(sides[0], sides[1]);
+        }
+      }
       const bool record = this->Options.UnstableManifolds;
+      Point3 centre{ { 0, 0, 0 } };
       if (record)
       {
-        line.Points.push_back(fc.Nodes[node].Location);
+        const KPoint pts[3] = { tri->KCoord(f[0]), tri->KCoord(f[1]), tri->KCoord(f[2]) };
+        const std::array<double, 4> cr = CentreAndSquaredRadius(pts, 3);
+        centre = { { cr[0], cr[1], cr[2] } };
       }
-      try
+      for (int s = 0; s < 2; ++s)
       {
-        if (tri.Dt().is_infinite(sides[s]))
+        FlowLine line;
+        line.Node = node;
+        if (record)
         {
-          line.Target = fc.InfinityNode;
-          if (record)
+          line.Points.push_back(centre);
+        }
+        try
+        {
+          if (tri->Dt().is_infinite(sides[s]))
           {
-            // The Voronoi edge of a hull facet is a ray normal to it, away from the other cell.
-            const CellHandle other = sides[1 - s];
-            const KPoint& apex = other->vertex(other->index(sides[s]))->point();
-            const KPoint& p = tri.KCoord(f[0]);
-            Kernel::Vector_3 n =
-              CGAL::cross_product(tri.KCoord(f[1]) - p, tri.KCoord(f[2]) - p);
-            if (n * (apex - p) > 0)
+            line.Target = fc.InfinityNode;
+            if (record)
             {
-              n = -n;
+              // The Voronoi edge of a hull facet is a ray normal to it, away from the other cell.
+              const CellHandle other = sides[1 - s];
+              const KPoint& apex = other->vertex(other->index(sides[s]))->point();
+              const KPoint& p = tri->KCoord(f[0]);
+              Kernel::Vector_3 n =
+                CGAL::cross_product(tri->KCoord(f[1]) - p, tri->KCoord(f[2]) - p);
+              if (n * (apex - p) > 0)
+              {
+                n = -n;
+              }
+              const double len = std::sqrt(n.squared_length());
+              line.Points.push_back({ { centre[0] + n.x() / len * stub,
+                centre[1] + n.y() / len * stub, centre[2] + n.z() / len * stub } });
             }
-            const double len = std::sqrt(n.squared_length());
-            const Point3& c = line.Points[0];
-            line.Points.push_back({ { c[0] + n.x() / len * stub, c[1] + n.y() / len * stub,
-              c[2] + n.z() / len * stub } });
           }
-        }
-        else
-        {
-          const Id id = tri.CellId(sides[s]);
-          line.Target = forest.Root(id);
-          if (record)
+          else
           {
-            line.Points.push_back(forest.Circumcentre(id));
-            forest.AppendPath(id, line.Points, true);
+            const Id id = tri->CellId(sides[s]);
+            line.Target = forest.Root(id);
+            if (record)
+            {
+              line.Points.push_back(forest.Circumcentre(id));
+              forest.AppendPath(id, line.Points, true);
+            }
           }
         }
-      }
-      catch (const Degenerate&)
-      {
-        if (first)
+        catch (const Degenerate&)
         {
-          ++fc.Report.WalkTies;
+          if (first)
+          {
+            ++fc.Report.WalkTies;
+          }
+          throw;
         }
-        throw;
-      }
-      ends[i][s] = line.Target;
-      if (record)
-      {
-        fc.FlowLines.push_back(std::move(line));
+        ends[i][s] = line.Target;
+        if (record)
+        {
+          fc.FlowLines.push_back(std::move(line));
+        }
       }
     }
+    fc.Report.ExactFallbacks += forest.ExactFallbacks;
   }
-  fc.Report.ExactFallbacks += forest.ExactFallbacks;
   fc.Time.UnstableManifolds = Seconds(t);
 
-  // Hasse diagram and index-3 cones.
+  // Everything below needs only the critical simplices: free the triangulation.
   t = Clock::now();
   this->Report(0.9, "Hasse diagram");
-  for (std::size_t i = 0; i < cs.Edges.size(); ++i)
+  std::vector<std::pair<CellHandle, int>>().swap(cs.FacetCells);
+  tri.reset();
+
+  fc.Nodes.clear();
+  fc.Nodes.reserve(static_cast<std::size_t>(fc.InfinityNode + 1));
+  for (Id k = 0; k < m; ++k)
   {
-    const Id node = base1 + static_cast<Id>(i);
-    fc.Arcs.push_back({ cs.Edges[i][0], node, 1 });
-    fc.Arcs.push_back({ cs.Edges[i][1], node, 1 });
+    this->AddNode(0, &k, coords);
   }
-  // Arrivals are grouped by patch: count the repeats within each group.
-  for (std::size_t i = 0; i < arrivals.size();)
+  for (const auto& e : cs.Edges)
   {
-    std::size_t j = i;
-    while (j < arrivals.size() && arrivals[j].second == arrivals[i].second)
-    {
-      ++j;
-    }
-    std::sort(arrivals.begin() + i, arrivals.begin() + j);
-    for (std::size_t k = i; k < j;)
-    {
-      std::size_t l = k;
-      while (l < j && arrivals[l] == arrivals[k])
-      {
-        ++l;
-      }
-      fc.Arcs.push_back({ arrivals[k].first, arrivals[k].second, static_cast<int>(l - k) });
-      k = l;
-    }
-    i = j;
+    this->AddNode(1, e.data(), coords);
   }
-  std::vector<std::pair<Id, Id>>().swap(arrivals);
+  for (const auto& f : cs.Facets)
+  {
+    this->AddNode(2, f.data(), coords);
+  }
+  for (const auto& c : cs.Cells)
+  {
+    this->AddNode(3, c.data(), coords);
+  }
+  {
+    Node inf;
+    inf.Index = 3;
+    inf.Value = HUGE_VAL;
+    inf.Location = this->In.Centre;
+    fc.Nodes.push_back(inf);
+  }
+
+  // Arcs grouped by the index of their lower node: 0->1, 1->2, 2->3.
+  fc.Arcs.clear();
+  fc.Arcs.reserve(static_cast<std::size_t>(2 * nEdges + 2 * nFacets) + arcs12.size());
+  for (Id i = 0; i < nEdges; ++i)
+  {
+    fc.Arcs.push_back({ cs.Edges[i][0], base1 + i, 1 });
+    fc.Arcs.push_back({ cs.Edges[i][1], base1 + i, 1 });
+  }
+  fc.Arcs.insert(fc.Arcs.end(), arcs12.begin(), arcs12.end());
+  std::vector<Arc>().swap(arcs12);
   for (std::size_t i = 0; i < ends.size(); ++i)
   {
     const Id node = base2 + static_cast<Id>(i);
@@ -382,9 +390,9 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
     }
   }
   // Values increase strictly along arcs in exact arithmetic, but a perturbed
-  // degeneracy can leave a gap below double precision. Arcs come grouped by the
-  // index of their lower node: one pass makes the doubles non-decreasing along
-  // every arc (a change of at most an ulp or two), which the filtration relies on.
+  // degeneracy can leave a gap below double precision. The arcs come grouped by
+  // index: one pass makes the doubles non-decreasing along every arc (a change
+  // of at most an ulp or two), which the filtration relies on.
   for (const Arc& a : fc.Arcs)
   {
     fc.Nodes[a.Upper].Value = std::max(fc.Nodes[a.Upper].Value, fc.Nodes[a.Lower].Value);
