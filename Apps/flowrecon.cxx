@@ -2,6 +2,8 @@
 //
 //   flowrecon complex INPUT -o OUT.vtm [--no-stable] [--no-unstable] [--quiet]
 //   flowrecon info    INPUT [--no-stable] [--no-unstable] [--quiet]
+//   flowrecon reconstruct INPUT -o OUT.vtu [--tr T] [--tp P] [--profile P.csv] [--jumps K]
+//   flowrecon diagram INPUT -o PD.csv|PD.vtu
 //
 // Every command is a function over parsed arguments listed in `Commands`, so
 // new ones (reconstruct, diagram) are one function and one table entry each.
@@ -9,8 +11,23 @@
 // 130 interrupted (Ctrl-C). Errors are one line on stderr; VTK's own messages
 // are captured, never printed.
 
+#include "FlowComplexConversion.h"
+#include "Persistence.h"
 #include "vtkFlowComplex.h"
+#include "vtkFlowComplexSimplification.h"
+#include "vtkFlowReconstruction.h"
 #include "vtkPointCloudReader.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDoubleArray.h"
+#include "vtkIdTypeArray.h"
+#include "vtkIntArray.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkTable.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkXMLUnstructuredGridWriter.h"
 
 #include "vtkCommand.h"
 #include "vtkCompositeDataSet.h"
@@ -31,6 +48,8 @@
 #include <algorithm>
 #include <atomic>
 #include <cctype>
+#include <cmath>
+#include <fstream>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
@@ -248,6 +267,8 @@ const Option NoUnstableOption{ "--no-unstable", nullptr, nullptr,
 
 int RunComplex(const Arguments& args);
 int RunInfo(const Arguments& args);
+int RunReconstruct(const Arguments& args);
+int RunDiagram(const Arguments& args);
 
 const std::vector<Command>& Commands()
 {
@@ -267,6 +288,32 @@ const std::vector<Command>& Commands()
       "merged duplicates, the perturbation applied to degenerate input, and the\n"
       "time of each phase.",
       "INPUT [options]", { NoStableOption, NoUnstableOption, QuietOption }, RunInfo },
+    { "reconstruct", "reconstruct the sampled shape, write it as .vtu",
+      "Compute the flow complex of INPUT (or read a .vtm written by 'complex'),\n"
+      "simplify it with the persistence threshold t_p, grow the flow reconstruction\n"
+      "with the reconstruction threshold t_r, and write its cells (vertices, Gabriel\n"
+      "edges, triangles, tetrahedra; cell data Step, Priority, Threshold, Extension,\n"
+      "Sponsor, NodeId, Index, CriticalValue, Multiplicity) to OUT.vtu. Every\n"
+      "reconstruction with a smaller t_r is its part with Threshold < t_r.",
+      "INPUT -o OUT.vtu [options]",
+      { { "--output", "-o", "OUT.vtu", "the unstructured grid to write (.vtu)" },
+        { "--tr", nullptr, "T", "reconstruction threshold t_r > 1, 'inf' for all steps (2)" },
+        { "--tp", nullptr, "P", "persistence threshold t_p, 0 for none (1.1)" },
+        { "--profile", nullptr, "P.csv", "write the profile of the t_r = inf run as CSV" },
+        { "--jumps", nullptr, "K", "print the K largest jumps of the profile (tracking back)" },
+        QuietOption },
+      RunReconstruct },
+    { "diagram", "write the persistence diagram of the flow complex",
+      "Compute the flow complex of INPUT (or read a .vtm written by 'complex') and\n"
+      "write the persistence diagram of its filtration (equal to the alpha-complex\n"
+      "diagram, in distances, not squared radii) to PD.csv (columns dimension,\n"
+      "birth, death; 'inf' for essential classes) or PD.vtu (TTK's layout: a segment\n"
+      "(birth, birth, 0)-(birth, death, 0) per pair, cell data PairIdentifier,\n"
+      "PairType, Persistence, Birth, IsFinite, and the diagonal). Pairs of zero\n"
+      "persistence are left out.",
+      "INPUT -o PD.csv|PD.vtu [options]",
+      { { "--output", "-o", "PD.csv", "the diagram to write (.csv or .vtu)" }, QuietOption },
+      RunDiagram },
   };
   return commands;
 }
@@ -282,7 +329,7 @@ void PrintHelp(std::ostream& os)
         "Commands:\n";
   for (const Command& command : Commands())
   {
-    os << "  " << std::left << std::setw(10) << command.Name << command.Summary << "\n";
+    os << "  " << std::left << std::setw(13) << command.Name << command.Summary << "\n";
   }
   os << "\nOptions:\n"
         "  -h, --help     show this help; 'flowrecon COMMAND --help' for a command\n"
@@ -606,6 +653,393 @@ int RunInfo(const Arguments& args)
   }
   out << "\n";
   std::cout << out.str();
+  return 0;
+}
+
+// ---------------------------------------------------------------------------
+// reconstruct and diagram.
+
+// A number option: "inf" allowed; a bad value is a usage error.
+double NumberOption(const Arguments& args, const char* name, double fallback, const char* command)
+{
+  if (!args.Has(name))
+  {
+    return fallback;
+  }
+  const std::string text = args.Values.at(name);
+  const std::string lower = Lower(text);
+  if (lower == "inf" || lower == "infinity")
+  {
+    return HUGE_VAL;
+  }
+  std::size_t used = 0;
+  double value = 0;
+  try
+  {
+    value = std::stod(text, &used);
+  }
+  catch (const std::exception&)
+  {
+    used = 0;
+  }
+  if (used == 0 || used != text.size() || std::isnan(value))
+  {
+    throw UsageError(std::string("option '") + name + "' needs a number, not '" + text + "'",
+      std::string("flowrecon ") + command + " --help");
+  }
+  return value;
+}
+
+// The output path of -o, with one of `extensions`; its directory must exist.
+std::string OutputOption(
+  const Arguments& args, const char* command, const std::vector<std::string>& extensions)
+{
+  const std::string help = std::string("flowrecon ") + command + " --help";
+  std::string list;
+  for (const std::string& e : extensions)
+  {
+    list += (list.empty() ? "" : " or ") + e;
+  }
+  if (!args.Has("--output"))
+  {
+    throw UsageError(std::string("'") + command + "' needs an output file: -o OUT" +
+        extensions.front(), help);
+  }
+  const std::string output = args.Values.at("--output");
+  if (std::find(extensions.begin(), extensions.end(), ExtensionOf(output)) == extensions.end())
+  {
+    throw UsageError(
+      "the output file must have the " + list + " extension: '" + output + "'", help);
+  }
+  const std::filesystem::path directory = std::filesystem::path(output).parent_path();
+  std::error_code error;
+  if (!directory.empty() && !std::filesystem::is_directory(directory, error))
+  {
+    throw Failure(output + ": directory '" + directory.string() + "' does not exist");
+  }
+  return output;
+}
+
+// The stored flow complex `file`, or the one computed from the point cloud.
+vtkSmartPointer<vtkMultiBlockDataSet> FlowComplexOf(
+  const std::string& file, const FlowComplexOptions& options)
+{
+  vtkSmartPointer<vtkMultiBlockDataSet> complex = LoadStoredFlowComplex(file);
+  return complex ? complex : ComputeFlowComplex(file, options);
+}
+
+bool IsSimplified(vtkMultiBlockDataSet* complex)
+{
+  auto* points = vtkPolyData::SafeDownCast(flowrecon::NamedBlock(complex, "CriticalPoints"));
+  return points && points->GetPointData()->GetArray("Cancelled");
+}
+
+// Runs `filter` (already connected) with the progress line; throws on failure.
+void RunFilter(vtkAlgorithm* filter, const std::string& input, const FlowComplexOptions& options,
+  const char* what)
+{
+  vtkNew<ProgressLine> progress;
+  progress->Label = options.Label;
+  progress->Show = !options.Quiet && isatty(2);
+  filter->AddObserver(vtkCommand::ProgressEvent, progress);
+  Messages->FirstError.clear();
+  const int ok = filter->GetExecutive()->Update();
+  progress->Finish();
+  ThrowIfInterrupted();
+  if (!ok)
+  {
+    throw Failure(input + ": " +
+      (Messages->FirstError.empty() ? std::string(what) + " failed" : Messages->FirstError));
+  }
+}
+
+// Writes `data` as VTK XML (appended raw binary, LZ4), removing it on Ctrl-C.
+template <class Writer>
+void WriteXML(vtkDataObject* data, const std::string& output)
+{
+  vtkNew<Writer> writer;
+  writer->SetFileName(output.c_str());
+  writer->SetInputData(data);
+  writer->SetDataModeToAppended();
+  writer->EncodeAppendedDataOff();
+  writer->SetCompressorTypeToLZ4();
+  vtkNew<ProgressLine> abortOnly;
+  writer->AddObserver(vtkCommand::ProgressEvent, abortOnly);
+  Messages->FirstError.clear();
+  const int written = writer->Write();
+  std::error_code error;
+  if (InterruptRequested)
+  {
+    std::filesystem::remove(output, error);
+    throw Interrupted();
+  }
+  if (!written || writer->GetErrorCode() != 0)
+  {
+    throw Failure(output + ": cannot write (" +
+      (Messages->FirstError.empty() ? std::string("unknown error") : Messages->FirstError) + ")");
+  }
+}
+
+std::ofstream OpenText(const std::string& path)
+{
+  std::ofstream out(path);
+  if (!out)
+  {
+    throw Failure(path + ": cannot write");
+  }
+  out << std::setprecision(17);
+  return out;
+}
+
+int RunReconstruct(const Arguments& args)
+{
+  const char* help = "flowrecon reconstruct --help";
+  const std::string& input = args.Inputs[0];
+  const std::string output = OutputOption(args, "reconstruct", { ".vtu" });
+  const double tr = NumberOption(args, "--tr", 2.0, "reconstruct");
+  const double tp = NumberOption(args, "--tp", 1.1, "reconstruct");
+  if (!(tr > 1))
+  {
+    throw UsageError("the reconstruction threshold --tr must be greater than 1", help);
+  }
+  if (!(tp >= 0) || std::isinf(tp))
+  {
+    throw UsageError("the persistence threshold --tp must be a finite number >= 0", help);
+  }
+  long jumps = 0;
+  if (args.Has("--jumps"))
+  {
+    const double k = NumberOption(args, "--jumps", 0, "reconstruct");
+    if (!(k >= 1) || k != std::floor(k) || std::isinf(k))
+    {
+      throw UsageError("option '--jumps' needs a positive integer", help);
+    }
+    jumps = static_cast<long>(k);
+  }
+  std::string profilePath;
+  if (args.Has("--profile"))
+  {
+    profilePath = args.Values.at("--profile");
+    const std::filesystem::path directory = std::filesystem::path(profilePath).parent_path();
+    std::error_code error;
+    if (!directory.empty() && !std::filesystem::is_directory(directory, error))
+    {
+      throw Failure(profilePath + ": directory '" + directory.string() + "' does not exist");
+    }
+  }
+
+  FlowComplexOptions options = CommonOptions(args, "reconstruct");
+  options.Unstable = false; // not needed by the reconstruction
+  vtkSmartPointer<vtkMultiBlockDataSet> complex = FlowComplexOf(input, options);
+  vtkSmartPointer<vtkMultiBlockDataSet> simplified = complex;
+  if (IsSimplified(complex))
+  {
+    if (args.Has("--tp"))
+    {
+      throw Failure(input + ": already simplified; --tp applies to a flow complex only");
+    }
+  }
+  else if (tp >= 1) // below 1 nothing is cancelled
+  {
+    vtkNew<vtkFlowComplexSimplification> simplification;
+    simplification->SetInputData(complex);
+    simplification->SetPersistenceThreshold(tp);
+    RunFilter(simplification, input, options, "simplification");
+    simplified = vtkMultiBlockDataSet::SafeDownCast(simplification->GetOutputDataObject(0));
+  }
+  vtkNew<vtkFlowReconstruction> reconstruction;
+  reconstruction->SetInputData(simplified);
+  reconstruction->SetReconstructionThreshold(tr);
+  RunFilter(reconstruction, input, options, "reconstruction");
+  auto* grid = vtkUnstructuredGrid::SafeDownCast(reconstruction->GetOutputDataObject(0));
+  auto* profile = vtkTable::SafeDownCast(reconstruction->GetOutputDataObject(1));
+  WriteXML<vtkXMLUnstructuredGridWriter>(grid, output);
+
+  const char* columns[5] = { "Step", "NodeId", "Index", "Priority", "Threshold" };
+  vtkDataArray* column[5];
+  for (int k = 0; k < 5; ++k)
+  {
+    column[k] = vtkDataArray::SafeDownCast(profile->GetColumnByName(columns[k]));
+  }
+  const vtkIdType steps = profile->GetNumberOfRows();
+  if (!profilePath.empty())
+  {
+    std::ofstream csv = OpenText(profilePath);
+    csv << "Step,NodeId,Index,Priority,Threshold\n";
+    for (vtkIdType r = 0; r < steps; ++r)
+    {
+      csv << static_cast<long long>(column[0]->GetComponent(r, 0)) << ","
+          << static_cast<long long>(column[1]->GetComponent(r, 0)) << ","
+          << static_cast<int>(column[2]->GetComponent(r, 0)) << ","
+          << column[3]->GetComponent(r, 0) << "," << column[4]->GetComponent(r, 0) << "\n";
+    }
+    if (!csv)
+    {
+      throw Failure(profilePath + ": cannot write");
+    }
+  }
+  vtkIdType kept = 0;
+  while (kept < steps && column[4]->GetComponent(kept, 0) < tr)
+  {
+    ++kept;
+  }
+  if (!options.Quiet)
+  {
+    std::cout << output << ": " << grid->GetNumberOfCells() << " cells, " << kept << " of "
+              << steps << " steps at t_r " << tr << "\n";
+  }
+  if (jumps > 0)
+  {
+    // Paper §5.2: a jump of the profile is a step whose priority exceeds all
+    // earlier ones; its node is where the sampling is poorest.
+    std::vector<std::pair<double, vtkIdType>> rises;
+    for (vtkIdType r = 1; r < steps; ++r)
+    {
+      const double rise = column[4]->GetComponent(r, 0) - column[4]->GetComponent(r - 1, 0);
+      if (rise > 0)
+      {
+        rises.emplace_back(-rise, r);
+      }
+    }
+    std::sort(rises.begin(), rises.end());
+    auto* points = vtkPolyData::SafeDownCast(flowrecon::NamedBlock(simplified, "CriticalPoints"));
+    vtkDataArray* value = points ? points->GetPointData()->GetArray("CriticalValue") : nullptr;
+    std::cout << "largest jumps of the profile (step: threshold before -> after, node, index, "
+                 "critical value, location):\n";
+    for (std::size_t j = 0; j < rises.size() && static_cast<long>(j) < jumps; ++j)
+    {
+      const vtkIdType r = rises[j].second;
+      const vtkIdType node = static_cast<vtkIdType>(column[1]->GetComponent(r, 0));
+      double x[3] = { 0, 0, 0 };
+      if (points && node < points->GetNumberOfPoints())
+      {
+        points->GetPoint(node, x); // CriticalPoints are stored in node order
+      }
+      std::cout << "  step " << r << ": " << column[4]->GetComponent(r - 1, 0) << " -> "
+                << column[4]->GetComponent(r, 0) << ", node " << node << ", index "
+                << static_cast<int>(column[2]->GetComponent(r, 0)) << ", value "
+                << (value ? value->GetComponent(node, 0) : std::nan("")) << ", at (" << x[0]
+                << ", " << x[1] << ", " << x[2] << ")\n";
+    }
+  }
+  return 0;
+}
+
+// TTK's persistence-diagram layout: pair i is the segment from point 2i =
+// (birth, birth, 0) to point 2i+1 = (birth, death, 0); essential classes end at
+// the largest finite value; a last cell is the diagonal (PairIdentifier -1).
+vtkSmartPointer<vtkUnstructuredGrid> DiagramGrid(const std::vector<flowrecon::PersistencePair>& pairs)
+{
+  double top = 0;
+  for (const auto& p : pairs)
+  {
+    top = std::max(top, std::isinf(p.DeathValue) ? p.BirthValue : p.DeathValue);
+  }
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  vtkNew<vtkIntArray> id, type, finite;
+  vtkNew<vtkDoubleArray> persistence, birth;
+  id->SetName("PairIdentifier");
+  type->SetName("PairType");
+  finite->SetName("IsFinite");
+  persistence->SetName("Persistence");
+  birth->SetName("Birth");
+  grid->AllocateExact(static_cast<vtkIdType>(pairs.size() + 1), 2);
+  auto line = [&](double b, double d) {
+    const vtkIdType ids[2] = { points->InsertNextPoint(b, b, 0), points->InsertNextPoint(b, d, 0) };
+    grid->InsertNextCell(VTK_LINE, 2, ids);
+  };
+  for (std::size_t i = 0; i < pairs.size(); ++i)
+  {
+    const auto& p = pairs[i];
+    const bool isFinite = !std::isinf(p.DeathValue);
+    const double death = isFinite ? p.DeathValue : top;
+    line(p.BirthValue, death);
+    id->InsertNextValue(static_cast<int>(i));
+    type->InsertNextValue(p.Dimension);
+    finite->InsertNextValue(isFinite ? 1 : 0);
+    persistence->InsertNextValue(death - p.BirthValue);
+    birth->InsertNextValue(p.BirthValue);
+  }
+  const vtkIdType diagonal[2] = { points->InsertNextPoint(0, 0, 0),
+    points->InsertNextPoint(top, top, 0) };
+  grid->InsertNextCell(VTK_LINE, 2, diagonal);
+  id->InsertNextValue(-1);
+  type->InsertNextValue(-1);
+  finite->InsertNextValue(0);
+  persistence->InsertNextValue(0);
+  birth->InsertNextValue(0);
+  grid->SetPoints(points);
+  for (vtkDataArray* a : std::initializer_list<vtkDataArray*>{ id, type, persistence, birth, finite })
+  {
+    grid->GetCellData()->AddArray(a);
+  }
+  return grid;
+}
+
+int RunDiagram(const Arguments& args)
+{
+  const std::string& input = args.Inputs[0];
+  const std::string output = OutputOption(args, "diagram", { ".csv", ".vtu" });
+  FlowComplexOptions options = CommonOptions(args, "diagram");
+  options.Stable = false; // nodes and arcs suffice
+  options.Unstable = false;
+  vtkSmartPointer<vtkMultiBlockDataSet> complex = FlowComplexOf(input, options);
+  if (IsSimplified(complex))
+  {
+    throw Failure(input + ": simplified; the diagram needs the flow complex itself");
+  }
+  flowrecon::FlowComplex fc;
+  std::string error;
+  if (!flowrecon::FromMultiBlock(complex, fc, error))
+  {
+    throw Failure(input + ": " + error);
+  }
+  std::vector<flowrecon::PersistencePair> pairs;
+  for (const auto& p : flowrecon::ComputePersistence(fc.Nodes, fc.Arcs))
+  {
+    if (p.DeathValue > p.BirthValue) // zero-persistence pairs carry no feature
+    {
+      pairs.push_back(p);
+    }
+  }
+  ThrowIfInterrupted();
+  if (ExtensionOf(output) == ".csv")
+  {
+    std::ofstream csv = OpenText(output);
+    csv << "dimension,birth,death\n";
+    for (const auto& p : pairs)
+    {
+      csv << p.Dimension << "," << p.BirthValue << ",";
+      if (std::isinf(p.DeathValue))
+      {
+        csv << "inf\n";
+      }
+      else
+      {
+        csv << p.DeathValue << "\n";
+      }
+    }
+    if (!csv)
+    {
+      throw Failure(output + ": cannot write");
+    }
+  }
+  else
+  {
+    WriteXML<vtkXMLUnstructuredGridWriter>(DiagramGrid(pairs), output);
+  }
+  if (!options.Quiet)
+  {
+    long count[4] = { 0, 0, 0, 0 };
+    for (const auto& p : pairs)
+    {
+      ++count[std::min(3, std::max(0, p.Dimension))];
+    }
+    std::cout << output << ": " << pairs.size() << " pairs (" << count[0] << " " << count[1]
+              << " " << count[2] << " in dimensions 0 1 2)\n";
+  }
   return 0;
 }
 

@@ -18,11 +18,15 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkTable.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstring>
+#include <functional>
+#include <unordered_map>
 
 namespace flowrecon
 {
@@ -367,6 +371,462 @@ void ToMultiBlock(const FlowComplex& fc, vtkMultiBlockDataSet* output)
   }
   AddReport(fc, blocks[0]->GetFieldData());
   AddReport(fc, output->GetFieldData());
+}
+
+namespace
+{
+
+// A one-component (or `components`) array of `n` tuples named `name`, else
+// nullptr with a one-line `error`.
+vtkDataArray* Required(vtkFieldData* data, const char* block, const char* name, int components,
+  vtkIdType n, std::string& error)
+{
+  vtkDataArray* a = data ? data->GetArray(name) : nullptr;
+  if (!a)
+  {
+    error = std::string("not a flow complex: block ") + block + " has no array " + name;
+    return nullptr;
+  }
+  if (a->GetNumberOfComponents() != components || a->GetNumberOfTuples() != n)
+  {
+    error = std::string("block ") + block + ": array " + name + " has the wrong size";
+    return nullptr;
+  }
+  return a;
+}
+
+Id IdValue(vtkDataArray* a, vtkIdType i, int component = 0)
+{
+  return static_cast<Id>(a->GetComponent(i, component));
+}
+
+// Exact coordinates as a hash key: constructed points are stored once per node,
+// so the critical point of a node is found again by its bits.
+struct PointHash
+{
+  std::size_t operator()(const Point3& p) const
+  {
+    std::size_t h = 0;
+    for (double x : p)
+    {
+      std::uint64_t bits;
+      std::memcpy(&bits, &x, sizeof bits);
+      h ^= std::hash<std::uint64_t>()(bits) + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
+    }
+    return h;
+  }
+};
+
+void ReadReport(vtkFieldData* fd, FlowComplex& fc)
+{
+  auto get = [fd](const char* name, int component, double fallback) {
+    vtkDataArray* a = fd ? fd->GetArray(name) : nullptr;
+    return a && a->GetNumberOfTuples() > 0 && component < a->GetNumberOfComponents()
+      ? a->GetComponent(0, component)
+      : fallback;
+  };
+  DegeneracyReport& r = fc.Report;
+  r.InputPoints = static_cast<Id>(get("InputPointCount", 0, double(fc.NumberOfInputPoints)));
+  r.DuplicatePoints = static_cast<Id>(get("DuplicatePointCount", 0, 0));
+  r.RightAngles = static_cast<Id>(get("RightAngleCount", 0, 0));
+  r.ApexOnSphere = static_cast<Id>(get("ApexOnSphereCount", 0, 0));
+  r.WalkTies = static_cast<Id>(get("WalkTieCount", 0, 0));
+  r.ExactFallbacks = static_cast<Id>(get("ExactFallbackCount", 0, 0));
+  r.Attempts = static_cast<int>(get("PerturbationAttempts", 0, 1));
+  r.PerturbationMagnitude = get("PerturbationMagnitude", 0, 0);
+  double* t[6] = { &fc.Time.Delaunay, &fc.Time.CriticalPoints, &fc.Time.StableManifolds,
+    &fc.Time.UnstableManifolds, &fc.Time.Assembly, &fc.Time.Total };
+  for (int k = 0; k < 6; ++k)
+  {
+    *t[k] = get("Timings", k, 0);
+  }
+}
+
+bool ReadNodes(vtkPolyData* cp, FlowComplex& fc, std::string& error)
+{
+  const char* block = "CriticalPoints";
+  const vtkIdType n = cp->GetNumberOfPoints();
+  vtkPointData* pd = cp->GetPointData();
+  vtkDataArray* nodeId = Required(pd, block, "NodeId", 1, n, error);
+  vtkDataArray* index = nodeId ? Required(pd, block, "Index", 1, n, error) : nullptr;
+  vtkDataArray* value = index ? Required(pd, block, "CriticalValue", 1, n, error) : nullptr;
+  vtkDataArray* simplex = value ? Required(pd, block, "Simplex", 4, n, error) : nullptr;
+  if (!simplex)
+  {
+    return false;
+  }
+  fc.Nodes.assign(static_cast<std::size_t>(n), Node());
+  std::vector<bool> seen(static_cast<std::size_t>(n), false);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const Id id = IdValue(nodeId, i);
+    if (id < 0 || id >= n || seen[id])
+    {
+      error = "block CriticalPoints: NodeId is not a numbering 0..n-1 of its points";
+      return false;
+    }
+    seen[id] = true;
+    Node& node = fc.Nodes[id];
+    node.Index = static_cast<int>(index->GetComponent(i, 0));
+    node.Value = value->GetComponent(i, 0);
+    cp->GetPoint(i, node.Location.data());
+    for (int k = 0; k < 4; ++k)
+    {
+      node.Simplex[k] = IdValue(simplex, i, k);
+    }
+    if (node.Index < 0 || node.Index > 3)
+    {
+      error = "block CriticalPoints: node " + std::to_string(id) + " has an index outside 0..3";
+      return false;
+    }
+    if (node.IsInfinity())
+    {
+      if (fc.InfinityNode >= 0)
+      {
+        error = "block CriticalPoints: two nodes have no simplex (maximum at infinity)";
+        return false;
+      }
+      fc.InfinityNode = id;
+    }
+  }
+  return true;
+}
+
+bool ReadArcs(vtkPolyData* hd, FlowComplex& fc, std::string& error)
+{
+  const char* block = "HasseDiagram";
+  const vtkIdType m = hd->GetNumberOfCells();
+  vtkCellData* cd = hd->GetCellData();
+  vtkDataArray* lower = Required(cd, block, "LowerNodeId", 1, m, error);
+  vtkDataArray* upper = lower ? Required(cd, block, "UpperNodeId", 1, m, error) : nullptr;
+  vtkDataArray* mult = upper ? Required(cd, block, "Multiplicity", 1, m, error) : nullptr;
+  if (!mult)
+  {
+    return false;
+  }
+  const Id n = static_cast<Id>(fc.Nodes.size());
+  fc.Arcs.resize(static_cast<std::size_t>(m));
+  for (vtkIdType c = 0; c < m; ++c)
+  {
+    Arc& a = fc.Arcs[c];
+    a.Lower = IdValue(lower, c);
+    a.Upper = IdValue(upper, c);
+    a.Multiplicity = static_cast<int>(mult->GetComponent(c, 0));
+    if (a.Lower < 0 || a.Lower >= n || a.Upper < 0 || a.Upper >= n)
+    {
+      error = "block HasseDiagram: arc " + std::to_string(c) + " names a node that does not exist";
+      return false;
+    }
+  }
+  return true;
+}
+
+bool ReadStableManifolds(vtkUnstructuredGrid* ug, FlowComplex& fc, std::string& error)
+{
+  const char* block = "StableManifolds";
+  const vtkIdType np = ug->GetNumberOfPoints();
+  fc.Points.resize(static_cast<std::size_t>(np));
+  for (vtkIdType i = 0; i < np; ++i)
+  {
+    ug->GetPoint(i, fc.Points[i].data());
+  }
+  // Input points come first; constructed points have original id -1.
+  vtkDataArray* original = ug->GetPointData()->GetArray("vtkOriginalPointIds");
+  fc.NumberOfInputPoints = np;
+  if (original && original->GetNumberOfTuples() == np)
+  {
+    fc.NumberOfInputPoints = 0;
+    while (fc.NumberOfInputPoints < np && IdValue(original, fc.NumberOfInputPoints) >= 0)
+    {
+      ++fc.NumberOfInputPoints;
+    }
+  }
+  fc.Representative.resize(static_cast<std::size_t>(fc.NumberOfInputPoints));
+  for (Id i = 0; i < fc.NumberOfInputPoints; ++i)
+  {
+    fc.Representative[i] = i;
+  }
+  const vtkIdType nc = ug->GetNumberOfCells();
+  vtkDataArray* nodeId = Required(ug->GetCellData(), block, "NodeId", 1, nc, error);
+  if (!nodeId)
+  {
+    return false;
+  }
+  const Id n = static_cast<Id>(fc.Nodes.size());
+  for (vtkIdType c = 0; c < nc; ++c)
+  {
+    const int type = ug->GetCellType(c);
+    if (type != VTK_TRIANGLE && type != VTK_TETRA)
+    {
+      continue; // vertices and edges are the nodes' simplices
+    }
+    vtkIdType npts;
+    const vtkIdType* pts;
+    ug->GetCellPoints(c, npts, pts);
+    const Id node = IdValue(nodeId, c);
+    bool ok = node >= 0 && node < n;
+    for (vtkIdType k = 0; ok && k < npts; ++k)
+    {
+      ok = pts[k] >= 0 && pts[k] < np;
+    }
+    if (!ok)
+    {
+      error = "block StableManifolds: cell " + std::to_string(c) + " has an invalid node or point";
+      return false;
+    }
+    if (type == VTK_TRIANGLE)
+    {
+      fc.Triangles.push_back({ { pts[0], pts[1], pts[2] } });
+      fc.TriangleNode.push_back(node);
+    }
+    else
+    {
+      fc.Tetrahedra.push_back({ { pts[0], pts[1], pts[2], pts[3] } });
+      fc.TetrahedronNode.push_back(node);
+    }
+  }
+  // Critical points of nodes of index >= 1 are constructed points.
+  std::unordered_map<Point3, Id, PointHash> constructed;
+  for (Id i = fc.NumberOfInputPoints; i < np; ++i)
+  {
+    constructed.emplace(fc.Points[i], i);
+  }
+  fc.NodePoint.assign(fc.Nodes.size(), -1);
+  for (Id i = 0; i < n; ++i)
+  {
+    const Node& node = fc.Nodes[i];
+    if (node.Index == 0)
+    {
+      fc.NodePoint[i] = node.Simplex[0];
+    }
+    else if (!node.IsInfinity())
+    {
+      const auto it = constructed.find(node.Location);
+      fc.NodePoint[i] = it == constructed.end() ? -1 : it->second;
+    }
+  }
+  return true;
+}
+
+void ReadFlowLines(vtkPolyData* um, FlowComplex& fc)
+{
+  vtkDataArray* nodeId = um->GetCellData()->GetArray("NodeId");
+  vtkDataArray* target = um->GetCellData()->GetArray("TargetNodeId");
+  const vtkIdType nc = um->GetNumberOfCells();
+  if (!nodeId || !target || nodeId->GetNumberOfTuples() != nc || target->GetNumberOfTuples() != nc)
+  {
+    return; // optional geometry
+  }
+  for (vtkIdType c = 0; c < nc; ++c)
+  {
+    FlowLine line;
+    line.Node = IdValue(nodeId, c);
+    line.Target = IdValue(target, c);
+    vtkIdType npts;
+    const vtkIdType* pts;
+    um->GetCellPoints(c, npts, pts);
+    for (vtkIdType k = 0; k < npts; ++k)
+    {
+      Point3 p;
+      um->GetPoint(pts[k], p.data());
+      line.Points.push_back(p);
+    }
+    fc.FlowLines.push_back(std::move(line));
+  }
+}
+
+vtkSmartPointer<vtkPolyData> PersistencePairsBlock(const FlowComplex& fc, const SimplificationResult& s)
+{
+  std::vector<Point3> pts;
+  vtkNew<vtkCellArray> lines;
+  auto ratio = NamedArray<vtkDoubleArray>("Ratio");
+  auto birth = NamedArray<vtkDoubleArray>("Birth");
+  auto death = NamedArray<vtkDoubleArray>("Death");
+  auto type = NamedArray<vtkIntArray>("PairType");
+  auto lowerId = NamedArray<vtkIdTypeArray>("LowerNodeId");
+  auto upperId = NamedArray<vtkIdTypeArray>("UpperNodeId");
+  for (const CancelledPair& p : s.Pairs)
+  {
+    const vtkIdType ids[2] = { static_cast<vtkIdType>(pts.size()),
+      static_cast<vtkIdType>(pts.size() + 1) };
+    pts.push_back(fc.Nodes[p.Lower].Location);
+    pts.push_back(fc.Nodes[p.Upper].Location);
+    lines->InsertNextCell(2, ids);
+    ratio->InsertNextValue(p.Ratio);
+    birth->InsertNextValue(p.Birth);
+    death->InsertNextValue(p.Death);
+    type->InsertNextValue(p.PairType);
+    lowerId->InsertNextValue(p.Lower);
+    upperId->InsertNextValue(p.Upper);
+  }
+  vtkNew<vtkPolyData> pd;
+  pd->SetPoints(MakePoints(pts));
+  pd->SetLines(lines);
+  for (vtkDataArray* a : { static_cast<vtkDataArray*>(ratio), static_cast<vtkDataArray*>(birth),
+         static_cast<vtkDataArray*>(death), static_cast<vtkDataArray*>(type),
+         static_cast<vtkDataArray*>(lowerId), static_cast<vtkDataArray*>(upperId) })
+  {
+    pd->GetCellData()->AddArray(a);
+  }
+  pd->GetCellData()->SetActiveScalars("Ratio");
+  return pd;
+}
+
+} // namespace
+
+vtkDataObject* NamedBlock(vtkMultiBlockDataSet* input, const char* name)
+{
+  if (!input)
+  {
+    return nullptr;
+  }
+  for (unsigned int b = 0; b < input->GetNumberOfBlocks(); ++b)
+  {
+    vtkInformation* meta = input->HasMetaData(b) ? input->GetMetaData(b) : nullptr;
+    const char* blockName = meta ? meta->Get(vtkCompositeDataSet::NAME()) : nullptr;
+    if (blockName && std::strcmp(blockName, name) == 0)
+    {
+      return input->GetBlock(b);
+    }
+  }
+  return nullptr;
+}
+
+bool FromMultiBlock(vtkMultiBlockDataSet* input, FlowComplex& fc, std::string& error)
+{
+  fc = FlowComplex();
+  auto* cp = vtkPolyData::SafeDownCast(NamedBlock(input, "CriticalPoints"));
+  auto* hd = vtkPolyData::SafeDownCast(NamedBlock(input, "HasseDiagram"));
+  auto* sm = vtkUnstructuredGrid::SafeDownCast(NamedBlock(input, "StableManifolds"));
+  if (!cp || !hd || !sm)
+  {
+    error = "not a flow complex: the blocks CriticalPoints (vtkPolyData), HasseDiagram "
+            "(vtkPolyData) and StableManifolds (vtkUnstructuredGrid) are required";
+    return false;
+  }
+  if (!ReadNodes(cp, fc, error) || !ReadArcs(hd, fc, error) ||
+    !ReadStableManifolds(sm, fc, error))
+  {
+    fc = FlowComplex();
+    return false;
+  }
+  if (auto* um = vtkPolyData::SafeDownCast(NamedBlock(input, "UnstableManifolds")))
+  {
+    ReadFlowLines(um, fc);
+  }
+  ReadReport(cp->GetFieldData(), fc);
+  return true;
+}
+
+void AddSimplification(const FlowComplex& fc, const SimplificationResult& s, double threshold,
+  vtkMultiBlockDataSet* output)
+{
+  auto* cp = vtkPolyData::SafeDownCast(NamedBlock(output, "CriticalPoints"));
+  auto* sm = vtkUnstructuredGrid::SafeDownCast(NamedBlock(output, "StableManifolds"));
+  if (cp)
+  {
+    vtkDataArray* nodeId = cp->GetPointData()->GetArray("NodeId");
+    auto cancelled = NamedArray<vtkUnsignedCharArray>("Cancelled");
+    cancelled->SetNumberOfTuples(cp->GetNumberOfPoints());
+    for (vtkIdType i = 0; i < cp->GetNumberOfPoints(); ++i)
+    {
+      cancelled->SetValue(i, s.Survives[IdValue(nodeId, i)] ? 0 : 1);
+    }
+    cp->GetPointData()->AddArray(cancelled);
+  }
+  if (sm)
+  {
+    vtkDataArray* nodeId = sm->GetCellData()->GetArray("NodeId");
+    auto owner = NamedArray<vtkIdTypeArray>("Owner");
+    owner->SetNumberOfTuples(sm->GetNumberOfCells());
+    for (vtkIdType c = 0; c < sm->GetNumberOfCells(); ++c)
+    {
+      const Id node = IdValue(nodeId, c);
+      const bool none = s.OwnersBegin(node) == s.OwnersEnd(node);
+      owner->SetValue(c, s.Survives[node] ? node : (none ? -1 : *s.OwnersBegin(node)));
+    }
+    sm->GetCellData()->AddArray(owner);
+  }
+  auto offsets = NamedArray<vtkIdTypeArray>("OwnerOffsets");
+  for (Id o : s.OwnerOffsets)
+  {
+    offsets->InsertNextValue(o);
+  }
+  auto owners = NamedArray<vtkIdTypeArray>("Owners");
+  for (Id o : s.Owners)
+  {
+    owners->InsertNextValue(o);
+  }
+  auto tp = NamedArray<vtkDoubleArray>("PersistenceThreshold");
+  tp->InsertNextValue(threshold);
+  auto pairs = NamedArray<vtkIdTypeArray>("CancelledPairCount");
+  pairs->InsertNextValue(static_cast<vtkIdType>(s.Pairs.size()));
+  for (vtkFieldData* fd : { cp ? cp->GetFieldData() : nullptr, output->GetFieldData() })
+  {
+    if (fd)
+    {
+      fd->AddArray(offsets);
+      fd->AddArray(owners);
+      fd->AddArray(tp);
+      fd->AddArray(pairs);
+    }
+  }
+  const unsigned int b = output->GetNumberOfBlocks();
+  output->SetNumberOfBlocks(b + 1);
+  output->SetBlock(b, PersistencePairsBlock(fc, s));
+  output->GetMetaData(b)->Set(vtkCompositeDataSet::NAME(), "PersistencePairs");
+}
+
+bool SimplificationFromMultiBlock(vtkMultiBlockDataSet* input, Id nodeCount,
+  SimplificationResult& s, std::string& error)
+{
+  s = SimplificationResult();
+  s.Survives.assign(static_cast<std::size_t>(nodeCount), true);
+  s.OwnerOffsets.assign(static_cast<std::size_t>(nodeCount + 1), 0);
+  error.clear();
+  auto* cp = vtkPolyData::SafeDownCast(NamedBlock(input, "CriticalPoints"));
+  vtkDataArray* cancelled = cp ? cp->GetPointData()->GetArray("Cancelled") : nullptr;
+  if (!cancelled)
+  {
+    return false;
+  }
+  const char* block = "CriticalPoints";
+  vtkDataArray* nodeId = Required(cp->GetPointData(), block, "NodeId", 1, nodeCount, error);
+  vtkDataArray* offsets = nodeId
+    ? Required(cp->GetFieldData(), block, "OwnerOffsets", 1, nodeCount + 1, error)
+    : nullptr;
+  vtkDataArray* owners = cp->GetFieldData()->GetArray("Owners");
+  if (!offsets || !owners || cancelled->GetNumberOfTuples() != nodeCount)
+  {
+    error = error.empty() ? "block CriticalPoints: the simplification arrays are incomplete" : error;
+    return false;
+  }
+  for (vtkIdType i = 0; i < nodeCount; ++i)
+  {
+    s.Survives[IdValue(nodeId, i)] = cancelled->GetComponent(i, 0) == 0;
+    s.OwnerOffsets[i + 1] = IdValue(offsets, i + 1);
+    if (s.OwnerOffsets[i + 1] < s.OwnerOffsets[i])
+    {
+      error = "block CriticalPoints: OwnerOffsets is not increasing";
+      return false;
+    }
+  }
+  if (s.OwnerOffsets[0] != 0 || s.OwnerOffsets.back() != owners->GetNumberOfTuples())
+  {
+    error = "block CriticalPoints: OwnerOffsets does not match Owners";
+    return false;
+  }
+  s.Owners.resize(static_cast<std::size_t>(owners->GetNumberOfTuples()));
+  for (vtkIdType k = 0; k < owners->GetNumberOfTuples(); ++k)
+  {
+    s.Owners[k] = IdValue(owners, k);
+    if (s.Owners[k] < 0 || s.Owners[k] >= nodeCount)
+    {
+      error = "block CriticalPoints: Owners names a node that does not exist";
+      return false;
+    }
+  }
+  return true;
 }
 
 } // namespace flowrecon

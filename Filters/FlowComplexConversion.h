@@ -3,7 +3,8 @@
 #ifndef FlowComplexConversion_h
 #define FlowComplexConversion_h
 
-#include "FlowComplex.h" // core data structure
+#include "FlowComplex.h"    // core data structure
+#include "Simplification.h" // core data structure
 
 #include <string>
 #include <vector>
@@ -26,6 +27,34 @@ void ToMultiBlock(const FlowComplex& fc, vtkMultiBlockDataSet* output);
 
 /// The report arrays (NodeCountByIndex, EulerCharacteristic, ..., Timings).
 void AddReport(const FlowComplex& fc, vtkFieldData* fd);
+
+/// The inverse of ToMultiBlock, enough for a round trip through a .vtm file:
+/// nodes (CriticalPoints in NodeId order: Index, CriticalValue, Simplex, point
+/// coordinates as Location), arcs (HasseDiagram cell data LowerNodeId,
+/// UpperNodeId, Multiplicity), InfinityNode (the node with a negative simplex),
+/// manifold geometry (StableManifolds points, triangles and tetrahedra with
+/// NodeId; UnstableManifolds polylines) and the report arrays. The arcs are the
+/// ones stored, i.e. the simplified ones for a simplified complex. Returns false
+/// and sets `error` (one line) when a block or an array is missing or invalid.
+bool FromMultiBlock(vtkMultiBlockDataSet* input, FlowComplex& fc, std::string& error);
+
+/// What vtkFlowComplexSimplification adds to a flow complex: the point array
+/// `Cancelled` of CriticalPoints, the field arrays `OwnerOffsets`, `Owners`
+/// (SimplificationResult's compressed rows) and `PersistenceThreshold` of
+/// CriticalPoints and of the output, the cell array `Owner` of StableManifolds
+/// (the node itself for survivors, the first owner of a cancelled node, -1 for
+/// none) and the block `PersistencePairs`.
+void AddSimplification(const FlowComplex& fc, const SimplificationResult& s, double threshold,
+  vtkMultiBlockDataSet* output);
+
+/// Reads back what AddSimplification stored. Returns false (with `error` empty)
+/// when `input` is not simplified: then every node survives and owns nothing.
+/// Returns false with `error` set when the stored arrays are inconsistent.
+bool SimplificationFromMultiBlock(vtkMultiBlockDataSet* input, Id nodeCount,
+  SimplificationResult& s, std::string& error);
+
+/// The block named `name` of `input`, or nullptr.
+vtkDataObject* NamedBlock(vtkMultiBlockDataSet* input, const char* name);
 
 } // namespace flowrecon
 

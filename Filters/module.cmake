@@ -4,6 +4,8 @@ set(_flowrecon_filters_dir "${CMAKE_CURRENT_LIST_DIR}")
 vtk_module_add_module(FlowRecon::Filters
   CLASSES
     ${_flowrecon_filters_dir}/vtkFlowComplex
+    ${_flowrecon_filters_dir}/vtkFlowComplexSimplification
+    ${_flowrecon_filters_dir}/vtkFlowReconstruction
     ${_flowrecon_filters_dir}/vtkPointCloudReader
   PRIVATE_HEADERS
     ${_flowrecon_filters_dir}/FlowComplexConversion.h

@@ -13,7 +13,7 @@ Id CriticalSimplices::FindEdge(Id u, Id v) const
   const Id a = std::min(u, v), b = std::max(u, v);
   const auto first = this->Neighbours.begin() + this->Offsets[a];
   const auto last = this->Neighbours.begin() + this->Offsets[a + 1];
-  const auto it = std::lower_bound(first, last, b);
+  const auto it = std::lower_bound(first, last, static_cast<std::int32_t>(b));
   return (it != last && *it == b) ? this->GabrielIndex[it - this->Neighbours.begin()] : -1;
 }
 
@@ -73,7 +73,7 @@ CriticalSimplices FindCriticalSimplices(const Triangulation& tri, const Progress
         }
         else
         {
-          cs.Neighbours[fill[u]++] = v;
+          cs.Neighbours[fill[u]++] = static_cast<std::int32_t>(v);
         }
       }
     }
@@ -100,7 +100,9 @@ CriticalSimplices FindCriticalSimplices(const Triangulation& tri, const Progress
       std::swap(u, v);
     }
     const auto first = cs.Neighbours.begin() + cs.Offsets[u];
-    return std::lower_bound(first, cs.Neighbours.begin() + cs.Offsets[u + 1], v) - cs.Neighbours.begin();
+    return std::lower_bound(first, cs.Neighbours.begin() + cs.Offsets[u + 1],
+             static_cast<std::int32_t>(v)) -
+      cs.Neighbours.begin();
   };
   std::vector<char> gabrielEdge(cs.Neighbours.size(), 1);
 
@@ -173,7 +175,7 @@ CriticalSimplices FindCriticalSimplices(const Triangulation& tri, const Progress
     {
       if (gabrielEdge[k])
       {
-        cs.GabrielIndex[k] = static_cast<Id>(cs.Edges.size());
+        cs.GabrielIndex[k] = static_cast<std::int32_t>(cs.Edges.size());
         cs.Edges.push_back({ { u, cs.Neighbours[k] } });
       }
     }

@@ -9,6 +9,7 @@
 #include "Triangulation.h"
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
 namespace flowrecon
@@ -28,7 +29,8 @@ struct CriticalSimplices
   /// All Delaunay edges (u < v) as adjacency lists: the v of vertex u are
   /// Neighbours[Offsets[u] .. Offsets[u+1]), sorted; GabrielIndex gives the
   /// position of that edge in Edges, or -1.
-  std::vector<Id> Offsets, Neighbours, GabrielIndex;
+  std::vector<Id> Offsets;
+  std::vector<std::int32_t> Neighbours, GabrielIndex; // 32-bit: the largest table here
 
   /// Position of Gabriel edge (u, v) in Edges, or -1 if uv is not Gabriel.
   Id FindEdge(Id u, Id v) const;

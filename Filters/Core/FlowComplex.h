@@ -16,13 +16,16 @@ namespace flowrecon
 using Id = std::int64_t;
 using Point3 = std::array<double, 3>;
 
-/// A critical point of d_P, i.e. a node of the Hasse diagram.
+/// A critical point of d_P, i.e. a node of the Hasse diagram. Ids are 32-bit in
+/// the stored structures (nodes, arcs): the flow complex of a cloud has about 11
+/// nodes and 35 arcs per point, so this halves its memory; the builder refuses
+/// clouds whose complex would not fit (about 190 million points).
 struct Node
 {
-  int Index = 0;                  ///< 0..3; the maximum at infinity has index 3
   double Value = 0;               ///< d_P at the critical point (+inf for infinity)
   Point3 Location{ { 0, 0, 0 } }; ///< the critical point (for infinity: bounding-box centre)
-  std::array<Id, 4> Simplex{ { -1, -1, -1, -1 } }; ///< sorted input ids of N(x), -1 padded
+  std::array<std::int32_t, 4> Simplex{ { -1, -1, -1, -1 } }; ///< sorted input ids of N(x), -1 padded
+  int Index = 0;                  ///< 0..3; the maximum at infinity has index 3
   bool IsInfinity() const { return Simplex[0] < 0; }
 };
 
@@ -32,9 +35,17 @@ struct Node
 /// 2->3 arcs how many of the two unstable flow lines reach the maximum.
 struct Arc
 {
-  Id Lower = -1;
-  Id Upper = -1;
-  int Multiplicity = 1;
+  std::int32_t Lower = -1;
+  std::int32_t Upper = -1;
+  std::int32_t Multiplicity = 1;
+
+  Arc() = default;
+  Arc(Id lower, Id upper, Id multiplicity)
+    : Lower(static_cast<std::int32_t>(lower))
+    , Upper(static_cast<std::int32_t>(upper))
+    , Multiplicity(static_cast<std::int32_t>(multiplicity))
+  {
+  }
 };
 
 /// One unstable flow line of an index-2 point, from the point to a maximum.
@@ -79,7 +90,8 @@ struct FlowComplex
   /// index, in a deterministic order that follows the samples along a Hilbert curve.
   std::vector<Node> Nodes;
   Id InfinityNode = -1;
-  /// Point id (into Points) of each node's critical point; -1 for infinity.
+  /// Point id (into Points) of each node's critical point (-1 for index 1 and
+  /// infinity); empty when the stable-manifold geometry was not computed.
   std::vector<Id> NodePoint;
   /// Arcs: 0->1 arcs first, then 1->2, then 2->3, each group in node order
   /// (deterministic); one entry per pair of nodes.

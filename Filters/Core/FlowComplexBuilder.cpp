@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -142,10 +143,27 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
   const Id nEdges = static_cast<Id>(cs.Edges.size()), nFacets = static_cast<Id>(cs.Facets.size());
   const Id base1 = m, base2 = base1 + nEdges, base3 = base2 + nFacets;
   fc.InfinityNode = base3 + static_cast<Id>(cs.Cells.size());
-  fc.NodePoint.assign(static_cast<std::size_t>(fc.InfinityNode + 1), -1);
-  for (Id k = 0; k < m; ++k)
+  if (fc.InfinityNode >= std::numeric_limits<std::int32_t>::max())
   {
-    fc.NodePoint[k] = this->In.InputId[k];
+    throw InputError("the flow complex of this many points exceeds 2^31 nodes");
+  }
+  fc.NodePoint.clear();
+  if (this->Options.StableManifolds)
+  {
+    fc.NodePoint.assign(static_cast<std::size_t>(fc.InfinityNode + 1), -1);
+    for (Id k = 0; k < m; ++k)
+    {
+      fc.NodePoint[k] = this->In.InputId[k];
+    }
+  }
+  // Arcs grouped by the index of their lower node: 0->1 now, 1->2 from the
+  // patches, 2->3 from the flow lines.
+  fc.Arcs.clear();
+  fc.Arcs.reserve(static_cast<std::size_t>(2 * nEdges + 5 * nFacets));
+  for (Id i = 0; i < nEdges; ++i)
+  {
+    fc.Arcs.emplace_back(cs.Edges[i][0], base1 + i, 1);
+    fc.Arcs.emplace_back(cs.Edges[i][1], base1 + i, 1);
   }
   fc.Time.CriticalPoints = Seconds(t);
 
@@ -155,8 +173,6 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
   fc.NumberOfInputPoints = static_cast<Id>(this->Input.size());
   fc.Triangles.clear();
   fc.TriangleNode.clear();
-  std::vector<Arc> arcs12;
-  arcs12.reserve(static_cast<std::size_t>(3 * nFacets));
   std::vector<Id> triangleBegin(cs.Facets.size() + 1, 0);
   const double nf = static_cast<double>(nFacets) + 1;
   // Patches are independent: compute them in parallel, chunk by chunk, and merge
@@ -203,7 +219,7 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
         {
           ++l;
         }
-        arcs12.push_back({ base1 + patch.Arrivals[k], node, static_cast<int>(l - k) });
+        fc.Arcs.emplace_back(base1 + patch.Arrivals[k], node, static_cast<Id>(l - k));
         k = l;
       }
       triangleBegin[i] = static_cast<Id>(fc.Triangles.size());
@@ -366,27 +382,17 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
     fc.Nodes.push_back(inf);
   }
 
-  // Arcs grouped by the index of their lower node: 0->1, 1->2, 2->3.
-  fc.Arcs.clear();
-  fc.Arcs.reserve(static_cast<std::size_t>(2 * nEdges + 2 * nFacets) + arcs12.size());
-  for (Id i = 0; i < nEdges; ++i)
-  {
-    fc.Arcs.push_back({ cs.Edges[i][0], base1 + i, 1 });
-    fc.Arcs.push_back({ cs.Edges[i][1], base1 + i, 1 });
-  }
-  fc.Arcs.insert(fc.Arcs.end(), arcs12.begin(), arcs12.end());
-  std::vector<Arc>().swap(arcs12);
   for (std::size_t i = 0; i < ends.size(); ++i)
   {
     const Id node = base2 + static_cast<Id>(i);
     if (ends[i][0] == ends[i][1])
     {
-      fc.Arcs.push_back({ node, ends[i][0], 2 });
+      fc.Arcs.emplace_back(node, ends[i][0], 2);
     }
     else
     {
-      fc.Arcs.push_back({ node, ends[i][0], 1 });
-      fc.Arcs.push_back({ node, ends[i][1], 1 });
+      fc.Arcs.emplace_back(node, ends[i][0], 1);
+      fc.Arcs.emplace_back(node, ends[i][1], 1);
     }
   }
   // Values increase strictly along arcs in exact arithmetic, but a perturbed

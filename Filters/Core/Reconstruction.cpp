@@ -343,7 +343,7 @@ std::vector<Id> NearestNeighboursFromDiagram(
       e[1] = a.Lower;
     }
     Id& s = shortest[a.Lower];
-    if (s < 0 || std::make_pair(nodes[a.Upper].Value, a.Upper) < std::make_pair(nodes[s].Value, s))
+    if (s < 0 || std::make_pair(nodes[a.Upper].Value, static_cast<Id>(a.Upper)) < std::make_pair(nodes[s].Value, s))
     {
       s = a.Upper;
     }

@@ -23,7 +23,10 @@ inline Node MakeNode(int index, double value, std::array<Id, 4> simplex)
   Node n;
   n.Index = index;
   n.Value = value;
-  n.Simplex = simplex;
+  for (int k = 0; k < 4; ++k)
+  {
+    n.Simplex[k] = static_cast<std::int32_t>(simplex[k]);
+  }
   return n;
 }
 

@@ -1,0 +1,93 @@
+#include "vtkFlowComplexSimplification.h"
+
+#include "FlowComplexConversion.h"
+#include "Simplification.h"
+
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkMultiBlockDataSet.h"
+#include "vtkObjectFactory.h"
+
+#include <string>
+
+vtkStandardNewMacro(vtkFlowComplexSimplification);
+
+//------------------------------------------------------------------------------
+vtkFlowComplexSimplification::vtkFlowComplexSimplification() = default;
+vtkFlowComplexSimplification::~vtkFlowComplexSimplification() = default;
+
+//------------------------------------------------------------------------------
+int vtkFlowComplexSimplification::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkMultiBlockDataSet");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkFlowComplexSimplification::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkMultiBlockDataSet* input = vtkMultiBlockDataSet::GetData(inputVector[0], 0);
+  vtkMultiBlockDataSet* output = vtkMultiBlockDataSet::GetData(outputVector, 0);
+  if (!input || !output)
+  {
+    vtkErrorMacro("Missing input or output.");
+    return 0;
+  }
+  flowrecon::FlowComplex fc;
+  flowrecon::SimplificationResult previous;
+  std::string error;
+  if (!flowrecon::FromMultiBlock(input, fc, error))
+  {
+    vtkErrorMacro(<< error);
+    return 0;
+  }
+  if (flowrecon::SimplificationFromMultiBlock(
+        input, static_cast<flowrecon::Id>(fc.Nodes.size()), previous, error) ||
+    !error.empty())
+  {
+    vtkErrorMacro(<< (error.empty() ? std::string("the input is already simplified; simplify the "
+                                                  "flow complex itself instead")
+                                    : error));
+    return 0;
+  }
+
+  flowrecon::Progress progress;
+  progress.Report = [this](double fraction, const char* phase) {
+    this->SetProgressText(phase);
+    this->UpdateProgress(fraction);
+  };
+  progress.ShouldAbort = [this]() { return this->GetAbortExecute() != 0; };
+  try
+  {
+    const flowrecon::SimplificationResult s =
+      flowrecon::Simplify(fc.Nodes, fc.Arcs, this->PersistenceThreshold, progress);
+    fc.Arcs = s.Arcs; // the HasseDiagram block shows the simplified diagram
+    flowrecon::ToMultiBlock(fc, output);
+    flowrecon::AddSimplification(fc, s, this->PersistenceThreshold, output);
+  }
+  catch (const flowrecon::InputError& e)
+  {
+    vtkErrorMacro(<< e.what());
+    return 0;
+  }
+  catch (const flowrecon::Aborted&)
+  {
+    output->Initialize();
+    return 1; // an abort is not an error; the pipeline reports it
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro(<< "simplification failed: " << e.what());
+    return 0;
+  }
+  this->SetProgressText(nullptr);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkFlowComplexSimplification::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "PersistenceThreshold: " << this->PersistenceThreshold << "\n";
+}

@@ -1,0 +1,75 @@
+/**
+ * @class   vtkFlowComplexSimplification
+ * @brief   Persistence-guided simplification of a flow complex (paper §3.3).
+ *
+ * Input: the multiblock of vtkFlowComplex (or the same read back from a .vtm).
+ * Pairs (a, b) of incident critical points are cancelled in order of increasing
+ * ratio V(b)/V(a) while that ratio does not exceed PersistenceThreshold (t_p);
+ * the new arcs are In(b) x Out(a) counted modulo 2, and the stable manifolds of
+ * the cancelled nodes go to the nodes of Out(a) (flowrecon::Simplify).
+ *
+ * Output: the same data contract as vtkFlowComplex, so that
+ * vtkFlowReconstruction and saved files accept either:
+ * - `CriticalPoints` keeps every node, with its original `NodeId` (later stages
+ *   and the persistence pairs refer to original ids), plus the point array
+ *   `Cancelled` (1 for the nodes of a cancelled pair). Its field data holds
+ *   `OwnerOffsets` and `Owners`: compressed rows listing, for each cancelled
+ *   node, the surviving nodes its stable manifold went to.
+ * - `HasseDiagram` holds the simplified arcs.
+ * - `StableManifolds` keeps every cell with `NodeId` = the node whose manifold
+ *   it is, plus the cell array `Owner`: the node itself if it survives, else
+ *   its first (smallest-id) owner, -1 when it has none. This keeps the geometry
+ *   traceable to the original critical points while colouring by `Owner` shows
+ *   the simplified cells; the complete owner lists are in the field data.
+ * - `UnstableManifolds` unchanged.
+ * - `PersistencePairs` (vtkPolyData): one line per cancelled pair from the
+ *   lower to the upper critical point, in cancellation order, cell data
+ *   `Ratio`, `Birth`, `Death`, `PairType` (index of the lower node),
+ *   `LowerNodeId`, `UpperNodeId`.
+ * Field data (output and CriticalPoints): the flow-complex report plus
+ * `PersistenceThreshold` and `CancelledPairCount`.
+ *
+ * An input that is already simplified is rejected: simplify the flow complex
+ * itself with the larger threshold instead.
+ */
+#ifndef vtkFlowComplexSimplification_h
+#define vtkFlowComplexSimplification_h
+
+#include "FlowReconFiltersModule.h" // for export macro
+#include "vtkMultiBlockDataSetAlgorithm.h"
+
+class FLOWRECONFILTERS_EXPORT vtkFlowComplexSimplification : public vtkMultiBlockDataSetAlgorithm
+{
+public:
+  static vtkFlowComplexSimplification* New();
+  vtkTypeMacro(vtkFlowComplexSimplification, vtkMultiBlockDataSetAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * The persistence threshold t_p: pairs with ratio V(b)/V(a) <= t_p are
+   * cancelled. Ratios are at least 1, so any value below 1 (0 in particular)
+   * cancels nothing. The paper finds t_p in [1.02, 1.2] useful. Default 1.1.
+   */
+  vtkSetClampMacro(PersistenceThreshold, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(PersistenceThreshold, double);
+  ///@}
+
+  /// Name of the block this filter adds.
+  static const char* PersistencePairsBlockName() { return "PersistencePairs"; }
+
+protected:
+  vtkFlowComplexSimplification();
+  ~vtkFlowComplexSimplification() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  double PersistenceThreshold = 1.1;
+
+private:
+  vtkFlowComplexSimplification(const vtkFlowComplexSimplification&) = delete;
+  void operator=(const vtkFlowComplexSimplification&) = delete;
+};
+
+#endif

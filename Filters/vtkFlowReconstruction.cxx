@@ -1,0 +1,362 @@
+#include "vtkFlowReconstruction.h"
+
+#include "FlowComplexConversion.h"
+#include "Reconstruction.h"
+#include "Simplification.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkCellType.h"
+#include "vtkDoubleArray.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkIntArray.h"
+#include "vtkMultiBlockDataSet.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkTable.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <utility>
+
+using flowrecon::Id;
+
+/// The t_r = infinity run of one input and what the outputs need from it.
+struct vtkFlowReconstruction::Cache
+{
+  vtkMTimeType InputTime = 0;
+  flowrecon::FlowComplex FC;
+  flowrecon::ReconstructionResult Run;
+  /// Node whose insertion brings each node's cells: itself, the earliest
+  /// reconstructed owner of a cancelled node, or -1.
+  std::vector<Id> Carrier;
+  /// Triangles and tetrahedra of each node (compressed rows of cell positions).
+  std::vector<Id> TriangleOffsets, TriangleList, TetraOffsets, TetraList;
+};
+
+namespace
+{
+
+void GroupByNode(const std::vector<Id>& cellNode, std::size_t nodes, std::vector<Id>& offsets,
+  std::vector<Id>& list)
+{
+  offsets.assign(nodes + 1, 0);
+  for (Id node : cellNode)
+  {
+    ++offsets[node + 1];
+  }
+  for (std::size_t i = 0; i < nodes; ++i)
+  {
+    offsets[i + 1] += offsets[i];
+  }
+  list.resize(cellNode.size());
+  std::vector<Id> next(offsets.begin(), offsets.end() - 1);
+  for (std::size_t c = 0; c < cellNode.size(); ++c)
+  {
+    list[next[cellNode[c]]++] = static_cast<Id>(c);
+  }
+}
+
+template <class A>
+vtkSmartPointer<A> Named(const char* name)
+{
+  auto a = vtkSmartPointer<A>::New();
+  a->SetName(name);
+  return a;
+}
+
+} // namespace
+
+vtkStandardNewMacro(vtkFlowReconstruction);
+
+//------------------------------------------------------------------------------
+vtkFlowReconstruction::vtkFlowReconstruction()
+{
+  this->SetNumberOfOutputPorts(3);
+}
+
+//------------------------------------------------------------------------------
+vtkFlowReconstruction::~vtkFlowReconstruction() = default;
+
+//------------------------------------------------------------------------------
+int vtkFlowReconstruction::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkMultiBlockDataSet");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkFlowReconstruction::FillOutputPortInformation(int port, vtkInformation* info)
+{
+  const char* types[3] = { "vtkUnstructuredGrid", "vtkTable", "vtkPolyData" };
+  if (port < 0 || port > 2)
+  {
+    return 0;
+  }
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), types[port]);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkFlowReconstruction::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkMultiBlockDataSet* input = vtkMultiBlockDataSet::GetData(inputVector[0], 0);
+  auto* grid = vtkUnstructuredGrid::GetData(outputVector, RECONSTRUCTION);
+  auto* profile = vtkTable::GetData(outputVector, PROFILE);
+  auto* arrows = vtkPolyData::GetData(outputVector, SPONSOR_ARROWS);
+  if (!input || !grid || !profile || !arrows)
+  {
+    vtkErrorMacro("Missing input or output.");
+    return 0;
+  }
+
+  // The queue runs only for a new input; a new threshold only re-selects.
+  if (!this->Cached || this->Cached->InputTime != input->GetMTime())
+  {
+    this->Cached.reset();
+    auto cache = std::unique_ptr<Cache>(new Cache);
+    cache->InputTime = input->GetMTime();
+    flowrecon::SimplificationResult s;
+    std::string error;
+    if (!flowrecon::FromMultiBlock(input, cache->FC, error) ||
+      (!flowrecon::SimplificationFromMultiBlock(
+         input, static_cast<Id>(cache->FC.Nodes.size()), s, error) &&
+        !error.empty()))
+    {
+      vtkErrorMacro(<< error);
+      return 0;
+    }
+    const auto& nodes = cache->FC.Nodes;
+    flowrecon::Progress progress;
+    progress.Report = [this](double fraction, const char* phase) {
+      this->SetProgressText(phase);
+      this->UpdateProgress(0.9 * fraction);
+    };
+    progress.ShouldAbort = [this]() { return this->GetAbortExecute() != 0; };
+    try
+    {
+      const std::vector<Id> init = flowrecon::InitializationEdges(
+        nodes, flowrecon::NearestNeighboursFromDiagram(nodes, cache->FC.Arcs));
+      ++this->NumberOfQueueRuns;
+      cache->Run =
+        flowrecon::Reconstruct(nodes, cache->FC.Arcs, s.Survives, init, HUGE_VAL, progress);
+    }
+    catch (const flowrecon::InputError& e)
+    {
+      vtkErrorMacro(<< e.what());
+      return 0;
+    }
+    catch (const flowrecon::Aborted&)
+    {
+      grid->Initialize();
+      profile->Initialize();
+      arrows->Initialize();
+      return 1; // an abort is not an error; nothing is cached
+    }
+    catch (const std::exception& e)
+    {
+      vtkErrorMacro(<< "reconstruction failed: " << e.what());
+      return 0;
+    }
+    const auto& steps = cache->Run.Nodes;
+    cache->Carrier.assign(nodes.size(), -1);
+    for (std::size_t i = 0; i < nodes.size(); ++i)
+    {
+      if (s.Survives[i])
+      {
+        cache->Carrier[i] = steps[i].Step >= 0 ? static_cast<Id>(i) : -1;
+        continue;
+      }
+      for (const Id* o = s.OwnersBegin(i); o != s.OwnersEnd(i); ++o)
+      {
+        const Id c = cache->Carrier[i];
+        if (steps[*o].Step >= 0 && (c < 0 || steps[*o].Step < steps[c].Step))
+        {
+          cache->Carrier[i] = *o;
+        }
+      }
+    }
+    GroupByNode(cache->FC.TriangleNode, nodes.size(), cache->TriangleOffsets, cache->TriangleList);
+    GroupByNode(cache->FC.TetrahedronNode, nodes.size(), cache->TetraOffsets, cache->TetraList);
+    this->Cached = std::move(cache);
+  }
+
+  const Cache& c = *this->Cached;
+  const flowrecon::FlowComplex& fc = c.FC;
+  const auto& steps = c.Run.Nodes;
+  const double t =
+    this->ReconstructionThreshold >= VTK_DOUBLE_MAX ? HUGE_VAL : this->ReconstructionThreshold;
+  this->SetProgressText("output");
+  this->UpdateProgress(0.9);
+
+  // Nodes whose cells are in the reconstruction at t, in insertion order.
+  std::vector<std::pair<Id, Id>> selected; // (step of the carrier, node)
+  for (std::size_t i = 0; i < fc.Nodes.size(); ++i)
+  {
+    const Id carrier = c.Carrier[i];
+    if (carrier >= 0 && c.Run.Contains(carrier, t))
+    {
+      selected.emplace_back(steps[carrier].Step, static_cast<Id>(i));
+    }
+  }
+  std::sort(selected.begin(), selected.end());
+  const std::vector<int> multiplicity =
+    flowrecon::EdgeMultiplicities(fc.Nodes, fc.Arcs, c.Run, t);
+
+  // Port 0: the cells.
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(fc.Points.size()));
+  auto original = Named<vtkIdTypeArray>("vtkOriginalPointIds");
+  original->SetNumberOfTuples(static_cast<vtkIdType>(fc.Points.size()));
+  for (std::size_t i = 0; i < fc.Points.size(); ++i)
+  {
+    points->SetPoint(static_cast<vtkIdType>(i), fc.Points[i].data());
+    original->SetValue(static_cast<vtkIdType>(i),
+      static_cast<Id>(i) < fc.NumberOfInputPoints ? static_cast<vtkIdType>(i) : -1);
+  }
+  grid->Initialize();
+  grid->SetPoints(points);
+  grid->GetPointData()->AddArray(original);
+  auto nodeId = Named<vtkIdTypeArray>("NodeId");
+  auto index = Named<vtkIntArray>("Index");
+  auto value = Named<vtkDoubleArray>("CriticalValue");
+  auto step = Named<vtkIdTypeArray>("Step");
+  auto priority = Named<vtkDoubleArray>("Priority");
+  auto threshold = Named<vtkDoubleArray>("Threshold");
+  auto extension = Named<vtkIntArray>("Extension");
+  auto sponsor = Named<vtkIdTypeArray>("Sponsor");
+  auto owner = Named<vtkIdTypeArray>("Owner");
+  auto mult = Named<vtkIntArray>("Multiplicity");
+  grid->AllocateEstimate(static_cast<vtkIdType>(selected.size()), 3);
+  auto add = [&](int type, int n, const vtkIdType* ids, Id node) {
+    const Id carrier = c.Carrier[node];
+    const flowrecon::Insertion& in = steps[carrier];
+    grid->InsertNextCell(type, n, ids);
+    nodeId->InsertNextValue(node);
+    index->InsertNextValue(fc.Nodes[node].Index);
+    value->InsertNextValue(fc.Nodes[node].Value);
+    step->InsertNextValue(in.Step);
+    priority->InsertNextValue(in.Priority);
+    threshold->InsertNextValue(in.Threshold);
+    extension->InsertNextValue(static_cast<int>(in.Kind));
+    sponsor->InsertNextValue(in.Sponsor);
+    owner->InsertNextValue(carrier);
+    mult->InsertNextValue(fc.Nodes[node].Index == 1 ? multiplicity[node] : 0);
+  };
+  for (const auto& entry : selected)
+  {
+    const Id node = entry.second;
+    const flowrecon::Node& n = fc.Nodes[node];
+    if (n.Index == 0)
+    {
+      const vtkIdType v = n.Simplex[0];
+      add(VTK_VERTEX, 1, &v, node);
+    }
+    else if (n.Index == 1)
+    {
+      const vtkIdType e[2] = { n.Simplex[0], n.Simplex[1] };
+      add(VTK_LINE, 2, e, node);
+    }
+    for (Id k = c.TriangleOffsets[node]; k < c.TriangleOffsets[node + 1]; ++k)
+    {
+      const auto& tri = fc.Triangles[c.TriangleList[k]];
+      const vtkIdType ids[3] = { tri[0], tri[1], tri[2] };
+      add(VTK_TRIANGLE, 3, ids, node);
+    }
+    for (Id k = c.TetraOffsets[node]; k < c.TetraOffsets[node + 1]; ++k)
+    {
+      const auto& tet = fc.Tetrahedra[c.TetraList[k]];
+      const vtkIdType ids[4] = { tet[0], tet[1], tet[2], tet[3] };
+      add(VTK_TETRA, 4, ids, node);
+    }
+  }
+  for (vtkDataArray* a : std::initializer_list<vtkDataArray*>{ nodeId, index, value, step,
+         priority, threshold, extension, sponsor, owner, mult })
+  {
+    grid->GetCellData()->AddArray(a);
+  }
+  grid->GetCellData()->SetActiveScalars("Threshold");
+
+  // Port 1: the profile of the whole run.
+  auto pStep = Named<vtkIdTypeArray>("Step");
+  auto pNode = Named<vtkIdTypeArray>("NodeId");
+  auto pIndex = Named<vtkIntArray>("Index");
+  auto pPriority = Named<vtkDoubleArray>("Priority");
+  auto pThreshold = Named<vtkDoubleArray>("Threshold");
+  auto pExtension = Named<vtkIntArray>("Extension");
+  auto pSponsor = Named<vtkIdTypeArray>("Sponsor");
+  for (std::size_t k = 0; k < c.Run.Order.size(); ++k)
+  {
+    const Id node = c.Run.Order[k];
+    const flowrecon::Insertion& in = steps[node];
+    pStep->InsertNextValue(static_cast<vtkIdType>(k));
+    pNode->InsertNextValue(node);
+    pIndex->InsertNextValue(fc.Nodes[node].Index);
+    pPriority->InsertNextValue(in.Priority);
+    pThreshold->InsertNextValue(in.Threshold);
+    pExtension->InsertNextValue(static_cast<int>(in.Kind));
+    pSponsor->InsertNextValue(in.Sponsor);
+  }
+  profile->Initialize();
+  for (vtkAbstractArray* a : std::initializer_list<vtkAbstractArray*>{ pStep, pNode, pIndex,
+         pPriority, pThreshold, pExtension, pSponsor })
+  {
+    profile->AddColumn(a);
+  }
+
+  // Port 2: sponsor -> node arrows of the current reconstruction.
+  vtkNew<vtkPoints> arrowPoints;
+  arrowPoints->SetDataTypeToDouble();
+  vtkNew<vtkCellArray> lines;
+  auto aExtension = Named<vtkIntArray>("Extension");
+  auto aPriority = Named<vtkDoubleArray>("Priority");
+  auto aStep = Named<vtkIdTypeArray>("Step");
+  auto aNode = Named<vtkIdTypeArray>("NodeId");
+  auto aSponsor = Named<vtkIdTypeArray>("Sponsor");
+  for (const Id node : c.Run.Order)
+  {
+    const flowrecon::Insertion& in = steps[node];
+    if (!c.Run.Contains(node, t) || in.Sponsor < 0)
+    {
+      continue;
+    }
+    const vtkIdType ids[2] = { arrowPoints->InsertNextPoint(fc.Nodes[in.Sponsor].Location.data()),
+      arrowPoints->InsertNextPoint(fc.Nodes[node].Location.data()) };
+    lines->InsertNextCell(2, ids);
+    aExtension->InsertNextValue(static_cast<int>(in.Kind));
+    aPriority->InsertNextValue(in.Priority);
+    aStep->InsertNextValue(in.Step);
+    aNode->InsertNextValue(node);
+    aSponsor->InsertNextValue(in.Sponsor);
+  }
+  arrows->Initialize();
+  arrows->SetPoints(arrowPoints);
+  arrows->SetLines(lines);
+  for (vtkDataArray* a :
+    std::initializer_list<vtkDataArray*>{ aExtension, aPriority, aStep, aNode, aSponsor })
+  {
+    arrows->GetCellData()->AddArray(a);
+  }
+  arrows->GetCellData()->SetActiveScalars("Priority");
+
+  this->SetProgressText(nullptr);
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkFlowReconstruction::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "ReconstructionThreshold: " << this->ReconstructionThreshold << "\n";
+  os << indent << "NumberOfQueueRuns: " << this->NumberOfQueueRuns << "\n";
+}

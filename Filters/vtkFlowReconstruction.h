@@ -1,0 +1,93 @@
+/**
+ * @class   vtkFlowReconstruction
+ * @brief   Flow reconstruction of a compact set from its flow complex (paper §3.1-3.2).
+ *
+ * Input: the multiblock of vtkFlowComplex or of vtkFlowComplexSimplification
+ * (or either read back from a .vtm). Stable manifolds are added in the order of
+ * a priority queue started from the initialization edges (Gabriel edges to a
+ * nearest neighbour) and fed by regularization, upflow and horizontal extension
+ * (flowrecon::Reconstruct). The queue runs once with t_r = infinity: every
+ * reconstruction is the prefix of that run made of the nodes with Threshold <
+ * t_r, so the run is cached (keyed on the input's modification time) and
+ * changing only ReconstructionThreshold re-selects cells without rerunning it.
+ *
+ * Output port 0 (vtkUnstructuredGrid): the stable-manifold cells of the
+ * reconstructed nodes, in insertion order: sample vertices, Gabriel edges,
+ * triangulated index-2 patches and the index-3 cones (tetrahedra) of
+ * reconstructed maxima. Points are those of `StableManifolds` (same ids, with
+ * `vtkOriginalPointIds`). Cell data: `NodeId`, `Index`, `CriticalValue` (of the
+ * node whose stable manifold the cell belongs to), `Step`, `Priority`,
+ * `Threshold`, `Extension` (0 initialization, 1 regularization, 2 upflow,
+ * 3 horizontal), `Sponsor` (node id, -1 for initialization), `Owner` (the node
+ * whose insertion brought the cell) and `Multiplicity` (for edges: how many
+ * reconstructed patches they bound, counting arc multiplicities; 0 for other
+ * cells). For a simplified input, the cells of a cancelled node go with its
+ * owners: they are present as soon as one owner is, and take the insertion
+ * data (Step, Priority, ...) of the earliest reconstructed owner, which is
+ * also their `Owner`.
+ *
+ * Output port 1 (vtkTable): the reconstruction profile of the whole
+ * t_r = infinity run, one row per step: `Step`, `NodeId`, `Index`, `Priority`,
+ * `Threshold`, `Extension`, `Sponsor`. Steps with Threshold < t_r form the
+ * current reconstruction; jumps of Threshold point at under-sampled regions.
+ *
+ * Output port 2 (vtkPolyData): sponsor arrows of the current reconstruction,
+ * one line from the sponsor's critical point to the node's critical point for
+ * each node inserted by an extension, cell data `Extension`, `Priority`,
+ * `Step`, `NodeId`, `Sponsor`.
+ */
+#ifndef vtkFlowReconstruction_h
+#define vtkFlowReconstruction_h
+
+#include "FlowReconFiltersModule.h" // for export macro
+#include "vtkUnstructuredGridAlgorithm.h"
+
+#include <memory> // for std::unique_ptr
+
+class FLOWRECONFILTERS_EXPORT vtkFlowReconstruction : public vtkUnstructuredGridAlgorithm
+{
+public:
+  static vtkFlowReconstruction* New();
+  vtkTypeMacro(vtkFlowReconstruction, vtkUnstructuredGridAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * The reconstruction threshold t_r > 1: the output holds the nodes inserted
+   * before the first popped priority >= t_r. VTK_DOUBLE_MAX (or infinity) keeps
+   * every possible step. The paper finds t_r in [1.9, 2.1] useful. Default 2.
+   */
+  vtkSetClampMacro(ReconstructionThreshold, double, 1.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(ReconstructionThreshold, double);
+  ///@}
+
+  /// How many times the priority queue has run (once per new input).
+  vtkGetMacro(NumberOfQueueRuns, int);
+
+  enum OutputPorts
+  {
+    RECONSTRUCTION = 0,
+    PROFILE = 1,
+    SPONSOR_ARROWS = 2
+  };
+
+protected:
+  vtkFlowReconstruction();
+  ~vtkFlowReconstruction() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  double ReconstructionThreshold = 2.0;
+  int NumberOfQueueRuns = 0;
+
+private:
+  vtkFlowReconstruction(const vtkFlowReconstruction&) = delete;
+  void operator=(const vtkFlowReconstruction&) = delete;
+
+  struct Cache;
+  std::unique_ptr<Cache> Cached; // the t_r = infinity run of the last input
+};
+
+#endif

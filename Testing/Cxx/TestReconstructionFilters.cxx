@@ -1,0 +1,486 @@
+// vtkFlowComplexSimplification and vtkFlowReconstruction as a VTK user meets
+// them: a .vtm round trip gives the same reconstruction, reconstructions are
+// nested in t_r, the output is closed under faces, a new t_r does not rerun the
+// queue, and quasi-uniform samples of a sphere and a torus are reconstructed
+// with their Betti numbers (computed here by a Z/2 reduction of the output).
+#include "Check.h"
+
+#include "vtkFlowComplex.h"
+#include "vtkFlowComplexSimplification.h"
+#include "vtkFlowReconstruction.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCellData.h"
+#include "vtkCommand.h"
+#include "vtkCellType.h"
+#include "vtkCompositeDataSet.h"
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
+#include "vtkInformation.h"
+#include "vtkMultiBlockDataSet.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+#include "vtkTable.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkXMLMultiBlockDataReader.h"
+#include "vtkXMLMultiBlockDataWriter.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <random>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace
+{
+
+using Cloud = std::vector<std::array<double, 3>>;
+
+/// Fibonacci sphere (unit radius), jittered by 1e-4 to avoid cospherical ties.
+Cloud FibonacciSphere(int n)
+{
+  std::mt19937_64 g(7);
+  std::uniform_real_distribution<double> u(-5e-5, 5e-5);
+  Cloud c;
+  const double golden = M_PI * (3 - std::sqrt(5.0));
+  for (int i = 0; i < n; ++i)
+  {
+    const double z = 1 - 2 * (i + 0.5) / n, r = std::sqrt(1 - z * z), a = golden * i;
+    c.push_back({ { r * std::cos(a) + u(g), r * std::sin(a) + u(g), z + u(g) } });
+  }
+  return c;
+}
+
+/// Torus R = 1, r = 0.35 sampled on a staggered nu x nv angle grid, jittered by 1e-3.
+Cloud GridTorus(int nu, int nv)
+{
+  std::mt19937_64 g(11);
+  std::uniform_real_distribution<double> u(-5e-4, 5e-4);
+  Cloud c;
+  for (int i = 0; i < nu; ++i)
+  {
+    for (int j = 0; j < nv; ++j)
+    {
+      const double a = 2 * M_PI * (i + 0.5 * (j % 2)) / nu, b = 2 * M_PI * j / nv;
+      c.push_back({ { (1 + 0.35 * std::cos(b)) * std::cos(a) + u(g),
+        (1 + 0.35 * std::cos(b)) * std::sin(a) + u(g), 0.35 * std::sin(b) + u(g) } });
+    }
+  }
+  return c;
+}
+
+vtkSmartPointer<vtkMultiBlockDataSet> FlowComplexOf(const Cloud& cloud)
+{
+  vtkNew<vtkPoints> pts;
+  for (const auto& p : cloud)
+  {
+    pts->InsertNextPoint(p.data());
+  }
+  vtkNew<vtkPolyData> pd;
+  pd->SetPoints(pts);
+  vtkNew<vtkFlowComplex> fc;
+  fc->SetInputData(pd);
+  fc->SetComputeUnstableManifolds(false);
+  fc->Update();
+  return fc->GetOutput();
+}
+
+vtkSmartPointer<vtkMultiBlockDataSet> Simplified(vtkMultiBlockDataSet* complex, double tp)
+{
+  vtkNew<vtkFlowComplexSimplification> s;
+  s->SetInputData(complex);
+  s->SetPersistenceThreshold(tp);
+  s->Update();
+  return s->GetOutput();
+}
+
+vtkSmartPointer<vtkUnstructuredGrid> Reconstructed(vtkMultiBlockDataSet* input, double tr)
+{
+  vtkNew<vtkFlowReconstruction> r;
+  r->SetInputData(input);
+  r->SetReconstructionThreshold(tr);
+  r->Update();
+  return vtkUnstructuredGrid::SafeDownCast(r->GetOutputDataObject(0));
+}
+
+vtkDataObject* Block(vtkMultiBlockDataSet* mb, const std::string& name)
+{
+  for (unsigned int b = 0; b < mb->GetNumberOfBlocks(); ++b)
+  {
+    if (mb->HasMetaData(b) && name == mb->GetMetaData(b)->Get(vtkCompositeDataSet::NAME()))
+    {
+      return mb->GetBlock(b);
+    }
+  }
+  return nullptr;
+}
+
+vtkSmartPointer<vtkMultiBlockDataSet> RoundTrip(vtkMultiBlockDataSet* mb, const std::string& file)
+{
+  vtkNew<vtkXMLMultiBlockDataWriter> w;
+  w->SetFileName(file.c_str());
+  w->SetInputData(mb);
+  CHECK(w->Write() == 1);
+  vtkNew<vtkXMLMultiBlockDataReader> r;
+  r->SetFileName(file.c_str());
+  r->Update();
+  return vtkMultiBlockDataSet::SafeDownCast(r->GetOutputDataObject(0));
+}
+
+/// One row per cell: type, point coordinates, then the cell data used here.
+/// Multiplicity (patches of the current reconstruction an edge bounds) grows
+/// with t_r, so nestedness compares without it.
+using Row = std::vector<double>;
+std::vector<Row> Rows(vtkUnstructuredGrid* g, bool multiplicity = true)
+{
+  const char* names[] = { "NodeId", "Index", "CriticalValue", "Step", "Priority", "Threshold",
+    "Extension", "Sponsor", "Multiplicity" };
+  std::vector<Row> rows;
+  const vtkIdType n = g->GetNumberOfCells();
+  for (vtkIdType c = 0; c < n; ++c)
+  {
+    Row row{ double(g->GetCellType(c)) };
+    vtkIdType npts;
+    const vtkIdType* pts;
+    g->GetCellPoints(c, npts, pts);
+    for (vtkIdType k = 0; k < npts; ++k)
+    {
+      double x[3];
+      g->GetPoint(pts[k], x);
+      row.insert(row.end(), x, x + 3);
+    }
+    for (const char* name : names)
+    {
+      if (!multiplicity && std::string(name) == "Multiplicity")
+      {
+        continue;
+      }
+      vtkDataArray* a = g->GetCellData()->GetArray(name);
+      row.push_back(a ? a->GetComponent(c, 0) : NAN);
+    }
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+/// Rows of the cells with Threshold < t.
+std::vector<Row> RowsBelow(vtkUnstructuredGrid* g, double t)
+{
+  std::vector<Row> all = Rows(g, false), kept;
+  vtkDataArray* threshold = g->GetCellData()->GetArray("Threshold");
+  for (vtkIdType c = 0; c < g->GetNumberOfCells(); ++c)
+  {
+    if (threshold->GetComponent(c, 0) < t)
+    {
+      kept.push_back(all[c]);
+    }
+  }
+  return kept;
+}
+
+using Simplex = std::vector<vtkIdType>; // sorted point ids
+
+Simplex CellSimplex(vtkUnstructuredGrid* g, vtkIdType c)
+{
+  vtkIdType npts;
+  const vtkIdType* pts;
+  g->GetCellPoints(c, npts, pts);
+  Simplex s(pts, pts + npts);
+  std::sort(s.begin(), s.end());
+  return s;
+}
+
+/// Every cell's boundary is in the output: an edge's two vertices; a
+/// triangle's sample vertices and its edges that are Gabriel edges of the flow
+/// complex; one face of each tetrahedron (the base patch triangle).
+void CheckClosure(const std::string& label, vtkUnstructuredGrid* g, vtkMultiBlockDataSet* complex)
+{
+  auto* sm = vtkUnstructuredGrid::SafeDownCast(Block(complex, "StableManifolds"));
+  std::set<Simplex> gabriel;
+  for (vtkIdType c = 0; c < sm->GetNumberOfCells(); ++c)
+  {
+    if (sm->GetCellType(c) == VTK_LINE)
+    {
+      gabriel.insert(CellSimplex(sm, c));
+    }
+  }
+  std::set<Simplex> present;
+  for (vtkIdType c = 0; c < g->GetNumberOfCells(); ++c)
+  {
+    present.insert(CellSimplex(g, c));
+  }
+  vtkDataArray* original = g->GetPointData()->GetArray("vtkOriginalPointIds");
+  CHECK(original != nullptr);
+  long missing = 0;
+  for (vtkIdType c = 0; c < g->GetNumberOfCells() && original; ++c)
+  {
+    const Simplex s = CellSimplex(g, c);
+    const int type = g->GetCellType(c);
+    if (type == VTK_LINE || type == VTK_TRIANGLE)
+    {
+      for (vtkIdType v : s)
+      {
+        if (original->GetComponent(v, 0) >= 0 && !present.count(Simplex{ v }))
+        {
+          ++missing;
+        }
+      }
+    }
+    if (type == VTK_TRIANGLE)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        Simplex e{ s[k], s[(k + 1) % 3] };
+        std::sort(e.begin(), e.end());
+        if (gabriel.count(e) && !present.count(e))
+        {
+          ++missing;
+        }
+      }
+    }
+    if (type == VTK_TETRA)
+    {
+      bool face = false;
+      for (int k = 0; k < 4; ++k)
+      {
+        Simplex f = s;
+        f.erase(f.begin() + k);
+        face = face || present.count(f) > 0;
+      }
+      missing += face ? 0 : 1;
+    }
+  }
+  CHECK(missing == 0);
+  if (missing)
+  {
+    std::cout << "   " << label << ": " << missing << " boundary cells missing\n";
+  }
+}
+
+/// Betti numbers over Z/2 of the simplicial complex made of the output cells
+/// and all their faces (simplices are sets of point ids).
+std::array<long, 4> Betti(vtkUnstructuredGrid* g)
+{
+  std::array<std::map<Simplex, long>, 4> ids; // simplex -> column number per dimension
+  for (vtkIdType c = 0; c < g->GetNumberOfCells(); ++c)
+  {
+    const Simplex s = CellSimplex(g, c);
+    const int n = static_cast<int>(s.size());
+    for (int mask = 1; mask < (1 << n); ++mask) // every face
+    {
+      Simplex f;
+      for (int k = 0; k < n; ++k)
+      {
+        if (mask & (1 << k))
+        {
+          f.push_back(s[k]);
+        }
+      }
+      ids[f.size() - 1].emplace(f, 0);
+    }
+  }
+  std::array<long, 4> count{}, rank{};
+  for (int d = 0; d < 4; ++d)
+  {
+    long i = 0;
+    for (auto& entry : ids[d])
+    {
+      entry.second = i++;
+    }
+    count[d] = i;
+  }
+  for (int d = 1; d < 4; ++d) // rank of the boundary map from dimension d to d - 1
+  {
+    std::map<long, std::vector<long>> pivots; // lowest row -> reduced column
+    for (const auto& entry : ids[d])
+    {
+      std::vector<long> col;
+      for (std::size_t k = 0; k < entry.first.size(); ++k)
+      {
+        Simplex f = entry.first;
+        f.erase(f.begin() + k);
+        col.push_back(ids[d - 1].at(f));
+      }
+      std::sort(col.begin(), col.end());
+      while (!col.empty())
+      {
+        const auto p = pivots.find(col.back());
+        if (p == pivots.end())
+        {
+          pivots.emplace(col.back(), col);
+          break;
+        }
+        std::vector<long> sum;
+        std::set_symmetric_difference(
+          col.begin(), col.end(), p->second.begin(), p->second.end(), std::back_inserter(sum));
+        col.swap(sum);
+      }
+    }
+    rank[d] = static_cast<long>(pivots.size());
+  }
+  std::array<long, 4> b{};
+  for (int d = 0; d < 4; ++d)
+  {
+    b[d] = count[d] - rank[d] - (d < 3 ? rank[d + 1] : 0);
+  }
+  return b;
+}
+
+void CheckBetti(const std::string& label, vtkUnstructuredGrid* g, std::array<long, 4> expected)
+{
+  const auto b = Betti(g);
+  CHECK(b == expected);
+  if (b != expected)
+  {
+    std::cout << "   " << label << ": Betti " << b[0] << " " << b[1] << " " << b[2] << " "
+              << b[3] << ", expected " << expected[0] << " " << expected[1] << " "
+              << expected[2] << " " << expected[3] << "\n";
+  }
+}
+
+void TestShape(const std::string& name, const Cloud& cloud, std::array<long, 4> betti,
+  const std::string& dir)
+{
+  std::cout << "-- " << name << "\n";
+  vtkSmartPointer<vtkMultiBlockDataSet> complex = FlowComplexOf(cloud);
+  CHECK(Block(complex, "StableManifolds") != nullptr);
+  for (const double tp : { 0.0, 1.1 })
+  {
+    const std::string label = name + ", t_p " + std::to_string(tp);
+    vtkSmartPointer<vtkMultiBlockDataSet> simplified = Simplified(complex, tp);
+    CHECK(Block(simplified, "PersistencePairs") != nullptr);
+    auto* cp = vtkPolyData::SafeDownCast(Block(simplified, "CriticalPoints"));
+    CHECK(cp && cp->GetPointData()->GetArray("Cancelled"));
+    CHECK(simplified->GetFieldData()->GetArray("PersistenceThreshold") != nullptr);
+    auto* pairs = vtkPolyData::SafeDownCast(Block(simplified, "PersistencePairs"));
+    CHECK(pairs && pairs->GetCellData()->GetArray("Ratio") && pairs->GetCellData()->GetArray("Birth") &&
+      pairs->GetCellData()->GetArray("Death") && pairs->GetCellData()->GetArray("PairType"));
+    if (pairs && tp == 0.0)
+    {
+      CHECK(pairs->GetNumberOfCells() == 0); // t_p = 0 cancels nothing
+    }
+    if (pairs && tp > 1 && pairs->GetNumberOfCells() > 0)
+    {
+      vtkDataArray* ratio = pairs->GetCellData()->GetArray("Ratio");
+      CHECK(ratio->GetRange()[0] >= 1 && ratio->GetRange()[1] <= tp);
+    }
+
+    vtkSmartPointer<vtkUnstructuredGrid> at2 = Reconstructed(simplified, 2.0);
+    vtkSmartPointer<vtkUnstructuredGrid> atInf = Reconstructed(simplified, VTK_DOUBLE_MAX);
+    CHECK(at2->GetNumberOfCells() > 0);
+    CHECK(at2->GetNumberOfCells() < atInf->GetNumberOfCells());
+    // Nestedness: the run at 2 is the Threshold < 2 part of the run at infinity.
+    CHECK(Rows(at2, false) == RowsBelow(atInf, 2.0));
+    CHECK(RowsBelow(atInf, 1.5) == Rows(Reconstructed(simplified, 1.5), false));
+    CheckClosure(label + ", t_r 2", at2, complex);
+    CheckClosure(label + ", t_r inf", atInf, complex);
+    CheckBetti(label + ", t_r 2", at2, betti);
+    CheckBetti(label + ", t_r 1.9", Reconstructed(simplified, 1.9), betti);
+    CheckBetti(label + ", t_r inf", atInf, { { 1, 0, 0, 0 } }); // the whole hull is contractible
+
+    // Round trips: the flow complex and the simplified complex through .vtm.
+    const std::string base = dir + "/" + name + (tp > 0 ? "_tp" : "_notp");
+    auto complexBack = RoundTrip(complex, base + "_complex.vtm");
+    CHECK(Rows(Reconstructed(Simplified(complexBack, tp), 2.0)) == Rows(at2));
+    auto simplifiedBack = RoundTrip(simplified, base + "_simplified.vtm");
+    CHECK(Rows(Reconstructed(simplifiedBack, 2.0)) == Rows(at2));
+  }
+}
+
+/// Changing only t_r re-selects cells; a new input reruns the queue once.
+void TestQueueCache(const Cloud& cloud)
+{
+  std::cout << "-- queue cache\n";
+  vtkSmartPointer<vtkMultiBlockDataSet> complex = FlowComplexOf(cloud);
+  vtkNew<vtkFlowComplexSimplification> s;
+  s->SetInputData(complex);
+  vtkNew<vtkFlowReconstruction> r;
+  r->SetInputConnection(s->GetOutputPort());
+  r->SetReconstructionThreshold(2.0);
+  r->Update();
+  CHECK(r->GetNumberOfQueueRuns() == 1);
+  const vtkIdType cells2 = r->GetOutput()->GetNumberOfCells();
+  auto* profile = vtkTable::SafeDownCast(r->GetOutputDataObject(1));
+  CHECK(profile && profile->GetColumnByName("Threshold") && profile->GetNumberOfRows() > 0);
+  auto* arrows = vtkPolyData::SafeDownCast(r->GetOutputDataObject(2));
+  CHECK(arrows && arrows->GetNumberOfCells() > 0 && arrows->GetCellData()->GetArray("Extension"));
+  r->SetReconstructionThreshold(1.2);
+  r->Update();
+  CHECK(r->GetNumberOfQueueRuns() == 1);
+  CHECK(r->GetOutput()->GetNumberOfCells() < cells2);
+  r->SetReconstructionThreshold(2.0);
+  r->Update();
+  CHECK(r->GetNumberOfQueueRuns() == 1);
+  CHECK(r->GetOutput()->GetNumberOfCells() == cells2);
+  s->SetPersistenceThreshold(1.05); // a new input
+  r->Update();
+  CHECK(r->GetNumberOfQueueRuns() == 2);
+  // The profile's rows: steps 0..n-1 in order, Threshold the running maximum of Priority.
+  profile = vtkTable::SafeDownCast(r->GetOutputDataObject(1));
+  vtkDataArray* step = vtkDataArray::SafeDownCast(profile->GetColumnByName("Step"));
+  vtkDataArray* priority = vtkDataArray::SafeDownCast(profile->GetColumnByName("Priority"));
+  vtkDataArray* threshold = vtkDataArray::SafeDownCast(profile->GetColumnByName("Threshold"));
+  double running = 0;
+  bool ok = step && priority && threshold;
+  for (vtkIdType k = 0; ok && k < profile->GetNumberOfRows(); ++k)
+  {
+    running = std::max(running, priority->GetComponent(k, 0));
+    ok = step->GetComponent(k, 0) == k && threshold->GetComponent(k, 0) == running;
+  }
+  CHECK(ok);
+
+  // An abort leaves empty outputs and caches nothing: the next update reruns.
+  vtkNew<vtkCallbackCommand> abort;
+  abort->SetCallback([](vtkObject* caller, unsigned long, void*, void*) {
+    vtkAlgorithm::SafeDownCast(caller)->SetAbortExecute(1);
+  });
+  const unsigned long tag = r->AddObserver(vtkCommand::ProgressEvent, abort);
+  s->SetPersistenceThreshold(1.1);
+  r->Update();
+  CHECK(r->GetNumberOfQueueRuns() == 3);
+  CHECK(r->GetOutput()->GetNumberOfCells() == 0);
+  r->RemoveObserver(tag);
+  r->SetAbortExecute(0);
+  r->Modified();
+  r->Update();
+  CHECK(r->GetNumberOfQueueRuns() == 4);
+  CHECK(r->GetOutput()->GetNumberOfCells() == cells2);
+}
+
+void TestErrors()
+{
+  std::cout << "-- errors\n";
+  vtkObject::GlobalWarningDisplayOff(); // the expected error messages
+  vtkNew<vtkMultiBlockDataSet> empty;
+  vtkNew<vtkFlowReconstruction> r;
+  r->SetInputData(empty);
+  r->SetReconstructionThreshold(-5);
+  CHECK(r->GetReconstructionThreshold() == 1.0); // clamped
+  r->Update(); // an error message, no crash, empty outputs
+  CHECK(r->GetOutput()->GetNumberOfCells() == 0);
+  vtkNew<vtkFlowComplexSimplification> s;
+  s->SetInputData(empty);
+  s->SetPersistenceThreshold(-1);
+  CHECK(s->GetPersistenceThreshold() == 0.0);
+  s->Update();
+  CHECK(s->GetOutput()->GetNumberOfBlocks() == 0);
+  vtkObject::GlobalWarningDisplayOn();
+}
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  const std::string dir = argc > 1 ? argv[1] : ".";
+  TestErrors();
+  TestQueueCache(FibonacciSphere(300));
+  TestShape("sphere", FibonacciSphere(800), { { 1, 0, 1, 0 } }, dir);
+  TestShape("torus", GridTorus(40, 14), { { 1, 2, 1, 0 } }, dir);
+  return check::Finish("TestReconstructionFilters");
+}
