@@ -3,6 +3,9 @@
 #include "Driver.h"
 #include "FastPredicates.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 
 namespace flowrecon
@@ -31,13 +34,12 @@ CriticalSimplices FindCriticalSimplices(const Triangulation& tri, const Progress
 {
   const Delaunay& dt = tri.Dt();
   CriticalSimplices cs;
-  const double total = static_cast<double>(
-    dt.number_of_finite_facets() + dt.number_of_finite_cells() + 1);
+  const double total = static_cast<double>(dt.number_of_finite_facets() + 1);
   std::size_t done = 0;
   auto tick = [&]() {
     if ((++done & 0xFFFF) == 0)
     {
-      progress(0.2 + 0.15 * done / total, "critical points");
+      progress(0.2 + 0.12 * done / total, "critical points");
     }
   };
   // All edges as sorted adjacency lists (u < v), collected from the cells:
@@ -182,12 +184,21 @@ CriticalSimplices FindCriticalSimplices(const Triangulation& tri, const Progress
   }
 
   // Index 3: self-centred cells (Lemma B.2).
+  // The predicates run in parallel (read-only triangulation); Degenerate
+  // propagates out of parallel_for to the caller.
+  progress(0.33, "critical points");
+  std::vector<char> selfCentred(static_cast<std::size_t>(tri.NumberOfCells()), 0);
+  tbb::parallel_for(tbb::blocked_range<Id>(0, tri.NumberOfCells()), [&](const tbb::blocked_range<Id>& r) {
+    for (Id id = r.begin(); id != r.end(); ++id)
+    {
+      selfCentred[id] = IsSelfCentred(tri.Cell(id)) ? 1 : 0;
+    }
+  });
   std::vector<std::pair<std::array<Id, 4>, Id>> cells;
   for (Id id = 0; id < tri.NumberOfCells(); ++id)
   {
-    tick();
     const CellHandle c = tri.Cell(id);
-    if (IsSelfCentred(c))
+    if (selfCentred[id])
     {
       cells.emplace_back(Sorted<4>({ { c->vertex(0)->info(), c->vertex(1)->info(),
                            c->vertex(2)->info(), c->vertex(3)->info() } }),

@@ -71,7 +71,7 @@ public:
   void Run(const std::vector<Point3>& coords, bool first);
 
 private:
-  void AddNode(int index, const Id* simplex, const std::vector<Point3>& coords);
+  Node MakeNode(int index, const Id* simplex, const std::vector<Point3>& coords) const;
 
   const PreparedInput& In;
   const std::vector<Point3>& Input;
@@ -80,7 +80,7 @@ private:
   FlowComplex& FC;
 };
 
-void Builder::AddNode(int index, const Id* simplex, const std::vector<Point3>& coords)
+Node Builder::MakeNode(int index, const Id* simplex, const std::vector<Point3>& coords) const
 {
   Node node;
   node.Index = index;
@@ -103,7 +103,7 @@ void Builder::AddNode(int index, const Id* simplex, const std::vector<Point3>& c
     node.Location = { { cr[0], cr[1], cr[2] } };
     node.Value = std::sqrt(cr[3]);
   }
-  this->FC.Nodes.push_back(node);
+  return node;
 }
 
 void Builder::Run(const std::vector<Point3>& coords, bool first)
@@ -356,30 +356,34 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
   std::vector<std::pair<CellHandle, int>>().swap(cs.FacetCells);
   tri.reset();
 
-  fc.Nodes.clear();
-  fc.Nodes.reserve(static_cast<std::size_t>(fc.InfinityNode + 1));
-  for (Id k = 0; k < m; ++k)
+  // Nodes are independent constructions: fill them in parallel.
+  fc.Nodes.assign(static_cast<std::size_t>(fc.InfinityNode + 1), Node());
+  tbb::parallel_for(tbb::blocked_range<Id>(0, fc.InfinityNode), [&](const tbb::blocked_range<Id>& r) {
+    for (Id n = r.begin(); n != r.end(); ++n)
+    {
+      if (n < base1)
+      {
+        fc.Nodes[n] = this->MakeNode(0, &n, coords);
+      }
+      else if (n < base2)
+      {
+        fc.Nodes[n] = this->MakeNode(1, cs.Edges[n - base1].data(), coords);
+      }
+      else if (n < base3)
+      {
+        fc.Nodes[n] = this->MakeNode(2, cs.Facets[n - base2].data(), coords);
+      }
+      else
+      {
+        fc.Nodes[n] = this->MakeNode(3, cs.Cells[n - base3].data(), coords);
+      }
+    }
+  });
   {
-    this->AddNode(0, &k, coords);
-  }
-  for (const auto& e : cs.Edges)
-  {
-    this->AddNode(1, e.data(), coords);
-  }
-  for (const auto& f : cs.Facets)
-  {
-    this->AddNode(2, f.data(), coords);
-  }
-  for (const auto& c : cs.Cells)
-  {
-    this->AddNode(3, c.data(), coords);
-  }
-  {
-    Node inf;
+    Node& inf = fc.Nodes.back();
     inf.Index = 3;
     inf.Value = HUGE_VAL;
     inf.Location = this->In.Centre;
-    fc.Nodes.push_back(inf);
   }
 
   for (std::size_t i = 0; i < ends.size(); ++i)
