@@ -35,6 +35,48 @@ grid4_exact              64   (1, 0, 0)    exact 4x4x4 integer grid: degenerate 
                                            (cospherical and right-angled everywhere)
 =====================  =====  ===========  ==============================================
 
+The shapes above are i.i.d. samples: they have clusters and gaps, so a reconstruction
+may punch holes in them (the paper's guarantee assumes a roughly uniform sampling).
+The quasi-uniform shapes below are made by greedy farthest-point subsampling
+(``farthest_points``) of a dense i.i.d. sample of the same set (``QU_FACTOR`` = 10
+times the size, 4 times for the larger experiment models), or by an even spacing
+with a small jitter for curves; consecutive points are about the same distance
+apart everywhere, which is the paper's rho-uniform sampling:
+
+=======================  =====  ===========  ============================================
+name                     size   (b0,b1,b2)   what
+=======================  =====  ===========  ============================================
+sphere_qu                1000   (1, 0, 1)    unit sphere
+torus_qu                 2000   (1, 2, 1)    torus R=1, r=0.35
+genus2_qu                3000   (1, 4, 1)    the genus-2 surface of ``genus2``
+trefoil_qu                600   (1, 1, 0)    trefoil knot, evenly spaced in arc length,
+                                             each point moved by <= 0.1 spacing along it
+ball_qu                  2000   (1, 0, 0)    solid unit ball (volume sample)
+two_spheres_qu           3000   (1, 0, 3)    the union of ``two_spheres``: H1 = 0 and
+                                             three chambers (lens + two outer parts)
+two_hemispheres_qu       3000   (1, 0, 0)    ``two_hemispheres``: two disks glued along
+                                             an arc, contractible
+sphere_with_segment_qu   2000   (1, 0, 1)    sphere_qu(2000) + the segment of
+                                             ``sphere_with_segment``; size = sphere points
+vase_qu                  3000   (1, 2, 0)    the paper's vase (§5): surface of revolution
+                                             r(z) = 0.55 + 0.25 sin(1.5 pi z / 2 + 0.3),
+                                             0 <= z <= 2, closed by a flat bottom, open at
+                                             the top (a disk), plus 2 thin solid handles
+                                             sampled as curves (arcs bulging 0.5 out of the
+                                             wall at angles 0 and pi, each with both ends
+                                             on the wall): disk + 2 arcs; size = vase points
+plate3_qu                8000   (1, 6, 1)    a mechanical-like genus-3 part: surface of the
+                                             box [-2,2]x[-0.8,0.8]x[-0.25,0.25] with 3
+                                             through holes of radius 0.4 at x = -1.3, 0, 1.3
+                                             (sharp edges on purpose)
+tree                    5       (1, 0, 0)    a random branching tree (depth 5, 2-3 children
+                                             per branch) of thin cylinders (radius 0.012 at
+                                             the trunk, x0.7 per level), points on the
+                                             cylinder surfaces every 0.02 along the axis at
+                                             random angles: a noisy sample of a tree of
+                                             curves, contractible; size = depth
+=======================  =====  ===========  ============================================
+
 Command line::
 
     generate_clouds.py [OUTDIR] [--shapes NAME[,NAME...]] [--size NAME=N ...]
@@ -42,7 +84,8 @@ Command line::
 
 OUTDIR defaults to the folder of this script (the Data/ folder). Without
 ``--shapes`` every shape is written. ``--size`` overrides a default size (for
-grid5_jittered and grid4_exact N is the number of points per axis).
+grid5_jittered and grid4_exact N is the number of points per axis, for tree the
+depth).
 ``--seed-offset`` shifts every seed (other draws of the same distributions).
 ``--check`` writes nothing: it regenerates the selected shapes whose file exists
 in OUTDIR and exits non-zero if any differs (used by the tests to check that the
@@ -186,6 +229,251 @@ def grid4_exact(k, rng):
     return grid(k)
 
 
+# --------------------------------------------------------------------------- quasi-uniform
+
+QU_FACTOR = 10
+
+
+def farthest_points(candidates, n):
+    """Greedy farthest-point subsampling: n of the candidates, starting from the
+    first, each next one the farthest from those already chosen (ties: the lowest
+    index). Deterministic; the chosen points are about evenly spaced."""
+    c = np.ascontiguousarray(candidates, dtype=float)
+    if n >= len(c):
+        return c.copy()
+    chosen = np.empty(n, dtype=np.int64)
+    chosen[0] = 0
+    d = np.einsum("ij,ij->i", c - c[0], c - c[0])
+    for i in range(1, n):
+        j = int(np.argmax(d))
+        chosen[i] = j
+        diff = c - c[j]
+        np.minimum(d, np.einsum("ij,ij->i", diff, diff), out=d)
+    return c[chosen]
+
+
+def _qu(func, factor=QU_FACTOR):
+    def sampler(n, rng):
+        return farthest_points(func(factor * n, rng), n)
+    sampler.__name__ = func.__name__ + "_qu"
+    sampler.__doc__ = "Farthest-point subsample of %s (quasi-uniform)." % func.__name__
+    return sampler
+
+
+sphere_qu = _qu(sphere)
+torus_qu = _qu(torus)
+genus2_qu = _qu(genus2)
+ball_qu = _qu(ball)
+two_spheres_qu = _qu(two_spheres)
+two_hemispheres_qu = _qu(two_hemispheres)
+
+
+def trefoil_qu(n, rng):
+    """Evenly spaced in arc length, each point moved by at most a tenth of the
+    spacing along the curve."""
+    t = np.linspace(0.0, 2.0 * math.pi, 200001)
+    p = _trefoil_curve(t)
+    s = np.concatenate(([0.0], np.cumsum(np.linalg.norm(np.diff(p, axis=0), axis=1))))
+    target = (np.arange(n) + rng.uniform(-0.1, 0.1, n)) * (s[-1] / n)
+    return _trefoil_curve(np.interp(np.mod(target, s[-1]), s, t))
+
+
+def _segment_points(a, b, spacing, rng):
+    """Points of the segment a-b (a excluded, b included) at about `spacing`,
+    each moved by a random offset of at most a tenth of the spacing."""
+    a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
+    k = max(2, int(math.ceil(np.linalg.norm(b - a) / spacing)))
+    seg = a + (np.arange(1, k + 1) / k)[:, None] * (b - a)
+    return seg + rng.uniform(-0.1 * spacing, 0.1 * spacing, seg.shape) / math.sqrt(3.0)
+
+
+def sphere_with_segment_qu(n, rng):
+    s = sphere_qu(n, rng)
+    spacing = math.sqrt(4.0 * math.pi / n)
+    return np.vstack((s, _segment_points((1.0, 0.0, 0.0), (2.0, 0.0, 0.0), spacing, rng)))
+
+
+def _vase_radius(z):
+    return 0.55 + 0.25 * np.sin(1.5 * math.pi * z / 2.0 + 0.3)
+
+
+def _vase_surface(n, rng, height=2.0):
+    """i.i.d. w.r.t. area: the wall (rejection on r(z) sqrt(1 + r'(z)^2)) and the
+    flat bottom disk z = 0."""
+    zz = np.linspace(0.0, height, 4001)
+    r = _vase_radius(zz)
+    dr = np.gradient(r, zz)
+    density = r * np.sqrt(1.0 + dr * dr)
+    wall_area = 2.0 * math.pi * np.trapz(density, zz)
+    r0 = float(_vase_radius(0.0))
+    bottom_area = math.pi * r0 * r0
+    n_bottom = int(round(n * bottom_area / (wall_area + bottom_area)))
+    out, count, dmax = [], 0, density.max()
+    while count < n - n_bottom:
+        m = 2 * (n - n_bottom - count) + 16
+        z = rng.uniform(0.0, height, m)
+        keep = rng.uniform(0.0, dmax, m) < np.interp(z, zz, density)
+        z = z[keep]
+        a = rng.uniform(0.0, 2.0 * math.pi, len(z))
+        rz = _vase_radius(z)
+        out.append(np.column_stack((rz * np.cos(a), rz * np.sin(a), z)))
+        count += len(z)
+    wall = np.vstack(out)[: n - n_bottom]
+    rho = r0 * np.sqrt(rng.uniform(0.0, 1.0, n_bottom))
+    a = rng.uniform(0.0, 2.0 * math.pi, n_bottom)
+    bottom = np.column_stack((rho * np.cos(a), rho * np.sin(a), np.zeros(n_bottom)))
+    return np.vstack((wall, bottom)), wall_area + bottom_area
+
+
+def vase_qu(n, rng):
+    """The vase: a quasi-uniform sample of the surface (n points) plus two handles
+    sampled as curves at the surface's spacing: the arcs
+    wall(z(s)) + 0.5 sin(pi s) (cos th, sin th, 0), z(s) = 0.6 + 0.9 s, 0 < s < 1,
+    for th = 0 and pi (their ends are on the wall)."""
+    dense, area = _vase_surface(QU_FACTOR * n, rng)
+    surf = farthest_points(dense, n)
+    spacing = math.sqrt(area / n)
+    handles = []
+    for th in (0.0, math.pi):
+        s = np.linspace(0.0, 1.0, 20001)
+        z = 0.6 + 0.9 * s
+        rad = _vase_radius(z) + 0.5 * np.sin(math.pi * s)
+        curve = np.column_stack((rad * math.cos(th), rad * math.sin(th), z))
+        length = np.concatenate(([0.0], np.cumsum(np.linalg.norm(np.diff(curve, axis=0), axis=1))))
+        k = max(2, int(math.ceil(length[-1] / spacing)))
+        target = (np.arange(1, k) + rng.uniform(-0.1, 0.1, k - 1)) * (length[-1] / k)
+        si = np.interp(target, length, s)
+        zi = 0.6 + 0.9 * si
+        radi = _vase_radius(zi) + 0.5 * np.sin(math.pi * si)
+        handles.append(np.column_stack((radi * math.cos(th), radi * math.sin(th), zi)))
+    return np.vstack([surf] + handles)
+
+
+PLATE_HALF = (2.0, 0.8, 0.25)
+PLATE_HOLES = (-1.3, 0.0, 1.3)
+PLATE_HOLE_RADIUS = 0.4
+
+
+def _plate_surface(n, rng):
+    """i.i.d. w.r.t. area on the surface of the plate with three through holes:
+    top and bottom faces minus the disks, the four sides, the three hole walls."""
+    ax, ay, az = PLATE_HALF
+    rh = PLATE_HOLE_RADIUS
+    holes = np.asarray(PLATE_HOLES)
+    faces_area = 2.0 * (4.0 * ax * ay - len(holes) * math.pi * rh * rh)
+    sides_x = 2.0 * (2.0 * ay * 2.0 * az)   # faces x = +-ax
+    sides_y = 2.0 * (2.0 * ax * 2.0 * az)   # faces y = +-ay
+    walls = len(holes) * 2.0 * math.pi * rh * 2.0 * az
+    areas = np.array([faces_area, sides_x, sides_y, walls])
+    which = rng.choice(4, size=n, p=areas / areas.sum())
+    out = []
+    # top / bottom faces: rejection of the hole disks
+    m = int(np.sum(which == 0))
+    pts, count = [], 0
+    while count < m:
+        k = 2 * (m - count) + 16
+        x = rng.uniform(-ax, ax, k)
+        y = rng.uniform(-ay, ay, k)
+        ok = np.all((x[:, None] - holes[None, :]) ** 2 + y[:, None] ** 2 >= rh * rh, axis=1)
+        z = np.where(rng.integers(0, 2, k) == 0, -az, az)
+        pts.append(np.column_stack((x, y, z))[ok])
+        count += int(ok.sum())
+    out.append(np.vstack(pts)[:m])
+    m = int(np.sum(which == 1))
+    out.append(np.column_stack((np.where(rng.integers(0, 2, m) == 0, -ax, ax),
+                                rng.uniform(-ay, ay, m), rng.uniform(-az, az, m))))
+    m = int(np.sum(which == 2))
+    out.append(np.column_stack((rng.uniform(-ax, ax, m),
+                                np.where(rng.integers(0, 2, m) == 0, -ay, ay),
+                                rng.uniform(-az, az, m))))
+    m = int(np.sum(which == 3))
+    a = rng.uniform(0.0, 2.0 * math.pi, m)
+    c = holes[rng.integers(0, len(holes), m)]
+    out.append(np.column_stack((c + rh * np.cos(a), rh * np.sin(a), rng.uniform(-az, az, m))))
+    return np.vstack(out)
+
+
+def plate3_qu(n, rng):
+    return farthest_points(_plate_surface(4 * n, rng), n)
+
+
+def _segment_distance(p0, p1, q0, q1, samples=64):
+    """Distance between two segments (on 64 points each: enough for a clearance test)."""
+    s = np.linspace(0.0, 1.0, samples)
+    a = p0 + s[:, None] * (p1 - p0)
+    b = q0 + s[:, None] * (q1 - q0)
+    return float(np.sqrt(np.min(np.sum((a[:, None, :] - b[None, :, :]) ** 2, axis=2))))
+
+
+TREE_CLEARANCE = 0.1
+
+
+def _tree_branches(depth, rng):
+    """Segments (start, end, radius) of a random branching tree: a trunk of length
+    1 along z, then per level 2 or 3 children from the end of their parent, length
+    x0.7, radius x0.7, directions at 25..55 degrees from the parent's, spread
+    evenly around it with a random phase. A child that would come closer than
+    TREE_CLEARANCE to a branch it does not touch is drawn again (up to 20 times,
+    then left out), so the tree of curves has no extra loop at the sampling scale."""
+    branches = [(np.zeros(3), np.array([0.0, 0.0, 1.0]), 0.012)]
+    frontier = [0]
+    for _level in range(depth):
+        nxt = []
+        for b in frontier:
+            start, end, radius = branches[b]
+            axis = (end - start) / np.linalg.norm(end - start)
+            helper = np.array([1.0, 0.0, 0.0]) if abs(axis[0]) < 0.9 else np.array([0.0, 1.0, 0.0])
+            u = np.cross(axis, helper)
+            u /= np.linalg.norm(u)
+            v = np.cross(axis, u)
+            k = int(rng.integers(2, 4))
+            phase = rng.uniform(0.0, 2.0 * math.pi)
+            length = np.linalg.norm(end - start) * 0.7
+            for i in range(k):
+                for _attempt in range(20):
+                    tilt = math.radians(rng.uniform(25.0, 55.0))
+                    turn = phase + 2.0 * math.pi * i / k + rng.uniform(-0.3, 0.3)
+                    d = math.cos(tilt) * axis + math.sin(tilt) * (
+                        math.cos(turn) * u + math.sin(turn) * v)
+                    tip = end + length * d
+                    clear = True
+                    for (s0, s1, _r) in branches:
+                        touching = min(np.linalg.norm(a - c) for a in (end, tip)
+                                       for c in (s0, s1)) < 1e-12
+                        if not touching and _segment_distance(end, tip, s0, s1) < TREE_CLEARANCE:
+                            clear = False
+                            break
+                    if clear:
+                        break
+                if clear:
+                    branches.append((end, tip, radius * 0.7))
+                    nxt.append(len(branches) - 1)
+        frontier = nxt
+    return branches
+
+
+def tree(depth, rng, step=0.02):
+    """Points on the thin cylinders around the branches of _tree_branches, one
+    every `step` along each axis at a random angle, plus the root (0, 0, 0)."""
+    branches = _tree_branches(depth, rng)
+    out = []
+    for start, end, radius in branches:
+        axis = end - start
+        length = np.linalg.norm(axis)
+        axis /= length
+        helper = np.array([1.0, 0.0, 0.0]) if abs(axis[0]) < 0.9 else np.array([0.0, 1.0, 0.0])
+        u = np.cross(axis, helper)
+        u /= np.linalg.norm(u)
+        v = np.cross(axis, u)
+        k = max(2, int(math.ceil(length / step)))
+        t = (np.arange(1, k + 1) / k) * length  # the start is the parent's end
+        a = rng.uniform(0.0, 2.0 * math.pi, k)
+        out.append(start + t[:, None] * axis
+                   + radius * (np.cos(a)[:, None] * u + np.sin(a)[:, None] * v))
+    root = np.zeros((1, 3))
+    return np.vstack([root] + out)
+
+
 # name -> (function(size, rng), default size, seed, (b0, b1, b2))
 SHAPES = {
     "sphere": (sphere, 2000, 101, (1, 0, 1)),
@@ -198,6 +486,18 @@ SHAPES = {
     "sphere_with_segment": (sphere_with_segment, 2000, 108, (1, 0, 1)),
     "grid5_jittered": (grid5_jittered, 5, 109, (1, 0, 0)),
     "grid4_exact": (grid4_exact, 4, 110, (1, 0, 0)),
+    # quasi-uniform samples (see the second table above)
+    "sphere_qu": (sphere_qu, 1000, 201, (1, 0, 1)),
+    "torus_qu": (torus_qu, 2000, 202, (1, 2, 1)),
+    "genus2_qu": (genus2_qu, 3000, 203, (1, 4, 1)),
+    "trefoil_qu": (trefoil_qu, 600, 204, (1, 1, 0)),
+    "ball_qu": (ball_qu, 2000, 205, (1, 0, 0)),
+    "two_spheres_qu": (two_spheres_qu, 3000, 206, (1, 0, 3)),
+    "two_hemispheres_qu": (two_hemispheres_qu, 3000, 207, (1, 0, 0)),
+    "sphere_with_segment_qu": (sphere_with_segment_qu, 2000, 208, (1, 0, 1)),
+    "vase_qu": (vase_qu, 3000, 209, (1, 2, 0)),
+    "plate3_qu": (plate3_qu, 8000, 210, (1, 6, 1)),
+    "tree": (tree, 5, 211, (1, 0, 0)),
 }
 
 
@@ -238,7 +538,7 @@ def main(argv=None):
 
     if args.list:
         for name, (_, size, seed, b) in SHAPES.items():
-            print("%-20s size %5d  seed %d  betti %s" % (name, size, seed, b))
+            print("%-22s size %5d  seed %d  betti %s" % (name, size, seed, b))
         return 0
     names = [s for s in args.shapes.split(",") if s]
     unknown = [s for s in names if s not in SHAPES]

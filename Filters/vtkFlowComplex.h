@@ -19,6 +19,10 @@
  * The field data of the output and of `CriticalPoints` report node counts, the
  * degeneracy handling (duplicates, perturbation) and timings.
  *
+ * In a parallel (MPI) pipeline the flow complex is global: every rank requests the
+ * whole input, rank 0 (piece 0) computes it and the other pieces are empty, so
+ * the result is the same as in serial.
+ *
  * The computation is exact (see flow-complex-algorithm.md): predicates use
  * CGAL's exact-predicates kernel, walks are interval-filtered with an exact
  * rational fallback; degenerate input is perturbed deterministically and says so.
@@ -82,6 +86,7 @@ protected:
   ~vtkFlowComplex() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   bool ComputeStableManifolds = true;

@@ -34,6 +34,13 @@ int vtkFlowComplexSimplification::RequestData(
     vtkErrorMacro("Missing input or output.");
     return 0;
   }
+  if (input->GetNumberOfBlocks() == 0)
+  {
+    // Empty in, empty out: what the other ranks of a parallel run receive
+    // (vtkFlowComplex computes on rank 0 only).
+    output->Initialize();
+    return 1;
+  }
   flowrecon::FlowComplex fc;
   flowrecon::SimplificationResult previous;
   std::string error;

@@ -118,6 +118,15 @@ int vtkFlowReconstruction::RequestData(
     return 0;
   }
 
+  if (input->GetNumberOfBlocks() == 0)
+  {
+    // Empty in, empty out: what the other ranks of a parallel run receive
+    // (vtkFlowComplex computes on rank 0 only).
+    grid->Initialize();
+    profile->Initialize();
+    arrows->Initialize();
+    return 1;
+  }
   // The queue runs only for a new input; a new threshold only re-selects.
   if (!this->Cached || this->Cached->InputTime != input->GetMTime())
   {

@@ -1,0 +1,13 @@
+# Homotopy type of reconstructions (DESIGN.md §3): Betti numbers over Z/2 of the
+# output of vtkFlowReconstruction at the default parameters (t_p = 1.1, t_r = 2) on
+# quasi-uniform samples of shapes of known topology made by Data/generate_clouds.py
+# (sphere, torus, genus 2, trefoil, ball, two spheres, two hemispheres, sphere with
+# a segment). Needs GUDHI (python3-gudhi). Included from Testing/Python/CMakeLists.txt.
+if (FLOWRECON_WRAP_PYTHON)
+  add_test(NAME py.reconstruction.betti
+    COMMAND "${FLOWRECON_TEST_PYTHON}" "${CMAKE_CURRENT_SOURCE_DIR}/test_betti.py" --scan)
+  set_tests_properties(py.reconstruction.betti PROPERTIES
+    ENVIRONMENT "PYTHONPATH=${FLOWRECON_PYTHONPATH}"
+    LABELS "python"
+    TIMEOUT 300)
+endif ()
