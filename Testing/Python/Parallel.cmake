@@ -24,3 +24,14 @@ if (FLOWRECON_BUILD_PARAVIEW_PLUGIN AND TARGET FlowRecon)
       PASS_REGULAR_EXPRESSION "PASS")
   endif ()
 endif ()
+
+# Point clouds open directly in ParaView (the plugin's reader), CSV tables feed
+# the filters without a Table To Points step.
+if (FLOWRECON_BUILD_PARAVIEW_PLUGIN AND TARGET FlowRecon AND FLOWRECON_PVPYTHON)
+  add_test(NAME pv.reader_proxy
+    COMMAND "${FLOWRECON_PVPYTHON}" "${CMAKE_CURRENT_SOURCE_DIR}/test_reader_proxy.py"
+            "$<TARGET_FILE:FlowRecon>" "${PROJECT_SOURCE_DIR}/Data/torus.xyz"
+            "${CMAKE_CURRENT_BINARY_DIR}/reader_proxy")
+  set_tests_properties(pv.reader_proxy PROPERTIES LABELS "paraview" TIMEOUT 120
+    PASS_REGULAR_EXPRESSION "PASS")
+endif ()

@@ -1,0 +1,53 @@
+"""ParaView opens point clouds directly, and CSV tables feed the filters.
+
+    pvpython test_reader_proxy.py PLUGIN CLOUD.xyz WORKDIR
+
+After LoadPlugin, OpenDataFile on .xyz and .pts files picks the plugin's reader
+and yields one point per data line of the file (counted here independently); a
+CSV file read by ParaView's own CSV reader (a vtkTable) goes straight into Flow
+Complex, without a Table To Points step, and gives the same node counts as the
+.xyz file.
+"""
+import os
+import sys
+
+from paraview import servermanager
+from paraview.simple import CSVReader, LoadPlugin, OpenDataFile
+
+
+def main():
+    plugin, cloud, work = sys.argv[1:4]
+    os.makedirs(work, exist_ok=True)
+    LoadPlugin(plugin, ns=globals())
+    lines = [l for l in open(cloud) if l.strip() and not l.startswith("#")]
+    pts = os.path.join(work, "cloud.pts")
+    with open(pts, "w") as f:  # .pts: a count line, then x y z per line
+        f.write("%d\n" % len(lines))
+        f.writelines(lines)
+    csv = os.path.join(work, "cloud.csv")
+    with open(csv, "w") as f:
+        f.write("x,y,z\n")
+        f.writelines(",".join(l.split()[:3]) + "\n" for l in lines)
+
+    counts = []
+    for path in (cloud, pts):
+        reader = OpenDataFile(path)
+        assert reader.GetXMLName() == "FlowReconPointCloudReader", reader.GetXMLName()
+        reader.UpdatePipeline()
+        n = reader.GetDataInformation().GetNumberOfPoints()
+        assert n == len(lines), (path, n, len(lines))
+        fc = FlowComplex(Input=reader)
+        fc.UpdatePipeline()
+        counts.append(tuple(servermanager.Fetch(fc).GetFieldData()
+                            .GetArray("NodeCountByIndex").GetTuple(0)))
+    table = CSVReader(FileName=[csv])
+    fc = FlowComplex(Input=table)
+    fc.UpdatePipeline()
+    counts.append(tuple(servermanager.Fetch(fc).GetFieldData()
+                        .GetArray("NodeCountByIndex").GetTuple(0)))
+    print("node counts (xyz, pts, csv):", counts)
+    assert counts[0] == counts[1] == counts[2] and counts[0][0] == len(lines), counts
+    print("PASS")
+
+
+main()
