@@ -1,0 +1,141 @@
+"""The FlowRecon plugin inside the ParaView Qt GUI: run with
+
+    FLOWRECON_PLUGIN=<build>/lib/paraview-5.11/plugins/FlowRecon/FlowRecon.so \\
+    FLOWRECON_DATA=<repo>/Data/two_hemispheres.xyz FLOWRECON_OUT=<prefix> \\
+    xvfb-run -a -s "-screen 0 1280x1024x24" paraview --dr --script=gui_pipeline.py
+
+The GUI's own Python loads the plugin (unless PV_PLUGIN_PATH already did), reads the
+cloud with the CSV reader, applies Flow Complex -> Flow Complex Simplification ->
+Flow Reconstruction with their defaults, checks the outputs (non-empty, block and array
+names, profile columns), colours the reconstruction by CriticalValue in the GUI's render
+view and saves <prefix>.png. Prints (to the terminal, with os.write: print() would go to
+the Output Messages window) "gui_pipeline: PASS" and os._exit(0)s, or the traceback and
+os._exit(1): the GUI has no quit from Python (recipe pitfall 11). FLOWRECON_EXIT=0 keeps
+the GUI open (interactive use).
+"""
+
+import os
+import traceback
+
+from paraview import servermanager
+from paraview.simple import *  # noqa: F401,F403
+
+
+def say(message):
+    os.write(1, (message + "\n").encode())
+
+
+def check(condition, message):
+    if not condition:
+        raise AssertionError(message)
+
+
+def block_names(proxy):
+    info = proxy.GetDataInformation().DataInformation
+    hierarchy = info.GetHierarchy() if hasattr(info, "GetHierarchy") else None
+    names = set()
+    if hierarchy is not None:
+        from vtkmodules.vtkCommonDataModel import vtkDataAssembly  # noqa: F401
+        for node in hierarchy.GetChildNodes(0, False):
+            names.add(hierarchy.GetAttributeOrDefault(node, "label", ""))
+    return names
+
+
+def main():
+    plugin = os.environ.get("FLOWRECON_PLUGIN", "")
+    data = os.environ["FLOWRECON_DATA"]
+    out = os.environ.get("FLOWRECON_OUT", "gui_pipeline")
+    ns = globals()
+    if "FlowComplex" not in ns:
+        check(os.path.exists(plugin), "plugin %r does not exist" % plugin)
+        LoadPlugin(plugin, remote=False, ns=ns)
+    for name in ("FlowComplex", "FlowComplexSimplification", "FlowReconstruction"):
+        check(name in ns, "the plugin did not define %s" % name)
+
+    reader = CSVReader(registrationName="two_hemispheres.xyz", FileName=[data])
+    reader.HaveHeaders = 0
+    reader.FieldDelimiterCharacters = " "
+    reader.MergeConsecutiveDelimiters = 1
+    points = TableToPoints(registrationName="Points", Input=reader,
+                           XColumn="Field 0", YColumn="Field 1", ZColumn="Field 2")
+    fc = ns["FlowComplex"](registrationName="FlowComplex", Input=points)
+    simp = ns["FlowComplexSimplification"](registrationName="Simplification", Input=fc)
+    recon = ns["FlowReconstruction"](registrationName="Reconstruction", Input=simp)
+    check(simp.PersistenceThreshold == 1.1, "default t_p %s" % simp.PersistenceThreshold)
+    check(recon.ReconstructionThreshold == 2.0, "default t_r %s" % recon.ReconstructionThreshold)
+
+    points.UpdatePipeline()
+    n = points.GetDataInformation().GetNumberOfPoints()
+    check(n == 3000, "%d input points, expected 3000" % n)
+
+    # Flow Complex / Simplification: multiblocks with named blocks and arrays
+    fc.UpdatePipeline()
+    simp.UpdatePipeline()
+    fc_blocks = block_names(fc)
+    simp_blocks = block_names(simp)
+    say("gui_pipeline: FlowComplex blocks %s" % sorted(fc_blocks))
+    say("gui_pipeline: Simplification blocks %s" % sorted(simp_blocks))
+    expected = {"CriticalPoints", "HasseDiagram", "StableManifolds", "UnstableManifolds"}
+    check(expected <= fc_blocks, "FlowComplex blocks %s" % sorted(fc_blocks))
+    check(expected | {"PersistencePairs"} <= simp_blocks,
+          "Simplification blocks %s" % sorted(simp_blocks))
+    for proxy, where, arrays in (
+            (fc, "PointData", ("NodeId", "Index", "CriticalValue")),
+            (fc, "CellData", ("Multiplicity", "Ratio")),
+            (simp, "PointData", ("Cancelled",)),
+            (simp, "CellData", ("Owner", "Birth", "Death", "PairType"))):
+        keys = getattr(proxy, where).keys()
+        for a in arrays:
+            check(a in keys, "%s %s has no %s (has %s)" % (proxy.GetXMLName(), where, a, keys))
+    check(fc.GetDataInformation().GetNumberOfCells() > 0, "empty flow complex")
+
+    # Flow Reconstruction: port 0 unstructured grid, port 1 profile table, port 2 arrows
+    recon.UpdatePipeline()
+    info = recon.GetDataInformation()
+    say("gui_pipeline: reconstruction %s, %d points, %d cells" % (
+        info.GetDataSetTypeAsString(), info.GetNumberOfPoints(), info.GetNumberOfCells()))
+    check(info.GetDataSetTypeAsString() == "vtkUnstructuredGrid", "reconstruction type")
+    check(info.GetNumberOfCells() > 1000, "reconstruction has %d cells" % info.GetNumberOfCells())
+    keys = recon.CellData.keys()
+    for a in ("Step", "Priority", "Threshold", "Extension", "Sponsor", "NodeId", "Index",
+              "CriticalValue"):
+        check(a in keys, "reconstruction has no cell array %s (has %s)" % (a, keys))
+    threshold = recon.CellData["Threshold"].GetRange()
+    check(threshold[1] < 2.0, "Threshold range %s at t_r 2" % (threshold,))
+    profile = servermanager.Fetch(recon, idx=1)
+    columns = [profile.GetColumnName(i) for i in range(profile.GetNumberOfColumns())]
+    for c in ("Step", "NodeId", "Index", "Priority", "Threshold"):
+        check(c in columns, "profile has no column %s (has %s)" % (c, columns))
+    check(profile.GetNumberOfRows() > 1000, "profile has %d rows" % profile.GetNumberOfRows())
+    arrows = OutputPort(recon, 2)
+    check(arrows.GetDataInformation().GetNumberOfCells() > 0, "no sponsor arrows")
+
+    # render in the GUI's view, coloured by CriticalValue
+    view = GetActiveViewOrCreate("RenderView")
+    display = Show(recon, view)
+    ColorBy(display, ("CELLS", "CriticalValue"))
+    display.RescaleTransferFunctionToDataRange(True, False)
+    display.SetScalarBarVisibility(view, True)
+    lut = GetColorTransferFunction("CriticalValue")
+    rng = lut.RGBPoints[0], lut.RGBPoints[-4]
+    check(0.0 <= rng[0] < rng[1] < 1.0, "CriticalValue colour range %s" % (rng,))
+    view.CameraPosition = [1.5, -3.5, 2.6]
+    view.CameraFocalPoint = [0.0, 0.0, 0.4]
+    view.CameraViewUp = [0.0, 0.0, 1.0]
+    view.ResetCamera()
+    Render(view)
+    SaveScreenshot(out + ".png", view, ImageResolution=[800, 600])
+    check(os.path.getsize(out + ".png") > 10000, "screenshot %s too small" % (out + ".png"))
+    say("gui_pipeline: wrote %s.png (CriticalValue %.3g..%.3g)" % (out, rng[0], rng[1]))
+    say("gui_pipeline: PASS")
+
+
+try:
+    main()
+    status = 0
+except Exception:  # noqa: BLE001 - report anything, then leave the GUI
+    say(traceback.format_exc())
+    say("gui_pipeline: FAIL")
+    status = 1
+if os.environ.get("FLOWRECON_EXIT", "1") == "1":
+    os._exit(status)
