@@ -293,7 +293,7 @@ int vtkFlowReconstruction::RequestData(
   {
     grid->GetCellData()->AddArray(a);
   }
-  grid->GetCellData()->SetActiveScalars("Threshold");
+  grid->GetCellData()->SetActiveScalars("CriticalValue");
 
   // Port 1: the profile of the whole run.
   auto pStep = Named<vtkIdTypeArray>("Step");

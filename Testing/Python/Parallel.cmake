@@ -35,3 +35,13 @@ if (FLOWRECON_BUILD_PARAVIEW_PLUGIN AND TARGET FlowRecon AND FLOWRECON_PVPYTHON)
   set_tests_properties(pv.reader_proxy PROPERTIES LABELS "paraview" TIMEOUT 120
     PASS_REGULAR_EXPRESSION "PASS")
 endif ()
+
+# The README's Python examples, as written.
+if (FLOWRECON_WRAP_PYTHON AND FLOWRECON_PVPYTHON AND TARGET FlowRecon)
+  add_test(NAME py.readme_examples
+    COMMAND "${FLOWRECON_TEST_PYTHON}" "${CMAKE_CURRENT_SOURCE_DIR}/test_readme_examples.py"
+            "${PROJECT_SOURCE_DIR}/README.md" "${PROJECT_SOURCE_DIR}" "${CMAKE_BINARY_DIR}"
+            "${FLOWRECON_PVPYTHON}" "${CMAKE_CURRENT_BINARY_DIR}/readme_examples")
+  set_tests_properties(py.readme_examples PROPERTIES LABELS "python" TIMEOUT 300
+    PASS_REGULAR_EXPRESSION "PASS")
+endif ()
