@@ -38,7 +38,7 @@ grid4_exact              64   (1, 0, 0)    exact 4x4x4 integer grid: degenerate 
 The shapes above are i.i.d. samples: they have clusters and gaps, so a reconstruction
 may punch holes in them (the paper's guarantee assumes a roughly uniform sampling).
 The quasi-uniform shapes below are made by greedy farthest-point subsampling
-(``farthest_points``) of a dense i.i.d. sample of the same set (``QU_FACTOR`` = 10
+(``farthest_points``) of a dense i.i.d. sample of the same set (``QU_FACTOR`` = 30
 times the size, 4 times for the larger experiment models), or by an even spacing
 with a small jitter for curves; consecutive points are about the same distance
 apart everywhere, which is the paper's rho-uniform sampling:
@@ -231,7 +231,7 @@ def grid4_exact(k, rng):
 
 # --------------------------------------------------------------------------- quasi-uniform
 
-QU_FACTOR = 10
+QU_FACTOR = 30
 
 
 def farthest_points(candidates, n):
