@@ -8,6 +8,7 @@ vtk_module_add_module(FlowRecon::Filters
     ${_flowrecon_filters_dir}/vtkFlowReconstruction
     ${_flowrecon_filters_dir}/vtkPointCloudReader
   PRIVATE_HEADERS
+    ${_flowrecon_filters_dir}/CoreCall.h
     ${_flowrecon_filters_dir}/FlowComplexConversion.h
   SOURCES
     ${_flowrecon_filters_dir}/FlowComplexConversion.cxx)

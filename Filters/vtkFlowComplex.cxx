@@ -1,6 +1,7 @@
 #include "vtkFlowComplex.h"
 
 #include "FlowComplexBuilder.h"
+#include "CoreCall.h"
 #include "FlowComplexConversion.h"
 
 #include "vtkDataObject.h"
@@ -77,34 +78,14 @@ int vtkFlowComplex::RequestData(
   options.StableManifolds = this->ComputeStableManifolds;
   options.UnstableManifolds = this->ComputeUnstableManifolds;
   options.Seed = static_cast<std::uint64_t>(static_cast<unsigned int>(this->PerturbationSeed));
-  flowrecon::Progress progress;
-  progress.Report = [this](double fraction, const char* phase) {
-    this->SetProgressText(phase);
-    this->UpdateProgress(fraction);
-  };
-  progress.ShouldAbort = [this]() { return this->GetAbortExecute() != 0; };
-  try
-  {
-    const flowrecon::FlowComplex fc = flowrecon::BuildFlowComplex(samples, options, progress);
-    flowrecon::ToMultiBlock(fc, output);
-  }
-  catch (const flowrecon::InputError& e)
-  {
-    vtkErrorMacro(<< e.what());
-    return 0;
-  }
-  catch (const flowrecon::Aborted&)
-  {
-    output->Initialize();
-    return 1; // an abort is not an error; the pipeline reports it
-  }
-  catch (const std::exception& e)
-  {
-    vtkErrorMacro(<< "flow complex construction failed: " << e.what());
-    return 0;
-  }
-  this->SetProgressText(nullptr);
-  return 1;
+  const flowrecon::Progress progress = flowrecon::AlgorithmProgress(this);
+  return flowrecon::CallCore(
+    this, "flow complex construction",
+    [&]() {
+      const flowrecon::FlowComplex fc = flowrecon::BuildFlowComplex(samples, options, progress);
+      flowrecon::ToMultiBlock(fc, output);
+    },
+    [&]() { output->Initialize(); });
 }
 
 //------------------------------------------------------------------------------

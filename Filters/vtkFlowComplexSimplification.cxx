@@ -1,5 +1,6 @@
 #include "vtkFlowComplexSimplification.h"
 
+#include "CoreCall.h"
 #include "FlowComplexConversion.h"
 #include "Simplification.h"
 
@@ -59,37 +60,17 @@ int vtkFlowComplexSimplification::RequestData(
     return 0;
   }
 
-  flowrecon::Progress progress;
-  progress.Report = [this](double fraction, const char* phase) {
-    this->SetProgressText(phase);
-    this->UpdateProgress(fraction);
-  };
-  progress.ShouldAbort = [this]() { return this->GetAbortExecute() != 0; };
-  try
-  {
-    const flowrecon::SimplificationResult s =
-      flowrecon::Simplify(fc.Nodes, fc.Arcs, this->PersistenceThreshold, progress);
-    fc.Arcs = s.Arcs; // the HasseDiagram block shows the simplified diagram
-    flowrecon::ToMultiBlock(fc, output);
-    flowrecon::AddSimplification(fc, s, this->PersistenceThreshold, output);
-  }
-  catch (const flowrecon::InputError& e)
-  {
-    vtkErrorMacro(<< e.what());
-    return 0;
-  }
-  catch (const flowrecon::Aborted&)
-  {
-    output->Initialize();
-    return 1; // an abort is not an error; the pipeline reports it
-  }
-  catch (const std::exception& e)
-  {
-    vtkErrorMacro(<< "simplification failed: " << e.what());
-    return 0;
-  }
-  this->SetProgressText(nullptr);
-  return 1;
+  const flowrecon::Progress progress = flowrecon::AlgorithmProgress(this);
+  return flowrecon::CallCore(
+    this, "simplification",
+    [&]() {
+      const flowrecon::SimplificationResult s =
+        flowrecon::Simplify(fc.Nodes, fc.Arcs, this->PersistenceThreshold, progress);
+      fc.Arcs = s.Arcs; // the HasseDiagram block shows the simplified diagram
+      flowrecon::ToMultiBlock(fc, output);
+      flowrecon::AddSimplification(fc, s, this->PersistenceThreshold, output);
+    },
+    [&]() { output->Initialize(); });
 }
 
 //------------------------------------------------------------------------------

@@ -1,5 +1,6 @@
 #include "vtkFlowReconstruction.h"
 
+#include "CoreCall.h"
 #include "FlowComplexConversion.h"
 #include "Reconstruction.h"
 #include "Simplification.h"
@@ -144,36 +145,27 @@ int vtkFlowReconstruction::RequestData(
       return 0;
     }
     const auto& nodes = cache->FC.Nodes;
-    flowrecon::Progress progress;
-    progress.Report = [this](double fraction, const char* phase) {
-      this->SetProgressText(phase);
-      this->UpdateProgress(0.9 * fraction);
-    };
-    progress.ShouldAbort = [this]() { return this->GetAbortExecute() != 0; };
-    try
+    // The queue is 90% of the work; the selection below reports the rest.
+    const flowrecon::Progress progress = flowrecon::AlgorithmProgress(this, 0.9);
+    bool finished = false;
+    const int ok = flowrecon::CallCore(
+      this, "reconstruction",
+      [&]() {
+        const std::vector<Id> init = flowrecon::InitializationEdges(
+          nodes, flowrecon::NearestNeighboursFromDiagram(nodes, cache->FC.Arcs));
+        ++this->NumberOfQueueRuns;
+        cache->Run =
+          flowrecon::Reconstruct(nodes, cache->FC.Arcs, s.Survives, init, HUGE_VAL, progress);
+        finished = true;
+      },
+      [&]() {
+        grid->Initialize();
+        profile->Initialize();
+        arrows->Initialize();
+      });
+    if (!finished)
     {
-      const std::vector<Id> init = flowrecon::InitializationEdges(
-        nodes, flowrecon::NearestNeighboursFromDiagram(nodes, cache->FC.Arcs));
-      ++this->NumberOfQueueRuns;
-      cache->Run =
-        flowrecon::Reconstruct(nodes, cache->FC.Arcs, s.Survives, init, HUGE_VAL, progress);
-    }
-    catch (const flowrecon::InputError& e)
-    {
-      vtkErrorMacro(<< e.what());
-      return 0;
-    }
-    catch (const flowrecon::Aborted&)
-    {
-      grid->Initialize();
-      profile->Initialize();
-      arrows->Initialize();
-      return 1; // an abort is not an error; nothing is cached
-    }
-    catch (const std::exception& e)
-    {
-      vtkErrorMacro(<< "reconstruction failed: " << e.what());
-      return 0;
+      return ok; // failed (0) or aborted (1, nothing cached)
     }
     const auto& steps = cache->Run.Nodes;
     cache->Carrier.assign(nodes.size(), -1);

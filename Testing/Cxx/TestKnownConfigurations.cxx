@@ -5,6 +5,7 @@
 #include "Check.h"
 
 #include "FlowComplexBuilder.h"
+#include "FlowComplexQueries.h"
 #include "Persistence.h"
 
 #include <algorithm>
@@ -57,32 +58,8 @@ void CheckValues(const FlowComplex& fc, int index, std::vector<double> expected,
   }
 }
 
-Id NodeOf(const FlowComplex& fc, std::vector<Id> simplex)
-{
-  std::sort(simplex.begin(), simplex.end());
-  for (std::size_t i = 0; i < fc.Nodes.size(); ++i)
-  {
-    const Node& n = fc.Nodes[i];
-    if (n.Index == static_cast<int>(simplex.size()) - 1 &&
-      std::equal(simplex.begin(), simplex.end(), n.Simplex.begin()))
-    {
-      return static_cast<Id>(i);
-    }
-  }
-  return -1;
-}
-
-int Multiplicity(const FlowComplex& fc, Id lower, Id upper)
-{
-  for (const Arc& a : fc.Arcs)
-  {
-    if (a.Lower == lower && a.Upper == upper)
-    {
-      return a.Multiplicity;
-    }
-  }
-  return 0;
-}
+using queries::Multiplicity;
+using queries::NodeOf;
 
 double Area(const FlowComplex& fc, Id node)
 {

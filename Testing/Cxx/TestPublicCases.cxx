@@ -17,6 +17,7 @@
 #include "Check.h"
 
 #include "FlowComplexBuilder.h"
+#include "FlowComplexQueries.h"
 
 #include <algorithm>
 #include <array>
@@ -43,32 +44,8 @@ void CheckCounts(const FlowComplex& fc, std::array<Id, 4> expected)
   CHECK(n[0] - n[1] + n[2] - n[3] == 1);
 }
 
-Id NodeOf(const FlowComplex& fc, std::vector<Id> simplex)
-{
-  std::sort(simplex.begin(), simplex.end());
-  for (std::size_t i = 0; i < fc.Nodes.size(); ++i)
-  {
-    const Node& n = fc.Nodes[i];
-    if (n.Index == static_cast<int>(simplex.size()) - 1 &&
-      std::equal(simplex.begin(), simplex.end(), n.Simplex.begin()))
-    {
-      return static_cast<Id>(i);
-    }
-  }
-  return -1;
-}
-
-int Multiplicity(const FlowComplex& fc, Id lower, Id upper)
-{
-  for (const Arc& a : fc.Arcs)
-  {
-    if (a.Lower == lower && a.Upper == upper)
-    {
-      return a.Multiplicity;
-    }
-  }
-  return 0;
-}
+using queries::Multiplicity;
+using queries::NodeOf;
 
 /// Each listed simplex is a node of the right index with the given value, and
 /// there is no other finite node of that index.

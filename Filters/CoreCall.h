@@ -1,0 +1,63 @@
+// How a FlowRecon filter calls the core: progress and abort are forwarded to the
+// VTK algorithm, and the core's exceptions become VTK's conventions (an error
+// message and a failed request, or an empty output for an abort).
+#ifndef CoreCall_h
+#define CoreCall_h
+
+#include "Progress.h" // core progress and exceptions
+
+#include "vtkAlgorithm.h"
+#include "vtkSetGet.h"
+
+#include <exception>
+#include <string>
+
+namespace flowrecon
+{
+
+/// Progress forwarded to `algorithm` (progress text, UpdateProgress scaled by
+/// `scale`, and its abort flag).
+inline Progress AlgorithmProgress(vtkAlgorithm* algorithm, double scale = 1.0)
+{
+  Progress progress;
+  progress.Report = [algorithm, scale](double fraction, const char* phase) {
+    algorithm->SetProgressText(phase);
+    algorithm->UpdateProgress(scale * fraction);
+  };
+  progress.ShouldAbort = [algorithm]() { return algorithm->GetAbortExecute() != 0; };
+  return progress;
+}
+
+/// Runs `work()`. Returns 1 if it succeeds; on an abort calls `onAbort()` (which
+/// empties the outputs) and returns 1, since an abort is not an error; on any
+/// other exception reports it (prefixed by `what` unless it is bad input) and
+/// returns 0.
+template <class Work, class OnAbort>
+int CallCore(vtkAlgorithm* algorithm, const char* what, Work&& work, OnAbort&& onAbort)
+{
+  try
+  {
+    work();
+  }
+  catch (const InputError& e)
+  {
+    vtkErrorWithObjectMacro(algorithm, << e.what());
+    return 0;
+  }
+  catch (const Aborted&)
+  {
+    onAbort();
+    return 1;
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorWithObjectMacro(algorithm, << what << " failed: " << e.what());
+    return 0;
+  }
+  algorithm->SetProgressText(nullptr);
+  return 1;
+}
+
+} // namespace flowrecon
+
+#endif
