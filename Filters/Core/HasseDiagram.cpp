@@ -8,6 +8,24 @@
 namespace flowrecon
 {
 
+void ValidateArc(const std::vector<Node>& nodes, const Arc& a, std::size_t position)
+{
+  const Id n = static_cast<Id>(nodes.size());
+  const auto where = [position] { return "Hasse diagram: arc " + std::to_string(position); };
+  if (a.Lower < 0 || a.Lower >= n || a.Upper < 0 || a.Upper >= n)
+  {
+    throw InputError(where() + " refers to a node that does not exist");
+  }
+  if (nodes[a.Upper].Index != nodes[a.Lower].Index + 1)
+  {
+    throw InputError(where() + " does not go up by one index");
+  }
+  if (a.Multiplicity < 0)
+  {
+    throw InputError(where() + " has a negative multiplicity");
+  }
+}
+
 HasseDiagram::HasseDiagram(const std::vector<Node>& nodes, const std::vector<Arc>& arcs)
   : InLists(nodes.size())
   , OutLists(nodes.size())
@@ -31,19 +49,7 @@ HasseDiagram::HasseDiagram(const std::vector<Node>& nodes, const std::vector<Arc
   for (std::size_t i = 0; i < arcs.size(); ++i)
   {
     const Arc& a = arcs[i];
-    const auto where = [i] { return "Hasse diagram: arc " + std::to_string(i); };
-    if (a.Lower < 0 || a.Lower >= n || a.Upper < 0 || a.Upper >= n)
-    {
-      throw InputError(where() + " refers to a node that does not exist");
-    }
-    if (nodes[a.Upper].Index != nodes[a.Lower].Index + 1)
-    {
-      throw InputError(where() + " does not go up by one index");
-    }
-    if (a.Multiplicity < 0)
-    {
-      throw InputError(where() + " has a negative multiplicity");
-    }
+    ValidateArc(nodes, a, i);
     if (a.Multiplicity == 0)
     {
       continue;

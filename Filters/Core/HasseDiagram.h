@@ -11,6 +11,10 @@
 namespace flowrecon
 {
 
+/// Throws InputError (naming arc `position`) unless `arc` joins two existing
+/// nodes, goes up by one index and has a non-negative multiplicity.
+void ValidateArc(const std::vector<Node>& nodes, const Arc& arc, std::size_t position);
+
 /// Every arc is stored twice, in Out(lower) and in In(upper), each copy knowing
 /// where the other one is. Removing an arc is then O(1) (swap-and-pop in both
 /// lists), however large a degree grows: merged maxima and the maximum at

@@ -1,5 +1,7 @@
 #include "Reconstruction.h"
 
+#include "HasseDiagram.h"
+
 #include <algorithm>
 #include <array>
 #include <queue>
@@ -15,26 +17,13 @@ namespace
 void CheckArcs(const std::vector<Node>& nodes, const std::vector<Arc>& arcs,
   const std::vector<bool>* survives)
 {
-  const Id n = static_cast<Id>(nodes.size());
   for (std::size_t i = 0; i < arcs.size(); ++i)
   {
     const Arc& a = arcs[i];
-    const auto where = [i] { return "Hasse diagram: arc " + std::to_string(i); };
-    if (a.Lower < 0 || a.Lower >= n || a.Upper < 0 || a.Upper >= n)
-    {
-      throw InputError(where() + " refers to a node that does not exist");
-    }
-    if (nodes[a.Upper].Index != nodes[a.Lower].Index + 1)
-    {
-      throw InputError(where() + " does not go up by one index");
-    }
-    if (a.Multiplicity < 0)
-    {
-      throw InputError(where() + " has a negative multiplicity");
-    }
+    ValidateArc(nodes, a, i);
     if (survives && a.Multiplicity > 0 && (!(*survives)[a.Lower] || !(*survives)[a.Upper]))
     {
-      throw InputError(where() + " touches a cancelled node");
+      throw InputError("Hasse diagram: arc " + std::to_string(i) + " touches a cancelled node");
     }
   }
 }
