@@ -5,6 +5,7 @@
 #include "Progress.h"
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace flowrecon
@@ -151,11 +152,15 @@ const SuccessorForest::Step& SuccessorForest::Next(Id cell)
 
 void SuccessorForest::ComputeNext(Id id, Step& step)
 {
-  step.PathBegin = static_cast<std::int64_t>(this->Paths.size());
+  if (this->Paths.size() >= std::numeric_limits<std::uint32_t>::max())
+  {
+    throw std::runtime_error("too many unstable-manifold points to record");
+  }
+  step.PathBegin = static_cast<std::uint32_t>(this->Paths.size());
   if (this->MaximumOfCell[id] >= 0)
   {
     step.Kind = ToMaximum;
-    step.Target = this->MaximumOfCell[id];
+    step.Target = static_cast<std::int32_t>(this->MaximumOfCell[id]);
     return;
   }
   const CellHandle c = this->Tri.Cell(id);
@@ -176,13 +181,13 @@ void SuccessorForest::ComputeNext(Id id, Step& step)
         n = -n;
       }
       step.Kind = ToInfinity;
-      step.Target = this->Infinity;
+      step.Target = static_cast<std::int32_t>(this->Infinity);
       this->Paths.push_back(Along(this->Circumcentre(id), { { n.x(), n.y(), n.z() } }, this->Stub));
       step.PathCount = 1;
       return;
     }
     step.Kind = ToCell;
-    step.Target = this->Tri.CellId(next);
+    step.Target = static_cast<std::int32_t>(this->Tri.CellId(next));
     return;
   }
   if (driver.Type == CellDriver::Cell)
@@ -217,12 +222,12 @@ void SuccessorForest::ComputeNext(Id id, Step& step)
     const Point3 from = end.Points.empty() ? this->Circumcentre(id) : end.Points.back();
     this->Paths.push_back(Along(from, end.Escape, this->Stub));
     step.Kind = ToInfinity;
-    step.Target = this->Infinity;
+    step.Target = static_cast<std::int32_t>(this->Infinity);
   }
   else
   {
     step.Kind = ToCell;
-    step.Target = end.Cell;
+    step.Target = static_cast<std::int32_t>(end.Cell);
   }
   step.PathCount = static_cast<std::uint32_t>(this->Paths.size() - step.PathBegin);
 }
@@ -249,7 +254,7 @@ Id SuccessorForest::Root(Id cell)
   const Id root = this->Roots[id];
   for (const Id c : chain)
   {
-    this->Roots[c] = root;
+    this->Roots[c] = static_cast<std::int32_t>(root);
   }
   return root;
 }

@@ -44,12 +44,13 @@ private:
     ToCell,
     ToInfinity
   };
+  // 16 bytes: one per Delaunay cell, so its size shows in the memory per point.
   struct Step
   {
-    std::int8_t Kind = Unknown;
-    Id Target = -1;          // node id (ToMaximum) or cell id (ToCell)
+    std::int32_t Target = -1;     // node id (ToMaximum) or cell id (ToCell)
+    std::uint32_t PathBegin = 0;  // into Paths: walk points (and the stub for ToInfinity)
     std::uint32_t PathCount = 0;
-    std::int64_t PathBegin = 0; // into Paths: walk points (and the stub for ToInfinity)
+    std::int8_t Kind = Unknown;
   };
   const Step& Next(Id cell);
   void ComputeNext(Id cell, Step& step);
@@ -59,7 +60,7 @@ private:
   Id Infinity;
   double Stub;
   std::vector<Step> Steps;
-  std::vector<Id> Roots;
+  std::vector<std::int32_t> Roots;
   std::vector<Point3> Paths;
   std::vector<Point3> Centres;
   std::vector<bool> HasCentre, Drawn;

@@ -15,7 +15,8 @@ class Triangulation
 {
 public:
   /// Builds the triangulation of `points` (inserted with spatial sorting); vertex
-  /// info is the index into `points`. Points must be pairwise distinct.
+  /// info is the index into `points`. Points must be pairwise distinct, and must
+  /// outlive the triangulation (they are referenced, not copied).
   explicit Triangulation(const std::vector<Point3>& points);
 
   const Delaunay& Dt() const { return this->DT; }
@@ -42,7 +43,7 @@ public:
   bool Facet(Id a, Id b, Id c, CellHandle& cell, int& opposite) const;
 
 private:
-  std::vector<Point3> Coords;
+  const std::vector<Point3>& Coords;
   Delaunay DT;
   std::vector<VertexHandle> Vertices;
   std::vector<CellHandle> Cells;
