@@ -159,9 +159,9 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
   // Arcs grouped by the index of their lower node: 0->1 now, 1->2 from the
   // patches, 2->3 from the flow lines.
   fc.Arcs.clear();
-  // Measured on volume samples: about 3.8 arcs 1->2 per index-2 node, so this
-  // avoids the doubling reallocation of the largest vector (surfaces have more).
-  fc.Arcs.reserve(static_cast<std::size_t>(2 * nEdges + 6.5 * static_cast<double>(nFacets)));
+  // Measured on volume samples: about 3.8 arcs 1->2 per index-2 node, so 6 per
+  // node avoids the doubling reallocation of the largest vector (surfaces have more).
+  fc.Arcs.reserve(static_cast<std::size_t>(2 * nEdges + 6 * nFacets));
   for (Id i = 0; i < nEdges; ++i)
   {
     fc.Arcs.emplace_back(cs.Edges[i][0], base1 + i, 1);
@@ -175,7 +175,8 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
   fc.NumberOfInputPoints = static_cast<Id>(this->Input.size());
   fc.Triangles.clear();
   fc.TriangleNode.clear();
-  std::vector<Id> triangleBegin(cs.Facets.size() + 1, 0);
+  // Where each patch's triangles start (for the index-3 cones); geometry only.
+  std::vector<Id> triangleBegin(this->Options.StableManifolds ? cs.Facets.size() + 1 : 0, 0);
   const double nf = static_cast<double>(nFacets) + 1;
   // Patches are independent: compute them in parallel, chunk by chunk, and merge
   // them in node order on this thread (which also reports progress).
@@ -224,9 +225,9 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
         fc.Arcs.emplace_back(base1 + patch.Arrivals[k], node, static_cast<Id>(l - k));
         k = l;
       }
-      triangleBegin[i] = static_cast<Id>(fc.Triangles.size());
       if (this->Options.StableManifolds)
       {
+        triangleBegin[i] = static_cast<Id>(fc.Triangles.size());
         const Id offset = static_cast<Id>(fc.Points.size());
         fc.Points.insert(fc.Points.end(), patch.Constructed.begin(), patch.Constructed.end());
         fc.NodePoint[node] = offset; // Constructed[0] is the critical point
@@ -245,18 +246,25 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
     }
   }
   std::vector<Patch>().swap(patches);
-  triangleBegin[cs.Facets.size()] = static_cast<Id>(fc.Triangles.size());
+  if (this->Options.StableManifolds)
+  {
+    triangleBegin[cs.Facets.size()] = static_cast<Id>(fc.Triangles.size());
+  }
+  // The edge adjacency served the walks only.
+  std::vector<Id>().swap(cs.Offsets);
+  std::vector<std::int32_t>().swap(cs.Neighbours);
+  std::vector<std::int32_t>().swap(cs.GabrielIndex);
   fc.Time.StableManifolds = Seconds(t);
 
   // Unstable manifolds: the two flow lines of each index-2 point.
   t = Clock::now();
-  std::vector<std::array<Id, 2>> ends(cs.Facets.size());
+  std::vector<std::array<std::int32_t, 2>> ends(cs.Facets.size()); // maxima reached
   fc.FlowLines.clear();
   {
-    std::vector<Id> maximumOfCell(static_cast<std::size_t>(tri->NumberOfCells()), -1);
+    std::vector<std::int32_t> maximumOfCell(static_cast<std::size_t>(tri->NumberOfCells()), -1);
     for (std::size_t i = 0; i < cs.Cells.size(); ++i)
     {
-      maximumOfCell[cs.CellOfMaximum[i]] = base3 + static_cast<Id>(i);
+      maximumOfCell[cs.CellOfMaximum[i]] = static_cast<std::int32_t>(base3 + static_cast<Id>(i));
     }
     const double stub = 0.25 * this->In.Diagonal;
     SuccessorForest forest(*tri, maximumOfCell, fc.InfinityNode, stub);
@@ -341,7 +349,7 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
           }
           throw;
         }
-        ends[i][s] = line.Target;
+        ends[i][s] = static_cast<std::int32_t>(line.Target);
         if (record)
         {
           fc.FlowLines.push_back(std::move(line));

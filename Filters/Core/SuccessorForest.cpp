@@ -112,7 +112,7 @@ WalkEnd FacetWalk(
 } // namespace
 
 SuccessorForest::SuccessorForest(
-  const Triangulation& tri, const std::vector<Id>& maximumOfCell, Id infinity, double stub)
+  const Triangulation& tri, const std::vector<std::int32_t>& maximumOfCell, Id infinity, double stub)
   : Tri(tri)
   , MaximumOfCell(maximumOfCell)
   , Infinity(infinity)

@@ -19,7 +19,7 @@ public:
   /// `maximumOfCell[cellId]` is the node id of the maximum at a self-centred cell
   /// (else -1); `infinity` the node id of the maximum at infinity; `stub` the
   /// length of the segment drawn for a flow line that escapes to infinity.
-  SuccessorForest(const Triangulation& tri, const std::vector<Id>& maximumOfCell, Id infinity,
+  SuccessorForest(const Triangulation& tri, const std::vector<std::int32_t>& maximumOfCell, Id infinity,
     double stub);
 
   /// The maximum reached by the flow from the Voronoi vertex of finite cell `cell`.
@@ -56,7 +56,7 @@ private:
   void ComputeNext(Id cell, Step& step);
 
   const Triangulation& Tri;
-  const std::vector<Id>& MaximumOfCell;
+  const std::vector<std::int32_t>& MaximumOfCell;
   Id Infinity;
   double Stub;
   std::vector<Step> Steps;
