@@ -113,6 +113,7 @@ CriticalSimplices FindCriticalSimplices(const Triangulation& tri, const Progress
   // vertex of an edge is the third vertex of one of its facets, so the edges
   // never marked are exactly the Gabriel edges (CGAL's is_Gabriel, in one pass).
   std::vector<std::pair<std::array<Id, 3>, std::pair<CellHandle, int>>> facets;
+  facets.reserve(dt.number_of_finite_facets() * 2 / 5); // ~36% are critical: no doubling
   for (auto f = dt.finite_facets_begin(); f != dt.finite_facets_end(); ++f)
   {
     tick();

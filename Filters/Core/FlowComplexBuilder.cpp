@@ -267,7 +267,8 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
       maximumOfCell[cs.CellOfMaximum[i]] = static_cast<std::int32_t>(base3 + static_cast<Id>(i));
     }
     const double stub = 0.25 * this->In.Diagonal;
-    SuccessorForest forest(*tri, maximumOfCell, fc.InfinityNode, stub);
+    SuccessorForest forest(
+      *tri, maximumOfCell, fc.InfinityNode, stub, this->Options.UnstableManifolds);
     for (std::size_t i = 0; i < cs.Facets.size(); ++i)
     {
       if ((i & 0x3FF) == 0)

@@ -37,8 +37,8 @@ struct WalkEnd
 // link sample becomes equidistant; then either slides along the Voronoi edge of
 // an acute triangle to a Voronoi vertex, or continues in another Voronoi facet.
 template <class FT>
-WalkEnd FacetWalk(
-  const Triangulation& tri, EdgePoint<FT> x, Id a, Id b, std::vector<Id> excl, CellHandle hint)
+WalkEnd FacetWalk(const Triangulation& tri, EdgePoint<FT> x, Id a, Id b, std::vector<Id> excl,
+  CellHandle hint, bool record)
 {
   WalkEnd end;
   for (Id steps = 0;; ++steps)
@@ -53,6 +53,10 @@ WalkEnd FacetWalk(
     if (!FirstExit(tri, x, a, b, excl, false, hint, s, y, cell))
     {
       // Unbounded Voronoi facet: the flow goes to infinity, away from m_ab.
+      if (!record)
+      {
+        return end;
+      }
       const Point3 p = Frame<FT>(tri, x.G).At(x.Lambda).ToDouble();
       const Point3 &pa = tri.Coord(a), &pb = tri.Coord(b);
       end.Escape = { { p[0] - 0.5 * (pa[0] + pb[0]), p[1] - 0.5 * (pa[1] + pb[1]),
@@ -60,7 +64,10 @@ WalkEnd FacetWalk(
       return end;
     }
     const Frame<FT> frame(tri, y.G);
-    end.Points.push_back(RequireTight(frame.At(y.Lambda)));
+    if (record) // the polyline only; the walk needs no coordinates
+    {
+      end.Points.push_back(RequireTight(frame.At(y.Lambda)));
+    }
     const int obtuse = ObtuseCorner(tri.KCoord(a), tri.KCoord(b), tri.KCoord(s));
     if (obtuse == 2)
     {
@@ -111,12 +118,13 @@ WalkEnd FacetWalk(
 
 } // namespace
 
-SuccessorForest::SuccessorForest(
-  const Triangulation& tri, const std::vector<std::int32_t>& maximumOfCell, Id infinity, double stub)
+SuccessorForest::SuccessorForest(const Triangulation& tri,
+  const std::vector<std::int32_t>& maximumOfCell, Id infinity, double stub, bool record)
   : Tri(tri)
   , MaximumOfCell(maximumOfCell)
   , Infinity(infinity)
   , Stub(stub)
+  , Record(record)
   , Steps(static_cast<std::size_t>(tri.NumberOfCells()))
   , Roots(static_cast<std::size_t>(tri.NumberOfCells()), -1)
 {
@@ -182,8 +190,12 @@ void SuccessorForest::ComputeNext(Id id, Step& step)
       }
       step.Kind = ToInfinity;
       step.Target = static_cast<std::int32_t>(this->Infinity);
-      this->Paths.push_back(Along(this->Circumcentre(id), { { n.x(), n.y(), n.z() } }, this->Stub));
-      step.PathCount = 1;
+      if (this->Record)
+      {
+        this->Paths.push_back(
+          Along(this->Circumcentre(id), { { n.x(), n.y(), n.z() } }, this->Stub));
+        step.PathCount = 1;
+      }
       return;
     }
     step.Kind = ToCell;
@@ -213,14 +225,17 @@ void SuccessorForest::ComputeNext(Id id, Step& step)
       auto P = [&](int i) { return Vec<FT>::From(this->Tri.Coord(c->vertex(i)->info())); };
       const Vec<FT> centre = Circumcenter(P(0), P(1), P(2), P(3));
       start.Lambda = (centre - frame.C).Dot(frame.N) / frame.N.SquaredLength();
-      return FacetWalk<FT>(this->Tri, start, a, b, excl, c);
+      return FacetWalk<FT>(this->Tri, start, a, b, excl, c, this->Record);
     },
     this->ExactFallbacks);
   this->Paths.insert(this->Paths.end(), end.Points.begin(), end.Points.end());
   if (end.Cell < 0)
   {
-    const Point3 from = end.Points.empty() ? this->Circumcentre(id) : end.Points.back();
-    this->Paths.push_back(Along(from, end.Escape, this->Stub));
+    if (this->Record)
+    {
+      const Point3 from = end.Points.empty() ? this->Circumcentre(id) : end.Points.back();
+      this->Paths.push_back(Along(from, end.Escape, this->Stub));
+    }
     step.Kind = ToInfinity;
     step.Target = static_cast<std::int32_t>(this->Infinity);
   }

@@ -18,9 +18,11 @@ class SuccessorForest
 public:
   /// `maximumOfCell[cellId]` is the node id of the maximum at a self-centred cell
   /// (else -1); `infinity` the node id of the maximum at infinity; `stub` the
-  /// length of the segment drawn for a flow line that escapes to infinity.
-  SuccessorForest(const Triangulation& tri, const std::vector<std::int32_t>& maximumOfCell, Id infinity,
-    double stub);
+  /// length of the segment drawn for a flow line that escapes to infinity;
+  /// `record` keeps the points of the flow lines (for AppendPath), else only the
+  /// maxima reached are computed.
+  SuccessorForest(const Triangulation& tri, const std::vector<std::int32_t>& maximumOfCell,
+    Id infinity, double stub, bool record);
 
   /// The maximum reached by the flow from the Voronoi vertex of finite cell `cell`.
   Id Root(Id cell);
@@ -59,6 +61,7 @@ private:
   const std::vector<std::int32_t>& MaximumOfCell;
   Id Infinity;
   double Stub;
+  bool Record;
   std::vector<Step> Steps;
   std::vector<std::int32_t> Roots;
   std::vector<Point3> Paths;
