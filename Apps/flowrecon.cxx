@@ -500,6 +500,25 @@ FlowComplexOptions CommonOptions(const Arguments& args, const char* label)
   return options;
 }
 
+// Runs `filter` (already connected) with the progress line; throws on failure.
+void RunFilter(vtkAlgorithm* filter, const std::string& input, const FlowComplexOptions& options,
+  const char* what)
+{
+  vtkNew<ProgressLine> progress;
+  progress->Label = options.Label;
+  progress->Show = !options.Quiet && isatty(2);
+  filter->AddObserver(vtkCommand::ProgressEvent, progress);
+  Messages->FirstError.clear();
+  const int ok = filter->GetExecutive()->Update();
+  progress->Finish();
+  ThrowIfInterrupted();
+  if (!ok)
+  {
+    throw Failure(input + ": " +
+      (Messages->FirstError.empty() ? std::string(what) + " failed" : Messages->FirstError));
+  }
+}
+
 // Reads the point cloud `file` and computes its flow complex.
 vtkSmartPointer<vtkMultiBlockDataSet> ComputeFlowComplex(
   const std::string& file, const FlowComplexOptions& options)
@@ -516,20 +535,11 @@ vtkSmartPointer<vtkMultiBlockDataSet> ComputeFlowComplex(
   filter->SetInputConnection(reader->GetOutputPort());
   filter->SetComputeStableManifolds(options.Stable);
   filter->SetComputeUnstableManifolds(options.Unstable);
-  vtkNew<ProgressLine> progress;
-  progress->Label = options.Label;
-  progress->Show = !options.Quiet && isatty(2);
-  filter->AddObserver(vtkCommand::ProgressEvent, progress);
-  Messages->FirstError.clear();
-  const int ok = filter->GetExecutive()->Update();
-  progress->Finish();
-  ThrowIfInterrupted();
+  RunFilter(filter, file, options, "flow complex computation");
   auto* output = vtkMultiBlockDataSet::SafeDownCast(filter->GetOutputDataObject(0));
-  if (!ok || !output || output->GetNumberOfBlocks() == 0)
+  if (!output || output->GetNumberOfBlocks() == 0)
   {
-    throw Failure(file + ": " +
-      (Messages->FirstError.empty() ? std::string("flow complex computation failed")
-                                    : Messages->FirstError));
+    throw Failure(file + ": flow complex computation failed");
   }
   return output;
 }
@@ -732,25 +742,6 @@ bool IsSimplified(vtkMultiBlockDataSet* complex)
 {
   auto* points = vtkPolyData::SafeDownCast(flowrecon::NamedBlock(complex, "CriticalPoints"));
   return points && points->GetPointData()->GetArray("Cancelled");
-}
-
-// Runs `filter` (already connected) with the progress line; throws on failure.
-void RunFilter(vtkAlgorithm* filter, const std::string& input, const FlowComplexOptions& options,
-  const char* what)
-{
-  vtkNew<ProgressLine> progress;
-  progress->Label = options.Label;
-  progress->Show = !options.Quiet && isatty(2);
-  filter->AddObserver(vtkCommand::ProgressEvent, progress);
-  Messages->FirstError.clear();
-  const int ok = filter->GetExecutive()->Update();
-  progress->Finish();
-  ThrowIfInterrupted();
-  if (!ok)
-  {
-    throw Failure(input + ": " +
-      (Messages->FirstError.empty() ? std::string(what) + " failed" : Messages->FirstError));
-  }
 }
 
 // Writes `data` as VTK XML (appended raw binary, LZ4), removing it on Ctrl-C.

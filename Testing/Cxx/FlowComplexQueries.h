@@ -2,15 +2,34 @@
 #ifndef flowrecon_FlowComplexQueries_h
 #define flowrecon_FlowComplexQueries_h
 
-#include "FlowComplex.h"
+#include "Check.h"
+#include "FlowComplexBuilder.h"
 
 #include <algorithm>
+#include <array>
 #include <vector>
 
 namespace queries
 {
 using flowrecon::FlowComplex;
 using flowrecon::Id;
+
+/// The flow complex of `p` with the default options.
+inline FlowComplex Build(const std::vector<flowrecon::Point3>& p)
+{
+  return flowrecon::BuildFlowComplex(p, flowrecon::BuildOptions(), flowrecon::Progress());
+}
+
+/// Finite node counts by index equal `expected` (which must satisfy Euler's relation).
+inline void CheckCounts(const FlowComplex& fc, std::array<Id, 4> expected)
+{
+  const auto n = fc.CountByIndex();
+  for (int i = 0; i < 4; ++i)
+  {
+    CHECK(n[i] == expected[i]);
+  }
+  CHECK(n[0] - n[1] + n[2] - n[3] == 1);
+}
 
 /// The node whose nearest samples are `simplex` (input ids, any order), or -1.
 inline Id NodeOf(const FlowComplex& fc, std::vector<Id> simplex)

@@ -19,19 +19,8 @@ using namespace flowrecon;
 namespace
 {
 
-FlowComplex Build(const std::vector<Point3>& p)
-{
-  return BuildFlowComplex(p, BuildOptions(), Progress());
-}
-
-void CheckCounts(const FlowComplex& fc, std::array<Id, 4> expected)
-{
-  const auto n = fc.CountByIndex();
-  for (int i = 0; i < 4; ++i)
-  {
-    CHECK(n[i] == expected[i]);
-  }
-}
+using queries::Build;
+using queries::CheckCounts;
 
 std::vector<double> Values(const FlowComplex& fc, int index)
 {

@@ -29,20 +29,8 @@ using namespace flowrecon;
 namespace
 {
 
-FlowComplex Build(const std::vector<Point3>& p)
-{
-  return BuildFlowComplex(p, BuildOptions(), Progress());
-}
-
-void CheckCounts(const FlowComplex& fc, std::array<Id, 4> expected)
-{
-  const auto n = fc.CountByIndex();
-  for (int i = 0; i < 4; ++i)
-  {
-    CHECK(n[i] == expected[i]);
-  }
-  CHECK(n[0] - n[1] + n[2] - n[3] == 1);
-}
+using queries::Build;
+using queries::CheckCounts;
 
 using queries::Multiplicity;
 using queries::NodeOf;

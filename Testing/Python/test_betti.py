@@ -38,6 +38,7 @@ sys.path.insert(0, DATA)
 import numpy as np  # noqa: E402
 
 import generate_clouds as gc  # noqa: E402
+from experiments import cells_of, polydata  # noqa: E402  (shared plumbing)
 
 # shape of generate_clouds.py -> true Betti numbers (b0, b1, b2), stated here again
 # (not read from the generator) so that the test states its expectation itself.
@@ -66,26 +67,6 @@ def import_modules():
         sys.exit("test_betti: cannot import %s; run with /usr/bin/python3 and "
                  "PYTHONPATH=<build>/lib/python3/dist-packages" % e)
     return flowrecon, gudhi
-
-
-def polydata(points):
-    from vtkmodules.util.numpy_support import numpy_to_vtk
-    from vtkmodules.vtkCommonCore import vtkPoints
-    from vtkmodules.vtkCommonDataModel import vtkPolyData
-    pts = vtkPoints()
-    pts.SetDataTypeToDouble()
-    pts.SetData(numpy_to_vtk(np.ascontiguousarray(points, dtype=float), deep=True))
-    pd = vtkPolyData()
-    pd.SetPoints(pts)
-    return pd
-
-
-def cells_of(grid):
-    from vtkmodules.util.numpy_support import vtk_to_numpy
-    ca = grid.GetCells()
-    offsets = vtk_to_numpy(ca.GetOffsetsArray())
-    conn = vtk_to_numpy(ca.GetConnectivityArray())
-    return [conn[offsets[c]:offsets[c + 1]].tolist() for c in range(len(offsets) - 1)]
 
 
 def betti_gudhi(cells):
