@@ -1,6 +1,9 @@
 // CGAL types of the core: exact predicates on the input points (EPICK), a 3D
 // Delaunay triangulation whose vertices carry the input id and whose cells carry
-// a dense index (for per-cell memo tables).
+// a dense index (for per-cell memo tables). The triangulation is CGAL's
+// concurrent one: the Delaunay triangulation is unique (CGAL breaks cospherical
+// ties by symbolic perturbation), so building it in parallel changes only the
+// order of cells in memory, which nothing downstream depends on.
 #ifndef flowrecon_Delaunay_h
 #define flowrecon_Delaunay_h
 
@@ -20,8 +23,12 @@ using KPoint = Kernel::Point_3;
 using VertexBase = CGAL::Triangulation_vertex_base_with_info_3<Id, Kernel>;
 using CellBase = CGAL::Triangulation_cell_base_with_info_3<Id, Kernel,
   CGAL::Delaunay_triangulation_cell_base_3<Kernel>>;
-using Tds = CGAL::Triangulation_data_structure_3<VertexBase, CellBase>;
-using Delaunay = CGAL::Delaunay_triangulation_3<Kernel, Tds>;
+#ifndef CGAL_LINKED_WITH_TBB
+#error "FlowRecon's core needs CGAL_LINKED_WITH_TBB (link CGAL::TBB_support)"
+#endif
+using Tds = CGAL::Triangulation_data_structure_3<VertexBase, CellBase, CGAL::Parallel_tag>;
+using Delaunay = CGAL::Delaunay_triangulation_3<Kernel, Tds, CGAL::Default,
+  CGAL::Spatial_lock_grid_3<CGAL::Tag_priority_blocking>>;
 using VertexHandle = Delaunay::Vertex_handle;
 using CellHandle = Delaunay::Cell_handle;
 

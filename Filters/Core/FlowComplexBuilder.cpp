@@ -9,12 +9,16 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/scalable_allocator.h>
 
 #include <CGAL/Spatial_sort_traits_adapter_3.h>
 #include <CGAL/hilbert_sort.h>
 #include <CGAL/property_map.h>
 
 #include <algorithm>
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -269,20 +273,18 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
     const double stub = 0.25 * this->In.Diagonal;
     SuccessorForest forest(
       *tri, maximumOfCell, fc.InfinityNode, stub, this->Options.UnstableManifolds);
-    for (std::size_t i = 0; i < cs.Facets.size(); ++i)
-    {
-      if ((i & 0x3FF) == 0)
-      {
-        this->Report(0.7 + 0.2 * i / nf, "unstable manifolds");
-      }
+    const bool record = this->Options.UnstableManifolds;
+    // The two flow lines of index-2 point i: ends[i], and their polylines when
+    // recording (which memoises NEXT and shares tails, so runs on this thread).
+    auto flowLines = [&](std::size_t i) {
       const Id node = base2 + static_cast<Id>(i);
       const auto& f = cs.Facets[i];
       const CellHandle cell = cs.FacetCells[i].first;
       const int opposite = cs.FacetCells[i].second;
       CellHandle sides[2] = { cell, cell->neighbor(opposite) };
-      // CGAL's spatial sort shuffles with a global generator, so which cell holds
-      // the facet varies between runs: order the two sides by their apex (vertex
-      // index, infinite last) to keep the output deterministic.
+      // Which cell holds the facet depends on the triangulation's cell order, so
+      // order the two sides by their apex (vertex index, infinite last) to keep
+      // the output deterministic.
       {
         const VertexHandle a0 = cell->vertex(opposite);
         const VertexHandle a1 = sides[1]->vertex(sides[1]->index(cell));
@@ -293,7 +295,6 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
           std::swap(sides[0], sides[1]);
         }
       }
-      const bool record = this->Options.UnstableManifolds;
       Point3 centre{ { 0, 0, 0 } };
       if (record)
       {
@@ -309,46 +310,34 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
         {
           line.Points.push_back(centre);
         }
-        try
+        if (tri->Dt().is_infinite(sides[s]))
         {
-          if (tri->Dt().is_infinite(sides[s]))
+          line.Target = fc.InfinityNode;
+          if (record)
           {
-            line.Target = fc.InfinityNode;
-            if (record)
+            // The Voronoi edge of a hull facet is a ray normal to it, away from the other cell.
+            const CellHandle other = sides[1 - s];
+            const KPoint& apex = other->vertex(other->index(sides[s]))->point();
+            const KPoint& p = tri->KCoord(f[0]);
+            Kernel::Vector_3 n = CGAL::cross_product(tri->KCoord(f[1]) - p, tri->KCoord(f[2]) - p);
+            if (n * (apex - p) > 0)
             {
-              // The Voronoi edge of a hull facet is a ray normal to it, away from the other cell.
-              const CellHandle other = sides[1 - s];
-              const KPoint& apex = other->vertex(other->index(sides[s]))->point();
-              const KPoint& p = tri->KCoord(f[0]);
-              Kernel::Vector_3 n =
-                CGAL::cross_product(tri->KCoord(f[1]) - p, tri->KCoord(f[2]) - p);
-              if (n * (apex - p) > 0)
-              {
-                n = -n;
-              }
-              const double len = std::sqrt(n.squared_length());
-              line.Points.push_back({ { centre[0] + n.x() / len * stub,
-                centre[1] + n.y() / len * stub, centre[2] + n.z() / len * stub } });
+              n = -n;
             }
-          }
-          else
-          {
-            const Id id = tri->CellId(sides[s]);
-            line.Target = forest.Root(id);
-            if (record)
-            {
-              line.Points.push_back(forest.Circumcentre(id));
-              forest.AppendPath(id, line.Points, true);
-            }
+            const double len = std::sqrt(n.squared_length());
+            line.Points.push_back({ { centre[0] + n.x() / len * stub,
+              centre[1] + n.y() / len * stub, centre[2] + n.z() / len * stub } });
           }
         }
-        catch (const Degenerate&)
+        else
         {
-          if (first)
+          const Id id = tri->CellId(sides[s]);
+          line.Target = forest.Root(id);
+          if (record)
           {
-            ++fc.Report.WalkTies;
+            line.Points.push_back(forest.Circumcentre(id));
+            forest.AppendPath(id, line.Points, true);
           }
-          throw;
         }
         ends[i][s] = static_cast<std::int32_t>(line.Target);
         if (record)
@@ -356,8 +345,44 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
           fc.FlowLines.push_back(std::move(line));
         }
       }
+    };
+    try
+    {
+      if (record)
+      {
+        for (std::size_t i = 0; i < cs.Facets.size(); ++i)
+        {
+          if ((i & 0x3FF) == 0)
+          {
+            this->Report(0.7 + 0.2 * i / nf, "unstable manifolds");
+          }
+          flowLines(i);
+        }
+      }
+      else
+      {
+        for (std::size_t begin = 0; begin < cs.Facets.size(); begin += 16 * chunk)
+        {
+          this->Report(0.7 + 0.2 * begin / nf, "unstable manifolds");
+          tbb::parallel_for(tbb::blocked_range<std::size_t>(begin, std::min(cs.Facets.size(), begin + 16 * chunk)),
+            [&](const tbb::blocked_range<std::size_t>& r) {
+              for (std::size_t i = r.begin(); i != r.end(); ++i)
+              {
+                flowLines(i);
+              }
+            });
+        }
+      }
     }
-    fc.Report.ExactFallbacks += forest.ExactFallbacks;
+    catch (const Degenerate&)
+    {
+      if (first)
+      {
+        ++fc.Report.WalkTies;
+      }
+      throw;
+    }
+    fc.Report.ExactFallbacks += forest.ExactFallbacks();
   }
   fc.Time.UnstableManifolds = Seconds(t);
 
@@ -366,6 +391,12 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
   this->Report(0.9, "Hasse diagram");
   std::vector<std::pair<CellHandle, int>>().swap(cs.FacetCells);
   tri.reset();
+  // The triangulation's blocks came from tbbmalloc and the heap; the nodes below
+  // are one large mapping that cannot reuse them, so hand the freed pages back.
+  scalable_allocation_command(TBBMALLOC_CLEAN_ALL_BUFFERS, nullptr);
+#ifdef __GLIBC__
+  malloc_trim(0);
+#endif
 
   // Nodes are independent constructions: fill them in parallel.
   fc.Nodes.assign(static_cast<std::size_t>(fc.InfinityNode + 1), Node());

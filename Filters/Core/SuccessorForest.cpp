@@ -4,6 +4,7 @@
 #include "Driver.h"
 #include "Progress.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -125,23 +126,27 @@ SuccessorForest::SuccessorForest(const Triangulation& tri,
   , Infinity(infinity)
   , Stub(stub)
   , Record(record)
-  , Steps(static_cast<std::size_t>(tri.NumberOfCells()))
-  , Roots(static_cast<std::size_t>(tri.NumberOfCells()), -1)
+  , Steps(record ? static_cast<std::size_t>(tri.NumberOfCells()) : 0)
+  , Roots(static_cast<std::size_t>(tri.NumberOfCells()))
 {
+  for (auto& r : this->Roots)
+  {
+    r.store(-1, std::memory_order_relaxed);
+  }
 }
 
 Point3 SuccessorForest::Circumcentre(Id cell)
 {
   if (this->Centres.empty())
   {
-    this->Centres.resize(this->Steps.size());
-    this->HasCentre.assign(this->Steps.size(), false);
+    this->Centres.resize(this->Roots.size());
+    this->HasCentre.assign(this->Roots.size(), false);
   }
   if (!this->HasCentre[cell])
   {
-    const CellHandle c = this->Tri.Cell(cell);
+    const std::array<Id, 4> v = this->Tri.SortedVertices(this->Tri.Cell(cell));
     const KPoint o = CGAL::circumcenter(
-      c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(), c->vertex(3)->point());
+      this->Tri.KCoord(v[0]), this->Tri.KCoord(v[1]), this->Tri.KCoord(v[2]), this->Tri.KCoord(v[3]));
     this->Centres[cell] = { { o.x(), o.y(), o.z() } };
     this->HasCentre[cell] = true;
   }
@@ -153,23 +158,24 @@ const SuccessorForest::Step& SuccessorForest::Next(Id cell)
   Step& step = this->Steps[cell];
   if (step.Kind == Unknown)
   {
-    this->ComputeNext(cell, step);
+    step = this->ComputeNext(cell);
   }
   return step;
 }
 
-void SuccessorForest::ComputeNext(Id id, Step& step)
+SuccessorForest::Step SuccessorForest::ComputeNext(Id id)
 {
   if (this->Paths.size() >= std::numeric_limits<std::uint32_t>::max())
   {
     throw std::runtime_error("too many unstable-manifold points to record");
   }
+  Step step;
   step.PathBegin = static_cast<std::uint32_t>(this->Paths.size());
   if (this->MaximumOfCell[id] >= 0)
   {
     step.Kind = ToMaximum;
     step.Target = static_cast<std::int32_t>(this->MaximumOfCell[id]);
-    return;
+    return step;
   }
   const CellHandle c = this->Tri.Cell(id);
   const CellDriver driver = ClassifyCell(c);
@@ -179,10 +185,14 @@ void SuccessorForest::ComputeNext(Id id, Step& step)
     const CellHandle next = c->neighbor(driver.A);
     if (this->Tri.Dt().is_infinite(next))
     {
+      // The hull facet's vertices in id order, so that rounding is canonical.
+      std::array<Id, 3> f{ { c->vertex((driver.A + 1) % 4)->info(),
+        c->vertex((driver.A + 2) % 4)->info(), c->vertex((driver.A + 3) % 4)->info() } };
+      std::sort(f.begin(), f.end());
       const KPoint& apex = c->vertex(driver.A)->point();
-      const KPoint& p = c->vertex((driver.A + 1) % 4)->point();
-      const KPoint& q = c->vertex((driver.A + 2) % 4)->point();
-      const KPoint& r = c->vertex((driver.A + 3) % 4)->point();
+      const KPoint& p = this->Tri.KCoord(f[0]);
+      const KPoint& q = this->Tri.KCoord(f[1]);
+      const KPoint& r = this->Tri.KCoord(f[2]);
       Kernel::Vector_3 n = CGAL::cross_product(q - p, r - p);
       if (n * (apex - p) > 0)
       {
@@ -196,11 +206,11 @@ void SuccessorForest::ComputeNext(Id id, Step& step)
           Along(this->Circumcentre(id), { { n.x(), n.y(), n.z() } }, this->Stub));
         step.PathCount = 1;
       }
-      return;
+      return step;
     }
     step.Kind = ToCell;
     step.Target = static_cast<std::int32_t>(this->Tri.CellId(next));
-    return;
+    return step;
   }
   if (driver.Type == CellDriver::Cell)
   {
@@ -216,18 +226,33 @@ void SuccessorForest::ComputeNext(Id id, Step& step)
       excl.push_back(c->vertex(k)->info());
     }
   }
+  // c_T is written on the Voronoi edge of (a, b, min excl): a choice that does
+  // not depend on the order of vertices inside the cell (rounding would).
+  std::sort(excl.begin(), excl.end());
+  const std::array<Id, 4> vertices = this->Tri.SortedVertices(c);
+  Id fallbacks = 0;
   WalkEnd end = Filtered(
     [&](auto ft) {
       using FT = decltype(ft);
       // c_T lies on the Voronoi edge of (a, b, excl[0]): find its lambda there.
       EdgePoint<FT> start{ SortedTriangle(a, b, excl[0]), FT(0) };
       const Frame<FT> frame(this->Tri, start.G);
-      auto P = [&](int i) { return Vec<FT>::From(this->Tri.Coord(c->vertex(i)->info())); };
+      auto P = [&](int i) { return Vec<FT>::From(this->Tri.Coord(vertices[i])); };
       const Vec<FT> centre = Circumcenter(P(0), P(1), P(2), P(3));
       start.Lambda = (centre - frame.C).Dot(frame.N) / frame.N.SquaredLength();
       return FacetWalk<FT>(this->Tri, start, a, b, excl, c, this->Record);
     },
-    this->ExactFallbacks);
+    fallbacks);
+  if (fallbacks > 0)
+  {
+    this->Fallbacks += fallbacks;
+  }
+  if (!this->Record)
+  {
+    step.Kind = end.Cell < 0 ? ToInfinity : ToCell;
+    step.Target = static_cast<std::int32_t>(end.Cell < 0 ? this->Infinity : end.Cell);
+    return step;
+  }
   this->Paths.insert(this->Paths.end(), end.Points.begin(), end.Points.end());
   if (end.Cell < 0)
   {
@@ -245,43 +270,51 @@ void SuccessorForest::ComputeNext(Id id, Step& step)
     step.Target = static_cast<std::int32_t>(end.Cell);
   }
   step.PathCount = static_cast<std::uint32_t>(this->Paths.size() - step.PathBegin);
+  return step;
 }
 
 Id SuccessorForest::Root(Id cell)
 {
+  // Without recording, NEXT is not memoised: each cell's is computed about once
+  // anyway, since the chain stops at the first cell whose ROOT is known. Threads
+  // racing on one chain compute the same values.
   std::vector<Id> chain;
   Id id = cell;
-  while (this->Roots[id] < 0)
+  Id root = -1;
+  while ((root = this->Roots[id].load(std::memory_order_relaxed)) < 0)
   {
-    if (chain.size() > this->Steps.size())
+    if (chain.size() > this->Roots.size())
     {
       throw std::logic_error("the successor structure has a cycle");
     }
     chain.push_back(id);
-    const Step& step = this->Next(id);
+    const Step step = this->Record ? this->Next(id) : this->ComputeNext(id);
     if (step.Kind != ToCell)
     {
-      this->Roots[id] = step.Target;
+      root = step.Target;
       break;
     }
     id = step.Target;
   }
-  const Id root = this->Roots[id];
   for (const Id c : chain)
   {
-    this->Roots[c] = static_cast<std::int32_t>(root);
+    this->Roots[c].store(static_cast<std::int32_t>(root), std::memory_order_relaxed);
   }
   return root;
 }
 
 void SuccessorForest::AppendPath(Id cell, std::vector<Point3>& out, bool shareTails)
 {
+  if (!this->Record)
+  {
+    throw std::logic_error("AppendPath needs a forest that records polylines");
+  }
   if (this->Drawn.empty())
   {
-    this->Drawn.assign(this->Steps.size(), false);
+    this->Drawn.assign(this->Roots.size(), false);
   }
   Id id = cell;
-  for (std::size_t guard = 0; guard <= this->Steps.size(); ++guard)
+  for (std::size_t guard = 0; guard <= this->Roots.size(); ++guard)
   {
     if (shareTails)
     {

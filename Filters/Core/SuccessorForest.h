@@ -1,12 +1,14 @@
 // Unstable manifolds (§5 of flow-complex-algorithm.md): from a Voronoi vertex
 // c_T the future of the flow is determined, so NEXT(T) is computed once per
 // Delaunay cell (lazily, memoised) and ROOT(T) -- the maximum reached, or
-// infinity -- follows NEXT with memoisation.
+// infinity -- follows NEXT with memoisation. Without recorded polylines only
+// ROOT is kept (4 bytes a cell), and Root() may be called from several threads.
 #ifndef flowrecon_SuccessorForest_h
 #define flowrecon_SuccessorForest_h
 
 #include "Triangulation.h"
 
+#include <atomic>
 #include <cstdint>
 #include <vector>
 
@@ -25,6 +27,7 @@ public:
     Id infinity, double stub, bool record);
 
   /// The maximum reached by the flow from the Voronoi vertex of finite cell `cell`.
+  /// Thread-safe when the forest does not record polylines.
   Id Root(Id cell);
 
   /// Appends the polyline of the flow from c_T (excluded) to its maximum, or to a
@@ -36,7 +39,7 @@ public:
   /// Circumcentre of a finite cell (for drawing; cached).
   Point3 Circumcentre(Id cell);
 
-  Id ExactFallbacks = 0;
+  Id ExactFallbacks() const { return this->Fallbacks.load(); }
 
 private:
   enum : std::int8_t
@@ -55,15 +58,17 @@ private:
     std::int8_t Kind = Unknown;
   };
   const Step& Next(Id cell);
-  void ComputeNext(Id cell, Step& step);
+  /// NEXT(cell); appends its walk points to Paths when recording.
+  Step ComputeNext(Id cell);
 
   const Triangulation& Tri;
   const std::vector<std::int32_t>& MaximumOfCell;
   Id Infinity;
   double Stub;
   bool Record;
-  std::vector<Step> Steps;
-  std::vector<std::int32_t> Roots;
+  std::vector<Step> Steps; // memoised NEXT, only when recording
+  std::vector<std::atomic<std::int32_t>> Roots;
+  std::atomic<Id> Fallbacks{ 0 };
   std::vector<Point3> Paths;
   std::vector<Point3> Centres;
   std::vector<bool> HasCentre, Drawn;

@@ -14,8 +14,17 @@ Triangulation::Triangulation(const std::vector<Point3>& points)
   {
     items.emplace_back(KPoint(points[i][0], points[i][1], points[i][2]), static_cast<Id>(i));
   }
-  // The range insertion spatially sorts the points first.
+  // The range insertion spatially sorts the points first, then inserts them in
+  // parallel; the lock grid serves only while inserting.
+  CGAL::Bbox_3 box;
+  for (const auto& item : items)
+  {
+    box += item.first.bbox();
+  }
+  Delaunay::Lock_data_structure locks(box, 50);
+  this->DT.set_lock_data_structure(&locks);
   this->DT.insert(items.begin(), items.end());
+  this->DT.set_lock_data_structure(nullptr);
   std::vector<std::pair<KPoint, Id>>().swap(items);
 
   this->Vertices.assign(points.size(), VertexHandle());

@@ -6,6 +6,8 @@
 
 #include "Delaunay.h"
 
+#include <algorithm>
+#include <array>
 #include <vector>
 
 namespace flowrecon
@@ -30,6 +32,18 @@ public:
   Id CellId(CellHandle c) const { return c->info(); }
   CellHandle Cell(Id id) const { return this->Cells[id]; }
   Id NumberOfCells() const { return static_cast<Id>(this->Cells.size()); }
+
+  /// The vertex ids of a finite cell in increasing order. Constructions from a
+  /// cell (its circumcentre) use this order: the order of vertices inside a cell
+  /// depends on how the concurrent triangulation was built, and rounding would
+  /// follow it.
+  std::array<Id, 4> SortedVertices(CellHandle c) const
+  {
+    std::array<Id, 4> v{ { c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(),
+      c->vertex(3)->info() } };
+    std::sort(v.begin(), v.end());
+    return v;
+  }
 
   /// Appends to `out` the finite vertices s such that (u, v, s) is a Delaunay facet,
   /// and to `cells` (if given) a cell containing (u, v, s) for each. `hint`, if
