@@ -16,20 +16,26 @@ namespace flowrecon
 Id CriticalSimplices::FindEdge(Id u, Id v) const
 {
   const Id a = std::min(u, v), b = std::max(u, v);
-  const auto first = this->Neighbours.begin() + this->Offsets[a];
-  const auto last = this->Neighbours.begin() + this->Offsets[a + 1];
-  const auto it = std::lower_bound(first, last, static_cast<std::int32_t>(b));
-  return (it != last && *it == b) ? this->GabrielIndex[it - this->Neighbours.begin()] : -1;
+  const auto first = this->Edges.begin() + this->EdgeOffsets[a];
+  const auto last = this->Edges.begin() + this->EdgeOffsets[a + 1];
+  const auto it = std::lower_bound(
+    first, last, b, [](const std::array<Id, 2>& e, Id value) { return e[1] < value; });
+  return (it != last && (*it)[1] == b) ? it - this->Edges.begin() : -1;
 }
 
 namespace
 {
 
 template <std::size_t N>
-std::array<Id, N> Sorted(std::array<Id, N> a)
+std::array<std::int32_t, N> Sorted(std::array<std::int32_t, N> a)
 {
   std::sort(a.begin(), a.end());
   return a;
+}
+
+std::int32_t VertexId(const CellHandle c, int i)
+{
+  return static_cast<std::int32_t>(c->vertex(i)->info());
 }
 
 /// Runs body(first, last) over [0, n) in parallel, in slices of `slice` items
@@ -49,9 +55,30 @@ void ParallelSlices(Id n, Id slice, const Progress& progress, double from, doubl
 constexpr int EdgePairs[6][2] = { { 0, 1 }, { 0, 2 }, { 0, 3 }, { 1, 2 }, { 1, 3 }, { 2, 3 } };
 constexpr Id Slice = Id(1) << 20; // cells per progress report
 
-/// All Delaunay edges (u < v) as sorted adjacency lists, collected from the cells
-/// (CGAL's edge iterator circulates around every edge; this is much cheaper).
-void BuildEdgeLists(const Triangulation& tri, CriticalSimplices& cs, const Progress& progress)
+/// All Delaunay edges (u < v) as adjacency lists: the v of vertex u are
+/// Neighbours[Offsets[u] .. Offsets[u+1]), sorted.
+struct EdgeLists
+{
+  std::vector<Id> Offsets;
+  std::vector<std::int32_t> Neighbours; // 32-bit: the largest table here
+
+  /// Position of edge uv in Neighbours (which must hold it).
+  Id Position(Id u, Id v) const
+  {
+    if (u > v)
+    {
+      std::swap(u, v);
+    }
+    const auto first = this->Neighbours.begin() + this->Offsets[u];
+    return std::lower_bound(first, this->Neighbours.begin() + this->Offsets[u + 1],
+             static_cast<std::int32_t>(v)) -
+      this->Neighbours.begin();
+  }
+};
+
+/// Collected from the cells (CGAL's edge iterator circulates around every edge;
+/// this is much cheaper).
+void BuildEdgeLists(const Triangulation& tri, EdgeLists& lists, const Progress& progress)
 {
   const Id m = tri.NumberOfVertices(), nc = tri.NumberOfCells();
   auto forEachEdge = [&](Id cell, const auto& f) {
@@ -71,18 +98,18 @@ void BuildEdgeLists(const Triangulation& tri, CriticalSimplices& cs, const Progr
       forEachEdge(id, [&](Id u, Id) { fill[u + 1].fetch_add(1, std::memory_order_relaxed); });
     }
   });
-  cs.Offsets.assign(static_cast<std::size_t>(m + 1), 0);
+  lists.Offsets.assign(static_cast<std::size_t>(m + 1), 0);
   for (Id u = 0; u < m; ++u)
   {
-    cs.Offsets[u + 1] = cs.Offsets[u] + fill[u + 1].load(std::memory_order_relaxed);
-    fill[u].store(cs.Offsets[u], std::memory_order_relaxed);
+    lists.Offsets[u + 1] = lists.Offsets[u] + fill[u + 1].load(std::memory_order_relaxed);
+    fill[u].store(lists.Offsets[u], std::memory_order_relaxed);
   }
-  cs.Neighbours.resize(static_cast<std::size_t>(cs.Offsets[m]));
+  lists.Neighbours.resize(static_cast<std::size_t>(lists.Offsets[m]));
   ParallelSlices(nc, Slice, progress, 0.22, 0.24, "critical points", [&](Id first, Id last) {
     for (Id id = first; id < last; ++id)
     {
       forEachEdge(id, [&](Id u, Id v) {
-        cs.Neighbours[fill[u].fetch_add(1, std::memory_order_relaxed)] = static_cast<std::int32_t>(v);
+        lists.Neighbours[fill[u].fetch_add(1, std::memory_order_relaxed)] = static_cast<std::int32_t>(v);
       });
     }
   });
@@ -91,8 +118,8 @@ void BuildEdgeLists(const Triangulation& tri, CriticalSimplices& cs, const Progr
   tbb::parallel_for(tbb::blocked_range<Id>(0, m), [&](const tbb::blocked_range<Id>& r) {
     for (Id u = r.begin(); u != r.end(); ++u)
     {
-      const auto first = cs.Neighbours.begin() + cs.Offsets[u];
-      const auto last = cs.Neighbours.begin() + cs.Offsets[u + 1];
+      const auto first = lists.Neighbours.begin() + lists.Offsets[u];
+      const auto last = lists.Neighbours.begin() + lists.Offsets[u + 1];
       std::sort(first, last);
       length[u] = std::unique(first, last) - first;
     }
@@ -101,45 +128,40 @@ void BuildEdgeLists(const Triangulation& tri, CriticalSimplices& cs, const Progr
   Id write = 0;
   for (Id u = 0; u < m; ++u)
   {
-    const auto first = cs.Neighbours.begin() + cs.Offsets[u];
-    cs.Offsets[u] = write;
-    std::copy(first, first + length[u], cs.Neighbours.begin() + write);
+    const auto first = lists.Neighbours.begin() + lists.Offsets[u];
+    lists.Offsets[u] = write;
+    std::copy(first, first + length[u], lists.Neighbours.begin() + write);
     write += length[u];
   }
-  cs.Offsets[m] = write;
-  cs.Neighbours.resize(static_cast<std::size_t>(write));
-  cs.Neighbours.shrink_to_fit();
+  lists.Offsets[m] = write;
+  lists.Neighbours.resize(static_cast<std::size_t>(write)); // no shrink: short-lived
 }
 
-struct FacetEntry
-{
-  std::array<Id, 3> Vertices;
-  CellHandle Cell;
-  int Opposite;
-};
-
-/// What one slice of cells contributes; slices are merged in order.
+/// What one slice of cells contributes; slices are merged in order. Compact
+/// codes (cell id and facet index) rather than vertex lists: these lists are
+/// written once and read once, and memory that is touched costs time.
 struct SliceResult
 {
-  std::vector<FacetEntry> Facets;
-  std::vector<std::pair<std::array<Id, 4>, Id>> Cells;
+  std::vector<std::array<std::int32_t, 2>> Facets;
+  std::vector<std::int32_t> Cells;
   Id RightAngles = 0, ApexOnSphere = 0, CircumcentresOnFacet = 0;
 };
 
-/// Gathers the `member` lists of all slices sorted by their (distinct, sorted)
-/// vertex arrays: a counting sort on the first vertex (< m), then a small sort
-/// per bucket. Much faster than a comparison sort of the whole list.
-template <class T, class Key>
-std::vector<T> SortByVertices(
-  std::vector<SliceResult>& slices, std::vector<T> SliceResult::*member, Id m, const Key& key)
+/// Expands the `member` codes of all slices with make(code) and returns the items
+/// sorted by their (distinct, sorted) Vertices: a counting sort on the first
+/// vertex (< m), then a small sort per bucket. Much faster than a comparison
+/// sort of the whole list.
+template <class T, class Code, class Make>
+std::vector<T> GatherSorted(
+  std::vector<SliceResult>& slices, std::vector<Code> SliceResult::*member, Id m, const Make& make)
 {
   std::vector<std::atomic<Id>> fill(static_cast<std::size_t>(m + 1));
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, slices.size()), [&](const auto& r) {
     for (std::size_t s = r.begin(); s != r.end(); ++s)
     {
-      for (const T& item : slices[s].*member)
+      for (const Code& code : slices[s].*member)
       {
-        fill[key(item)[0] + 1].fetch_add(1, std::memory_order_relaxed);
+        fill[make(code).Vertices[0] + 1].fetch_add(1, std::memory_order_relaxed);
       }
     }
   });
@@ -153,18 +175,19 @@ std::vector<T> SortByVertices(
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, slices.size()), [&](const auto& r) {
     for (std::size_t s = r.begin(); s != r.end(); ++s)
     {
-      for (const T& item : slices[s].*member)
+      for (const Code& code : slices[s].*member)
       {
-        sorted[fill[key(item)[0]].fetch_add(1, std::memory_order_relaxed)] = item;
+        const T item = make(code);
+        sorted[fill[item.Vertices[0]].fetch_add(1, std::memory_order_relaxed)] = item;
       }
-      std::vector<T>().swap(slices[s].*member);
+      std::vector<Code>().swap(slices[s].*member);
     }
   });
   tbb::parallel_for(tbb::blocked_range<Id>(0, m), [&](const tbb::blocked_range<Id>& r) {
     for (Id u = r.begin(); u != r.end(); ++u)
     {
       std::sort(sorted.begin() + begin[u], sorted.begin() + begin[u + 1],
-        [&](const T& a, const T& b) { return key(a) < key(b); });
+        [](const T& a, const T& b) { return a.Vertices < b.Vertices; });
     }
   });
   return sorted;
@@ -176,17 +199,8 @@ CriticalSimplices FindCriticalSimplices(const Triangulation& tri, const Progress
 {
   const Delaunay& dt = tri.Dt();
   CriticalSimplices cs;
-  BuildEdgeLists(tri, cs, progress);
-  auto position = [&](Id u, Id v) {
-    if (u > v)
-    {
-      std::swap(u, v);
-    }
-    const auto first = cs.Neighbours.begin() + cs.Offsets[u];
-    return std::lower_bound(first, cs.Neighbours.begin() + cs.Offsets[u + 1],
-             static_cast<std::int32_t>(v)) -
-      cs.Neighbours.begin();
-  };
+  EdgeLists edges;
+  BuildEdgeLists(tri, edges, progress);
 
   // One parallel pass over the cells; each facet is handled by the cell of
   // smaller id (or the finite one, on the hull). A facet obtuse at t puts t
@@ -194,7 +208,7 @@ CriticalSimplices FindCriticalSimplices(const Triangulation& tri, const Progress
   // Gabriel; every link vertex of an edge is the third vertex of one of its
   // facets, so the edges never marked are exactly the Gabriel edges (CGAL's
   // is_Gabriel, in one pass). The same pass finds the self-centred cells.
-  std::vector<std::atomic<std::uint8_t>> notGabriel(cs.Neighbours.size());
+  std::vector<std::atomic<std::uint8_t>> notGabriel(edges.Neighbours.size());
   const Id nc = tri.NumberOfCells();
   const Id grain = 4096;
   std::vector<SliceResult> results(static_cast<std::size_t>((nc + grain - 1) / grain));
@@ -228,7 +242,7 @@ CriticalSimplices FindCriticalSimplices(const Triangulation& tri, const Progress
           }
           if (obtuse >= 0)
           {
-            notGabriel[position(v[(obtuse + 1) % 3]->info(), v[(obtuse + 2) % 3]->info())].store(
+            notGabriel[edges.Position(v[(obtuse + 1) % 3]->info(), v[(obtuse + 2) % 3]->info())].store(
               1, std::memory_order_relaxed);
             continue; // an obtuse facet is not self-centred
           }
@@ -251,8 +265,7 @@ CriticalSimplices FindCriticalSimplices(const Triangulation& tri, const Progress
           }
           if (gabriel)
           {
-            out.Facets.push_back(
-              { Sorted<3>({ { v[0]->info(), v[1]->info(), v[2]->info() } }), c, i });
+            out.Facets.push_back({ { static_cast<std::int32_t>(id), i } });
           }
         }
         // Index 3: self-centred cells (Lemma B.2).
@@ -260,9 +273,7 @@ CriticalSimplices FindCriticalSimplices(const Triangulation& tri, const Progress
         {
           if (IsSelfCentred(c))
           {
-            out.Cells.emplace_back(Sorted<4>({ { c->vertex(0)->info(), c->vertex(1)->info(),
-                                     c->vertex(2)->info(), c->vertex(3)->info() } }),
-              id);
+            out.Cells.push_back(static_cast<std::int32_t>(id));
           }
         }
         catch (const flowrecon::Degenerate&)
@@ -292,64 +303,50 @@ CriticalSimplices FindCriticalSimplices(const Triangulation& tri, const Progress
 
   // Lists sorted by vertex ids: the order is independent of the (concurrent)
   // triangulation's cell order.
-  {
-    const std::vector<FacetEntry> facets = SortByVertices(results, &SliceResult::Facets,
-      tri.NumberOfVertices(), [](const FacetEntry& f) -> const auto& { return f.Vertices; });
-    cs.Facets.resize(facets.size());
-    cs.FacetCells.resize(facets.size());
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, facets.size()),
-      [&](const tbb::blocked_range<std::size_t>& r) {
-        for (std::size_t k = r.begin(); k != r.end(); ++k)
-        {
-          cs.Facets[k] = facets[k].Vertices;
-          cs.FacetCells[k] = { facets[k].Cell, facets[k].Opposite };
-        }
-      });
-  }
-  {
-    const auto cells = SortByVertices(results, &SliceResult::Cells, tri.NumberOfVertices(),
-      [](const std::pair<std::array<Id, 4>, Id>& c) -> const auto& { return c.first; });
-    cs.Cells.resize(cells.size());
-    cs.CellOfMaximum.resize(cells.size());
-    for (std::size_t k = 0; k < cells.size(); ++k)
-    {
-      cs.Cells[k] = cells[k].first;
-      cs.CellOfMaximum[k] = cells[k].second;
-    }
-  }
+  cs.Facets = GatherSorted<CriticalFacet>(results, &SliceResult::Facets, tri.NumberOfVertices(),
+    [&](const std::array<std::int32_t, 2>& code) {
+      const CellHandle c = tri.Cell(code[0]);
+      const int i = code[1];
+      return CriticalFacet{ Sorted<3>({ { VertexId(c, (i + 1) % 4), VertexId(c, (i + 2) % 4),
+                              VertexId(c, (i + 3) % 4) } }),
+        code[0], i };
+    });
+  cs.Cells = GatherSorted<CriticalCell>(
+    results, &SliceResult::Cells, tri.NumberOfVertices(), [&](std::int32_t id) {
+      const CellHandle c = tri.Cell(id);
+      return CriticalCell{ Sorted<4>({ { VertexId(c, 0), VertexId(c, 1), VertexId(c, 2),
+                             VertexId(c, 3) } }),
+        id };
+    });
 
-  // Gabriel edges in adjacency order: count per block of vertices, then fill.
+  // Gabriel edges in adjacency order: count per vertex, then fill.
   const Id m = tri.NumberOfVertices();
-  const Id block = 4096, nBlocks = (m + block - 1) / block;
-  std::vector<Id> start(static_cast<std::size_t>(nBlocks + 1), 0);
-  tbb::parallel_for(tbb::blocked_range<Id>(0, nBlocks), [&](const tbb::blocked_range<Id>& r) {
-    for (Id b = r.begin(); b != r.end(); ++b)
+  cs.EdgeOffsets.assign(static_cast<std::size_t>(m + 1), 0);
+  tbb::parallel_for(tbb::blocked_range<Id>(0, m), [&](const tbb::blocked_range<Id>& r) {
+    for (Id u = r.begin(); u != r.end(); ++u)
     {
-      for (Id k = cs.Offsets[b * block]; k < cs.Offsets[std::min(m, (b + 1) * block)]; ++k)
+      Id count = 0;
+      for (Id k = edges.Offsets[u]; k < edges.Offsets[u + 1]; ++k)
       {
-        start[b + 1] += notGabriel[k].load(std::memory_order_relaxed) ? 0 : 1;
+        count += notGabriel[k].load(std::memory_order_relaxed) ? 0 : 1;
       }
+      cs.EdgeOffsets[u + 1] = count;
     }
   });
-  for (Id b = 0; b < nBlocks; ++b)
+  for (Id u = 0; u < m; ++u)
   {
-    start[b + 1] += start[b];
+    cs.EdgeOffsets[u + 1] += cs.EdgeOffsets[u];
   }
-  cs.Edges.resize(static_cast<std::size_t>(start[nBlocks]));
-  cs.GabrielIndex.assign(cs.Neighbours.size(), -1);
-  tbb::parallel_for(tbb::blocked_range<Id>(0, nBlocks), [&](const tbb::blocked_range<Id>& r) {
-    for (Id b = r.begin(); b != r.end(); ++b)
+  cs.Edges.resize(static_cast<std::size_t>(cs.EdgeOffsets[m]));
+  tbb::parallel_for(tbb::blocked_range<Id>(0, m), [&](const tbb::blocked_range<Id>& r) {
+    for (Id u = r.begin(); u != r.end(); ++u)
     {
-      Id next = start[b];
-      for (Id u = b * block; u < std::min(m, (b + 1) * block); ++u)
+      Id next = cs.EdgeOffsets[u];
+      for (Id k = edges.Offsets[u]; k < edges.Offsets[u + 1]; ++k)
       {
-        for (Id k = cs.Offsets[u]; k < cs.Offsets[u + 1]; ++k)
+        if (!notGabriel[k].load(std::memory_order_relaxed))
         {
-          if (!notGabriel[k].load(std::memory_order_relaxed))
-          {
-            cs.GabrielIndex[k] = static_cast<std::int32_t>(next);
-            cs.Edges[next++] = { { u, cs.Neighbours[k] } };
-          }
+          cs.Edges[next++] = { { u, edges.Neighbours[k] } };
         }
       }
     }

@@ -15,27 +15,50 @@
 namespace flowrecon
 {
 
+/// An acute Gabriel facet (vertex ids in increasing order), with the id of a
+/// cell containing it and the index of the opposite vertex in that cell.
+/// 32-bit ids: these lists are among the largest of the computation.
+struct CriticalFacet
+{
+  std::array<std::int32_t, 3> Vertices;
+  std::int32_t Cell;
+  std::int32_t Opposite;
+};
+
+/// A self-centred cell (vertex ids in increasing order) and its cell id.
+struct CriticalCell
+{
+  std::array<std::int32_t, 4> Vertices;
+  std::int32_t Cell;
+};
+
 struct CriticalSimplices
 {
+  /// Gabriel edges (u < v) in lexicographic order; those of vertex u are
+  /// Edges[EdgeOffsets[u] .. EdgeOffsets[u+1]).
   std::vector<std::array<Id, 2>> Edges;
-  std::vector<std::array<Id, 3>> Facets;
-  /// A cell containing each facet and the index of the opposite vertex in it.
-  std::vector<std::pair<CellHandle, int>> FacetCells;
-  std::vector<std::array<Id, 4>> Cells;
-  std::vector<Id> CellOfMaximum; ///< triangulation cell id of each entry of Cells
+  std::vector<Id> EdgeOffsets;
+  std::vector<CriticalFacet> Facets; ///< sorted by vertices
+  std::vector<CriticalCell> Cells;   ///< sorted by vertices
   Id RightAngles = 0;  ///< right triangles among the Delaunay facets
   Id ApexOnSphere = 0; ///< facets with an apex on their diametral sphere
-
-  /// All Delaunay edges (u < v) as adjacency lists: the v of vertex u are
-  /// Neighbours[Offsets[u] .. Offsets[u+1]), sorted; GabrielIndex gives the
-  /// position of that edge in Edges, or -1.
-  std::vector<Id> Offsets;
-  std::vector<std::int32_t> Neighbours, GabrielIndex; // 32-bit: the largest table here
 
   /// Position of Gabriel edge (u, v) in Edges, or -1 if uv is not Gabriel.
   Id FindEdge(Id u, Id v) const;
   bool Degenerate() const { return this->RightAngles > 0 || this->ApexOnSphere > 0; }
 };
+
+/// 64-bit copy of a list of 32-bit vertex ids.
+template <std::size_t N>
+std::array<Id, N> Widen(const std::array<std::int32_t, N>& v)
+{
+  std::array<Id, N> w;
+  for (std::size_t i = 0; i < N; ++i)
+  {
+    w[i] = v[i];
+  }
+  return w;
+}
 
 /// Enumerates the critical simplices, counting degeneracies instead of failing
 /// on them (the caller perturbs and retries when Degenerate() is true).

@@ -2,6 +2,7 @@
 
 #include "Arithmetic.h"
 #include "CriticalSimplices.h"
+#include "HugePages.h"
 #include "InputPreparation.h"
 #include "StableManifold.h"
 #include "SuccessorForest.h"
@@ -165,7 +166,7 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
   fc.Arcs.clear();
   // Measured on volume samples: about 3.8 arcs 1->2 per index-2 node, so 6 per
   // node avoids the doubling reallocation of the largest vector (surfaces have more).
-  fc.Arcs.reserve(static_cast<std::size_t>(2 * nEdges + 6 * nFacets));
+  ReserveHuge(fc.Arcs, static_cast<std::size_t>(2 * nEdges + 6 * nFacets));
   for (Id i = 0; i < nEdges; ++i)
   {
     fc.Arcs.emplace_back(cs.Edges[i][0], base1 + i, 1);
@@ -254,10 +255,8 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
   {
     triangleBegin[cs.Facets.size()] = static_cast<Id>(fc.Triangles.size());
   }
-  // The edge adjacency served the walks only.
-  std::vector<Id>().swap(cs.Offsets);
-  std::vector<std::int32_t>().swap(cs.Neighbours);
-  std::vector<std::int32_t>().swap(cs.GabrielIndex);
+  // The edge index served the walks only.
+  std::vector<Id>().swap(cs.EdgeOffsets);
   fc.Time.StableManifolds = Seconds(t);
 
   // Unstable manifolds: the two flow lines of each index-2 point.
@@ -268,7 +267,7 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
     std::vector<std::int32_t> maximumOfCell(static_cast<std::size_t>(tri->NumberOfCells()), -1);
     for (std::size_t i = 0; i < cs.Cells.size(); ++i)
     {
-      maximumOfCell[cs.CellOfMaximum[i]] = static_cast<std::int32_t>(base3 + static_cast<Id>(i));
+      maximumOfCell[cs.Cells[i].Cell] = static_cast<std::int32_t>(base3 + static_cast<Id>(i));
     }
     const double stub = 0.25 * this->In.Diagonal;
     SuccessorForest forest(
@@ -278,9 +277,9 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
     // recording (which memoises NEXT and shares tails, so runs on this thread).
     auto flowLines = [&](std::size_t i) {
       const Id node = base2 + static_cast<Id>(i);
-      const auto& f = cs.Facets[i];
-      const CellHandle cell = cs.FacetCells[i].first;
-      const int opposite = cs.FacetCells[i].second;
+      const auto& f = cs.Facets[i].Vertices;
+      const CellHandle cell = tri->Cell(cs.Facets[i].Cell);
+      const int opposite = cs.Facets[i].Opposite;
       CellHandle sides[2] = { cell, cell->neighbor(opposite) };
       // Which cell holds the facet depends on the triangulation's cell order, so
       // order the two sides by their apex (vertex index, infinite last) to keep
@@ -389,7 +388,6 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
   // Everything below needs only the critical simplices: free the triangulation.
   t = Clock::now();
   this->Report(0.9, "Hasse diagram");
-  std::vector<std::pair<CellHandle, int>>().swap(cs.FacetCells);
   tri.reset();
   // The triangulation's blocks came from tbbmalloc and the heap; the nodes below
   // are one large mapping that cannot reuse them, so hand the freed pages back.
@@ -399,7 +397,9 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
 #endif
 
   // Nodes are independent constructions: fill them in parallel.
-  fc.Nodes.assign(static_cast<std::size_t>(fc.InfinityNode + 1), Node());
+  fc.Nodes.clear();
+  ReserveHuge(fc.Nodes, static_cast<std::size_t>(fc.InfinityNode + 1));
+  fc.Nodes.resize(static_cast<std::size_t>(fc.InfinityNode + 1));
   tbb::parallel_for(tbb::blocked_range<Id>(0, fc.InfinityNode), [&](const tbb::blocked_range<Id>& r) {
     for (Id n = r.begin(); n != r.end(); ++n)
     {
@@ -413,11 +413,11 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
       }
       else if (n < base3)
       {
-        fc.Nodes[n] = this->MakeNode(2, cs.Facets[n - base2].data(), coords);
+        fc.Nodes[n] = this->MakeNode(2, Widen(cs.Facets[n - base2].Vertices).data(), coords);
       }
       else
       {
-        fc.Nodes[n] = this->MakeNode(3, cs.Cells[n - base3].data(), coords);
+        fc.Nodes[n] = this->MakeNode(3, Widen(cs.Cells[n - base3].Vertices).data(), coords);
       }
     }
   });
@@ -482,7 +482,8 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
 /// Renumbers the distinct points along a Hilbert curve. Every per-vertex table
 /// (adjacency, walks, node lists) is then visited with spatial locality, which
 /// matters more than anything else for large clouds; hilbert_sort is
-/// deterministic (unlike spatial_sort, which shuffles).
+/// deterministic (unlike spatial_sort, which shuffles), also in parallel: the
+/// median splits of disjoint ranges do not depend on the schedule.
 void SpatialOrder(PreparedInput& in)
 {
   std::vector<KPoint> pts;
@@ -498,7 +499,8 @@ void SpatialOrder(PreparedInput& in)
   }
   using Map = CGAL::Pointer_property_map<KPoint>::const_type;
   const Map map = CGAL::make_property_map(static_cast<const std::vector<KPoint>&>(pts));
-  CGAL::hilbert_sort(order.begin(), order.end(), CGAL::Spatial_sort_traits_adapter_3<Kernel, Map>(map));
+  CGAL::hilbert_sort<CGAL::Parallel_tag>(
+    order.begin(), order.end(), CGAL::Spatial_sort_traits_adapter_3<Kernel, Map>(map));
   std::vector<Point3> unique(order.size());
   std::vector<Id> ids(order.size());
   for (std::size_t i = 0; i < order.size(); ++i)

@@ -2,6 +2,8 @@
 
 #include "Progress.h"
 
+#include <tbb/parallel_sort.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -31,7 +33,9 @@ PreparedInput PrepareInput(const std::vector<Point3>& points)
   // occurrence (smallest id) represents the others.
   std::vector<Id> order(static_cast<std::size_t>(n));
   std::iota(order.begin(), order.end(), Id(0));
-  std::stable_sort(order.begin(), order.end(), [&](Id a, Id b) { return points[a] < points[b]; });
+  // The id breaks ties: a total order, so the parallel sort is deterministic.
+  tbb::parallel_sort(order.begin(), order.end(),
+    [&](Id a, Id b) { return points[a] < points[b] || (points[a] == points[b] && a < b); });
   in.Representative.assign(static_cast<std::size_t>(n), -1);
   for (std::size_t i = 0; i < order.size();)
   {

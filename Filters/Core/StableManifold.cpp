@@ -95,7 +95,7 @@ Patch ComputeStableManifold(const Triangulation& tri, const CriticalSimplices& c
   return Filtered(
     [&](auto ft) {
       return Walk<decltype(ft)>(
-        tri, cs, cs.Facets[facet], cs.FacetCells[facet].first, withGeometry);
+        tri, cs, Widen(cs.Facets[facet].Vertices), tri.Cell(cs.Facets[facet].Cell), withGeometry);
     },
     fallbacks);
 }

@@ -1,5 +1,8 @@
 #include "Triangulation.h"
 
+#include "Progress.h"
+
+#include <cstdint>
 #include <utility>
 
 namespace flowrecon
@@ -35,6 +38,11 @@ Triangulation::Triangulation(const std::vector<Point3>& points)
   for (auto c = this->DT.all_cells_begin(); c != this->DT.all_cells_end(); ++c)
   {
     c->info() = -1;
+  }
+  // Per-cell tables and the lists of critical simplices use 32-bit cell ids.
+  if (this->DT.number_of_finite_cells() >= static_cast<std::size_t>(INT32_MAX))
+  {
+    throw InputError("the Delaunay triangulation of this many points exceeds 2^31 cells");
   }
   this->Cells.reserve(this->DT.number_of_finite_cells());
   for (auto c = this->DT.finite_cells_begin(); c != this->DT.finite_cells_end(); ++c)
