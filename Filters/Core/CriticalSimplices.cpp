@@ -2,6 +2,7 @@
 
 #include "Driver.h"
 #include "FastPredicates.h"
+#include "ParallelSlices.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -36,20 +37,6 @@ std::array<std::int32_t, N> Sorted(std::array<std::int32_t, N> a)
 std::int32_t VertexId(const CellHandle c, int i)
 {
   return static_cast<std::int32_t>(c->vertex(i)->info());
-}
-
-/// Runs body(first, last) over [0, n) in parallel, in slices of `slice` items
-/// so that progress is reported (and abort honoured) on the calling thread.
-template <class Body>
-void ParallelSlices(Id n, Id slice, const Progress& progress, double from, double to,
-  const char* phase, const Body& body)
-{
-  for (Id begin = 0; begin < n; begin += slice)
-  {
-    progress(from + (to - from) * static_cast<double>(begin) / static_cast<double>(n), phase);
-    tbb::parallel_for(tbb::blocked_range<Id>(begin, std::min(n, begin + slice)),
-      [&](const tbb::blocked_range<Id>& r) { body(r.begin(), r.end()); });
-  }
 }
 
 constexpr int EdgePairs[6][2] = { { 0, 1 }, { 0, 2 }, { 0, 3 }, { 1, 2 }, { 1, 3 }, { 2, 3 } };

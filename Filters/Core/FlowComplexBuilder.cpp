@@ -4,6 +4,7 @@
 #include "CriticalSimplices.h"
 #include "HugePages.h"
 #include "InputPreparation.h"
+#include "ParallelSlices.h"
 #include "StableManifold.h"
 #include "SuccessorForest.h"
 #include "Triangulation.h"
@@ -360,17 +361,13 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
       }
       else
       {
-        for (std::size_t begin = 0; begin < cs.Facets.size(); begin += 16 * chunk)
-        {
-          this->Report(0.7 + 0.2 * begin / nf, "unstable manifolds");
-          tbb::parallel_for(tbb::blocked_range<std::size_t>(begin, std::min(cs.Facets.size(), begin + 16 * chunk)),
-            [&](const tbb::blocked_range<std::size_t>& r) {
-              for (std::size_t i = r.begin(); i != r.end(); ++i)
-              {
-                flowLines(i);
-              }
-            });
-        }
+        ParallelSlices(nFacets, 16 * chunk, this->Report, 0.7, 0.9, "unstable manifolds",
+          [&](Id first, Id last) {
+            for (Id i = first; i < last; ++i)
+            {
+              flowLines(static_cast<std::size_t>(i));
+            }
+          });
       }
     }
     catch (const Degenerate&)

@@ -2,6 +2,10 @@
 
 #include "Progress.h"
 
+#include <tbb/global_control.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
 #include <cstdint>
 #include <utility>
 
@@ -18,14 +22,18 @@ Triangulation::Triangulation(const std::vector<Point3>& points)
     items.emplace_back(KPoint(points[i][0], points[i][1], points[i][2]), static_cast<Id>(i));
   }
   // The range insertion spatially sorts the points first, then inserts them in
-  // parallel; the lock grid serves only while inserting.
+  // parallel; the lock grid serves only while inserting. On one thread the
+  // locks only cost time: without them CGAL inserts sequentially.
+  const std::size_t threads = std::min<std::size_t>(
+    tbb::this_task_arena::max_concurrency(),
+    tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
   CGAL::Bbox_3 box;
   for (const auto& item : items)
   {
     box += item.first.bbox();
   }
   Delaunay::Lock_data_structure locks(box, 50);
-  this->DT.set_lock_data_structure(&locks);
+  this->DT.set_lock_data_structure(threads > 1 ? &locks : nullptr);
   this->DT.insert(items.begin(), items.end());
   this->DT.set_lock_data_structure(nullptr);
   std::vector<std::pair<KPoint, Id>>().swap(items);
@@ -35,20 +43,25 @@ Triangulation::Triangulation(const std::vector<Point3>& points)
   {
     this->Vertices[v->info()] = v;
   }
+  // One pass: dense ids for finite cells, -1 for the infinite ones (CGAL's
+  // number_of_finite_cells() is itself a pass over the cells).
+  this->Cells.reserve(this->DT.number_of_cells());
   for (auto c = this->DT.all_cells_begin(); c != this->DT.all_cells_end(); ++c)
   {
-    c->info() = -1;
+    if (this->DT.is_infinite(c))
+    {
+      c->info() = -1;
+    }
+    else
+    {
+      c->info() = static_cast<Id>(this->Cells.size());
+      this->Cells.push_back(c);
+    }
   }
   // Per-cell tables and the lists of critical simplices use 32-bit cell ids.
-  if (this->DT.number_of_finite_cells() >= static_cast<std::size_t>(INT32_MAX))
+  if (this->Cells.size() >= static_cast<std::size_t>(INT32_MAX))
   {
     throw InputError("the Delaunay triangulation of this many points exceeds 2^31 cells");
-  }
-  this->Cells.reserve(this->DT.number_of_finite_cells());
-  for (auto c = this->DT.finite_cells_begin(); c != this->DT.finite_cells_end(); ++c)
-  {
-    c->info() = static_cast<Id>(this->Cells.size());
-    this->Cells.push_back(c);
   }
 }
 
