@@ -4,6 +4,7 @@
 //   flowrecon info    INPUT [--no-stable] [--no-unstable] [--quiet]
 //   flowrecon reconstruct INPUT -o OUT.vtu [--tr T] [--tp P] [--profile P.csv] [--jumps K]
 //   flowrecon diagram INPUT -o PD.csv|PD.vtu
+// Every command also takes --threads N (TBB's limit for the flow complex).
 //
 // Every command is a function over parsed arguments listed in `Commands`, so
 // new ones (reconstruct, diagram) are one function and one table entry each.
@@ -45,6 +46,8 @@
 #include "vtkXMLMultiBlockDataReader.h"
 #include "vtkXMLMultiBlockDataWriter.h"
 
+#include <tbb/global_control.h>
+
 #include <algorithm>
 #include <atomic>
 #include <cctype>
@@ -52,8 +55,10 @@
 #include <fstream>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iomanip>
+#include <memory>
 #include <iostream>
 #include <map>
 #include <sstream>
@@ -260,6 +265,8 @@ struct Command
 
 const Option QuietOption{ "--quiet", "-q", nullptr,
   "no progress line on the terminal (and no summary line)" };
+const Option ThreadsOption{ "--threads", "-j", "N",
+  "threads for the flow complex (default: all cores; the output does not depend on it)" };
 const Option NoStableOption{ "--no-stable", nullptr, nullptr,
   "skip the triangulated stable manifolds of index-2 and index-3 nodes" };
 const Option NoUnstableOption{ "--no-unstable", nullptr, nullptr,
@@ -279,7 +286,7 @@ const std::vector<Command>& Commands()
       "UnstableManifolds to OUT.vtm (VTK XML multiblock, binary, compressed).",
       "INPUT -o OUT.vtm [options]",
       { { "--output", "-o", "OUT.vtm", "the multiblock file to write (.vtm)" }, NoStableOption,
-        NoUnstableOption, QuietOption },
+        NoUnstableOption, ThreadsOption, QuietOption },
       RunComplex },
     { "info", "print node counts, Euler characteristic, degeneracies, timings",
       "Compute the flow complex of INPUT (or read a .vtm written by 'complex') and\n"
@@ -287,7 +294,7 @@ const std::vector<Command>& Commands()
       "n0 - n1 + n2 - n3 (always 1), the number of arcs, of input points and of\n"
       "merged duplicates, the perturbation applied to degenerate input, and the\n"
       "time of each phase.",
-      "INPUT [options]", { NoStableOption, NoUnstableOption, QuietOption }, RunInfo },
+      "INPUT [options]", { NoStableOption, NoUnstableOption, ThreadsOption, QuietOption }, RunInfo },
     { "reconstruct", "reconstruct the sampled shape, write it as .vtu",
       "Compute the flow complex of INPUT (or read a .vtm written by 'complex'),\n"
       "simplify it with the persistence threshold t_p, grow the flow reconstruction\n"
@@ -301,7 +308,7 @@ const std::vector<Command>& Commands()
         { "--tp", nullptr, "P", "persistence threshold t_p, 0 for none (1.1)" },
         { "--profile", nullptr, "P.csv", "write the profile of the t_r = inf run as CSV" },
         { "--jumps", nullptr, "K", "print the K largest jumps of the profile (tracking back)" },
-        QuietOption },
+        ThreadsOption, QuietOption },
       RunReconstruct },
     { "diagram", "write the persistence diagram of the flow complex",
       "Compute the flow complex of INPUT (or read a .vtm written by 'complex') and\n"
@@ -312,7 +319,8 @@ const std::vector<Command>& Commands()
       "PairType, Persistence, Birth, IsFinite, and the diagonal). Pairs of zero\n"
       "persistence are left out.",
       "INPUT -o PD.csv|PD.vtu [options]",
-      { { "--output", "-o", "PD.csv", "the diagram to write (.csv or .vtu)" }, QuietOption },
+      { { "--output", "-o", "PD.csv", "the diagram to write (.csv or .vtu)" }, ThreadsOption,
+        QuietOption },
       RunDiagram },
   };
   return commands;
@@ -1074,6 +1082,21 @@ int main(int argc, char* argv[])
     if (!ParseArguments(*command, { argv1.begin() + 1, argv1.end() }, args))
     {
       return 0;
+    }
+    // The flow complex runs on TBB; a limit holds for the rest of the run.
+    std::unique_ptr<tbb::global_control> threads;
+    if (args.Has("--threads"))
+    {
+      const std::string& text = args.Values.at("--threads");
+      char* end = nullptr;
+      const long n = std::strtol(text.c_str(), &end, 10);
+      if (text.empty() || *end != '\0' || n < 1 || n > 4096)
+      {
+        throw UsageError("option '--threads' needs a positive integer, not '" + text + "'",
+          std::string("flowrecon ") + command->Name + " --help");
+      }
+      threads = std::make_unique<tbb::global_control>(
+        tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(n));
     }
     CaptureVtkMessages();
     return command->Run(args);

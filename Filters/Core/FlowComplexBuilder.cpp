@@ -201,8 +201,11 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
         [&](const tbb::blocked_range<std::size_t>& r) {
           for (std::size_t i = r.begin(); i != r.end(); ++i)
           {
-            patches[i - begin] = ComputeStableManifold(
+            Patch& patch = patches[i - begin];
+            patch = ComputeStableManifold(
               *tri, cs, i, this->Options.StableManifolds, fallbacks[i - begin]);
+            // Sorted here, in parallel: equal runs are the 1-2 multiplicities.
+            std::sort(patch.Arrivals.begin(), patch.Arrivals.end());
           }
         });
     }
@@ -214,13 +217,31 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
       }
       throw;
     }
+    // Surfaces have far more 1-2 arcs than the first guess: grow the arc list to
+    // an estimate of its final size (from the rate so far) rather than by
+    // doubling, which would copy it several times and overshoot memory.
+    std::size_t chunkArcs = 0;
+    for (const Patch& patch : patches)
+    {
+      for (std::size_t k = 0; k < patch.Arrivals.size(); ++k)
+      {
+        chunkArcs += (k == 0 || patch.Arrivals[k] != patch.Arrivals[k - 1]) ? 1 : 0;
+      }
+    }
+    if (fc.Arcs.size() + chunkArcs > fc.Arcs.capacity())
+    {
+      const std::size_t arcs12 = fc.Arcs.size() + chunkArcs - 2 * static_cast<std::size_t>(nEdges);
+      const double perFacet = static_cast<double>(arcs12) / static_cast<double>(last);
+      const std::size_t estimate = 2 * static_cast<std::size_t>(nEdges) +
+        static_cast<std::size_t>(1.05 * perFacet * static_cast<double>(nFacets)) + 2 * cs.Facets.size();
+      ReserveHuge(fc.Arcs, std::max(estimate, fc.Arcs.capacity() + fc.Arcs.capacity() / 2));
+    }
     for (std::size_t i = begin; i < last; ++i)
     {
       const Id node = base2 + static_cast<Id>(i);
       Patch& patch = patches[i - begin];
       fc.Report.ExactFallbacks += fallbacks[i - begin];
       // Arrival counts per Gabriel edge are the 1-2 multiplicities.
-      std::sort(patch.Arrivals.begin(), patch.Arrivals.end());
       for (std::size_t k = 0; k < patch.Arrivals.size();)
       {
         std::size_t l = k;
