@@ -12,6 +12,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/scalable_allocator.h>
+#include <tbb/task_group.h>
 
 #include <CGAL/Spatial_sort_traits_adapter_3.h>
 #include <CGAL/hilbert_sort.h>
@@ -187,36 +188,35 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
   // Patches are independent: compute them in parallel, chunk by chunk, and merge
   // them in node order on this thread (which also reports progress).
   const std::size_t chunk = 8192;
-  std::vector<Patch> patches;
-  std::vector<Id> fallbacks;
-  for (std::size_t begin = 0; begin < cs.Facets.size(); begin += chunk)
+  // A pipeline: the walks of the next chunk run on the workers while this thread
+  // merges the current one (the merge is sequential: it appends to the arc list).
+  struct Batch
   {
-    this->Report(0.35 + 0.35 * begin / nf, "stable manifolds");
-    const std::size_t last = std::min(cs.Facets.size(), begin + chunk);
-    patches.assign(last - begin, Patch());
-    fallbacks.assign(last - begin, 0);
-    try
-    {
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(begin, last),
-        [&](const tbb::blocked_range<std::size_t>& r) {
-          for (std::size_t i = r.begin(); i != r.end(); ++i)
-          {
-            Patch& patch = patches[i - begin];
-            patch = ComputeStableManifold(
-              *tri, cs, i, this->Options.StableManifolds, fallbacks[i - begin]);
-            // Sorted here, in parallel: equal runs are the 1-2 multiplicities.
-            std::sort(patch.Arrivals.begin(), patch.Arrivals.end());
-          }
-        });
-    }
-    catch (const Degenerate&)
-    {
-      if (first)
-      {
-        ++fc.Report.WalkTies;
-      }
-      throw;
-    }
+    std::size_t Begin = 0, Last = 0;
+    std::vector<Patch> Patches;
+    std::vector<Id> Fallbacks;
+  };
+  auto walk = [&](std::size_t begin, Batch& batch) {
+    batch.Begin = begin;
+    batch.Last = std::min(cs.Facets.size(), begin + chunk);
+    batch.Patches.assign(batch.Last - begin, Patch());
+    batch.Fallbacks.assign(batch.Last - begin, 0);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(begin, batch.Last),
+      [&](const tbb::blocked_range<std::size_t>& r) {
+        for (std::size_t i = r.begin(); i != r.end(); ++i)
+        {
+          Patch& patch = batch.Patches[i - begin];
+          patch = ComputeStableManifold(
+            *tri, cs, i, this->Options.StableManifolds, batch.Fallbacks[i - begin]);
+          // Sorted here, in parallel: equal runs are the 1-2 multiplicities.
+          std::sort(patch.Arrivals.begin(), patch.Arrivals.end());
+        }
+      });
+  };
+  auto merge = [&](Batch& batch) {
+    const std::size_t begin = batch.Begin, last = batch.Last;
+    std::vector<Patch>& patches = batch.Patches;
+    std::vector<Id>& fallbacks = batch.Fallbacks;
     // Surfaces have far more 1-2 arcs than the first guess: grow the arc list to
     // an estimate of its final size (from the rate so far) rather than by
     // doubling, which would copy it several times and overshoot memory.
@@ -271,8 +271,47 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
       }
       patch = Patch(); // release memory early
     }
+  };
+  Batch current, next;
+  tbb::task_group group;
+  try
+  {
+    if (!cs.Facets.empty())
+    {
+      walk(0, current);
+    }
+    for (std::size_t begin = 0; begin < cs.Facets.size(); begin += chunk)
+    {
+      this->Report(0.35 + 0.35 * begin / nf, "stable manifolds");
+      const bool more = begin + chunk < cs.Facets.size();
+      if (more)
+      {
+        group.run([&, begin]() { walk(begin + chunk, next); });
+      }
+      try
+      {
+        merge(current);
+      }
+      catch (...)
+      {
+        group.cancel();
+        group.wait();
+        throw;
+      }
+      group.wait(); // rethrows what the walks threw
+      std::swap(current, next);
+    }
   }
-  std::vector<Patch>().swap(patches);
+  catch (const Degenerate&)
+  {
+    if (first)
+    {
+      ++fc.Report.WalkTies;
+    }
+    throw;
+  }
+  current = Batch();
+  next = Batch();
   if (this->Options.StableManifolds)
   {
     triangleBegin[cs.Facets.size()] = static_cast<Id>(fc.Triangles.size());
@@ -416,7 +455,7 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
 
   // Nodes are independent constructions: fill them in parallel.
   fc.Nodes.clear();
-  ReserveHuge(fc.Nodes, static_cast<std::size_t>(fc.InfinityNode + 1));
+  ReserveHugePopulated(fc.Nodes, static_cast<std::size_t>(fc.InfinityNode + 1));
   fc.Nodes.resize(static_cast<std::size_t>(fc.InfinityNode + 1));
   tbb::parallel_for(tbb::blocked_range<Id>(0, fc.InfinityNode), [&](const tbb::blocked_range<Id>& r) {
     for (Id n = r.begin(); n != r.end(); ++n)
