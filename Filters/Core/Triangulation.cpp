@@ -6,14 +6,25 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <utility>
 
 namespace flowrecon
 {
 
+namespace
+{
+std::uint64_t NextSerial()
+{
+  static std::atomic<std::uint64_t> serial{ 0 };
+  return ++serial;
+}
+} // namespace
+
 Triangulation::Triangulation(const std::vector<Point3>& points)
   : Coords(points)
+  , SerialNumber(NextSerial())
 {
   std::vector<std::pair<KPoint, Id>> items;
   items.reserve(points.size());

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <vector>
 
 namespace flowrecon
@@ -22,6 +23,9 @@ public:
   explicit Triangulation(const std::vector<Point3>& points);
 
   const Delaunay& Dt() const { return this->DT; }
+  /// Distinct for every triangulation built in this process: keys caches that
+  /// must not outlive it (a later one may reuse the address and the ids).
+  std::uint64_t Serial() const { return this->SerialNumber; }
   int Dimension() const { return this->DT.dimension(); }
   const Point3& Coord(Id k) const { return this->Coords[k]; }
   const KPoint& KCoord(Id k) const { return this->Vertices[k]->point(); }
@@ -58,6 +62,7 @@ public:
 
 private:
   const std::vector<Point3>& Coords;
+  std::uint64_t SerialNumber;
   Delaunay DT;
   std::vector<VertexHandle> Vertices;
   std::vector<CellHandle> Cells;

@@ -38,6 +38,7 @@ struct Frame
 {
   Vec<FT> C, N;
 
+  Frame() = default;
   Frame(const Triangulation& tri, const std::array<Id, 3>& g)
   {
     const Vec<FT> a = Vec<FT>::From(tri.Coord(g[0])), b = Vec<FT>::From(tri.Coord(g[1])),
@@ -47,6 +48,80 @@ struct Frame
   }
   Vec<FT> At(const FT& lambda) const { return this->C + this->N * lambda; }
 };
+
+/// Frame of g through a small per-thread cache: a walk meets each Voronoi edge
+/// several times (as an exit, then as the start of both branches), and the
+/// circumcentre is the most expensive part of a step. Keyed by the
+/// triangulation's serial number, so never stale.
+template <class FT>
+Frame<FT> CachedFrame(const Triangulation& tri, const std::array<Id, 3>& g)
+{
+  struct Entry
+  {
+    std::uint64_t Serial = 0;
+    std::array<Id, 3> G{ { -1, -1, -1 } };
+    Frame<FT> F;
+  };
+  constexpr std::size_t Size = 1024; // a power of two
+  thread_local std::vector<Entry> cache(Size);
+  const std::size_t slot =
+    static_cast<std::size_t>((g[0] * 73856093) ^ (g[1] * 19349663) ^ (g[2] * 83492791)) & (Size - 1);
+  Entry& e = cache[slot];
+  if (e.Serial != tri.Serial() || e.G != g)
+  {
+    e.F = Frame<FT>(tri, g);
+    e.G = g;
+    e.Serial = tri.Serial();
+  }
+  return e.F;
+}
+
+/// Link of uv (Triangulation::Link) through a small per-thread cache: walks ask
+/// for the same edges again and again (measured: about half of the requests on
+/// surface samples repeat within 4096 edges). Which cell is recorded for a link
+/// sample may differ from an uncached call with another hint; every user only
+/// needs some cell containing (u, v, s). The references stay valid until this
+/// thread's next call.
+struct LinkView
+{
+  const std::vector<Id>& Samples;
+  const std::vector<CellHandle>& Cells;
+};
+inline LinkView CachedLink(const Triangulation& tri, Id u, Id v, CellHandle hint)
+{
+  struct Entry
+  {
+    std::uint64_t Serial = 0;
+    Id U = -1, V = -1;
+    std::vector<Id> Samples;
+    std::vector<CellHandle> Cells;
+  };
+  constexpr std::size_t Size = 4096; // a power of two
+  thread_local std::vector<Entry> cache(Size);
+  const Id a = std::min(u, v), b = std::max(u, v);
+  Entry& e = cache[static_cast<std::size_t>((a * 73856093) ^ (b * 19349663)) & (Size - 1)];
+  if (e.Serial != tri.Serial() || e.U != a || e.V != b)
+  {
+    e.Samples.clear();
+    e.Cells.clear();
+    tri.Link(a, b, e.Samples, &e.Cells, hint);
+    // In id order: where the circulation starts depends on the hint and on the
+    // (concurrently built) triangulation, and the order of candidates decides
+    // which interval comparisons a walk meets, hence when it falls back to exact.
+    for (std::size_t i = 1; i < e.Samples.size(); ++i)
+    {
+      for (std::size_t j = i; j > 0 && e.Samples[j] < e.Samples[j - 1]; --j)
+      {
+        std::swap(e.Samples[j], e.Samples[j - 1]);
+        std::swap(e.Cells[j], e.Cells[j - 1]);
+      }
+    }
+    e.U = a;
+    e.V = b;
+    e.Serial = tri.Serial();
+  }
+  return { e.Samples, e.Cells };
+}
 
 inline std::array<Id, 3> SortedTriangle(Id a, Id b, Id c)
 {
@@ -92,16 +167,14 @@ bool FirstExit(const Triangulation& tri, const EdgePoint<FT>& z, Id u, Id v,
   const std::vector<Id>& excluded, bool descending, CellHandle hint, Id& exitSample,
   EdgePoint<FT>& exitPoint, CellHandle& exitCell)
 {
-  thread_local std::vector<Id> link;
-  thread_local std::vector<CellHandle> linkCells;
-  const Frame<FT> frame(tri, z.G);
+  const Frame<FT> frame = CachedFrame<FT>(tri, z.G);
   const Vec<FT> pu = Vec<FT>::From(tri.Coord(u)), pv = Vec<FT>::From(tri.Coord(v));
   const Vec<FT> m = (pu + pv) / FT(2);
   const Vec<FT> cm = frame.C - m; // z - m = cm + lambda N
   const FT uu = pu.SquaredLength();
-  link.clear();
-  linkCells.clear();
-  tri.Link(u, v, link, &linkCells, hint);
+  const LinkView view = CachedLink(tri, u, v, hint);
+  const std::vector<Id>& link = view.Samples;
+  const std::vector<CellHandle>& linkCells = view.Cells;
   Id best = -1;
   CellHandle bestCell;
   // For candidate s: num = |z-s|^2 - |z-u|^2 >= 0 and D = +-(m - z).(s - u) > 0;
@@ -161,7 +234,7 @@ bool FirstExit(const Triangulation& tri, const EdgePoint<FT>& z, Id u, Id v,
   exitSample = best;
   exitCell = bestCell;
   exitPoint.G = SortedTriangle(u, v, best);
-  const Frame<FT> next(tri, exitPoint.G);
+  const Frame<FT> next = CachedFrame<FT>(tri, exitPoint.G);
   const Vec<FT> e = pv - pu;
   const Vec<FT> cm2 = next.C - m;
   const FT a = cm2.Cross(cm).Dot(e), b = cm2.Cross(frame.N).Dot(e);
