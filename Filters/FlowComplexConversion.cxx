@@ -40,15 +40,6 @@ std::string Lower(std::string s)
   return s;
 }
 
-template <class A>
-vtkNew<A> NamedArray(const char* name, int components = 1)
-{
-  vtkNew<A> a;
-  a->SetName(name);
-  a->SetNumberOfComponents(components);
-  return a;
-}
-
 vtkSmartPointer<vtkPoints> MakePoints(const std::vector<Point3>& pts)
 {
   auto points = vtkSmartPointer<vtkPoints>::New();

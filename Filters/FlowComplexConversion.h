@@ -6,6 +6,8 @@
 #include "FlowComplex.h"    // core data structure
 #include "Simplification.h" // core data structure
 
+#include "vtkSmartPointer.h"
+
 #include <string>
 #include <vector>
 
@@ -55,6 +57,16 @@ bool SimplificationFromMultiBlock(vtkMultiBlockDataSet* input, Id nodeCount,
 
 /// The block named `name` of `input`, or nullptr.
 vtkDataObject* NamedBlock(vtkMultiBlockDataSet* input, const char* name);
+
+/// A new, empty array of type A named `name` (the arrays of the data contract).
+template <class A>
+vtkSmartPointer<A> NamedArray(const char* name, int components = 1)
+{
+  auto a = vtkSmartPointer<A>::New();
+  a->SetName(name);
+  a->SetNumberOfComponents(components);
+  return a;
+}
 
 } // namespace flowrecon
 

@@ -23,6 +23,7 @@
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 #include <utility>
@@ -65,13 +66,32 @@ void GroupByNode(const std::vector<Id>& cellNode, std::size_t nodes, std::vector
   }
 }
 
-template <class A>
-vtkSmartPointer<A> Named(const char* name)
+using flowrecon::NamedArray;
+
+/// The arrays that describe an insertion, in all three outputs (cells of the
+/// reconstruction, rows of the profile, sponsor arrows): Step, NodeId, Priority,
+/// Extension, Sponsor.
+struct InsertionArrays
 {
-  auto a = vtkSmartPointer<A>::New();
-  a->SetName(name);
-  return a;
-}
+  vtkSmartPointer<vtkIdTypeArray> Step = NamedArray<vtkIdTypeArray>("Step");
+  vtkSmartPointer<vtkIdTypeArray> NodeId = NamedArray<vtkIdTypeArray>("NodeId");
+  vtkSmartPointer<vtkDoubleArray> Priority = NamedArray<vtkDoubleArray>("Priority");
+  vtkSmartPointer<vtkIntArray> Extension = NamedArray<vtkIntArray>("Extension");
+  vtkSmartPointer<vtkIdTypeArray> Sponsor = NamedArray<vtkIdTypeArray>("Sponsor");
+
+  void Append(Id step, Id node, const flowrecon::Insertion& in)
+  {
+    this->Step->InsertNextValue(step);
+    this->NodeId->InsertNextValue(node);
+    this->Priority->InsertNextValue(in.Priority);
+    this->Extension->InsertNextValue(static_cast<int>(in.Kind));
+    this->Sponsor->InsertNextValue(in.Sponsor);
+  }
+  std::array<vtkDataArray*, 5> All() const
+  {
+    return { { this->Step, this->NodeId, this->Priority, this->Extension, this->Sponsor } };
+  }
+};
 
 } // namespace
 
@@ -216,7 +236,7 @@ int vtkFlowReconstruction::RequestData(
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(static_cast<vtkIdType>(fc.Points.size()));
-  auto original = Named<vtkIdTypeArray>("vtkOriginalPointIds");
+  auto original = NamedArray<vtkIdTypeArray>("vtkOriginalPointIds");
   original->SetNumberOfTuples(static_cast<vtkIdType>(fc.Points.size()));
   for (std::size_t i = 0; i < fc.Points.size(); ++i)
   {
@@ -227,29 +247,21 @@ int vtkFlowReconstruction::RequestData(
   grid->Initialize();
   grid->SetPoints(points);
   grid->GetPointData()->AddArray(original);
-  auto nodeId = Named<vtkIdTypeArray>("NodeId");
-  auto index = Named<vtkIntArray>("Index");
-  auto value = Named<vtkDoubleArray>("CriticalValue");
-  auto step = Named<vtkIdTypeArray>("Step");
-  auto priority = Named<vtkDoubleArray>("Priority");
-  auto threshold = Named<vtkDoubleArray>("Threshold");
-  auto extension = Named<vtkIntArray>("Extension");
-  auto sponsor = Named<vtkIdTypeArray>("Sponsor");
-  auto owner = Named<vtkIdTypeArray>("Owner");
-  auto mult = Named<vtkIntArray>("Multiplicity");
+  InsertionArrays cellInsertion;
+  auto index = NamedArray<vtkIntArray>("Index");
+  auto value = NamedArray<vtkDoubleArray>("CriticalValue");
+  auto threshold = NamedArray<vtkDoubleArray>("Threshold");
+  auto owner = NamedArray<vtkIdTypeArray>("Owner");
+  auto mult = NamedArray<vtkIntArray>("Multiplicity");
   grid->AllocateEstimate(static_cast<vtkIdType>(selected.size()), 3);
   auto add = [&](int type, int n, const vtkIdType* ids, Id node) {
     const Id carrier = c.Carrier[node];
     const flowrecon::Insertion& in = steps[carrier];
     grid->InsertNextCell(type, n, ids);
-    nodeId->InsertNextValue(node);
+    cellInsertion.Append(in.Step, node, in);
     index->InsertNextValue(fc.Nodes[node].Index);
     value->InsertNextValue(fc.Nodes[node].Value);
-    step->InsertNextValue(in.Step);
-    priority->InsertNextValue(in.Priority);
     threshold->InsertNextValue(in.Threshold);
-    extension->InsertNextValue(static_cast<int>(in.Kind));
-    sponsor->InsertNextValue(in.Sponsor);
     owner->InsertNextValue(carrier);
     mult->InsertNextValue(fc.Nodes[node].Index == 1 ? multiplicity[node] : 0);
   };
@@ -280,49 +292,41 @@ int vtkFlowReconstruction::RequestData(
       add(VTK_TETRA, 4, ids, node);
     }
   }
-  for (vtkDataArray* a : std::initializer_list<vtkDataArray*>{ nodeId, index, value, step,
-         priority, threshold, extension, sponsor, owner, mult })
+  for (vtkDataArray* a : cellInsertion.All())
+  {
+    grid->GetCellData()->AddArray(a);
+  }
+  for (vtkDataArray* a : std::initializer_list<vtkDataArray*>{ index, value, threshold, owner, mult })
   {
     grid->GetCellData()->AddArray(a);
   }
   grid->GetCellData()->SetActiveScalars("CriticalValue");
 
   // Port 1: the profile of the whole run.
-  auto pStep = Named<vtkIdTypeArray>("Step");
-  auto pNode = Named<vtkIdTypeArray>("NodeId");
-  auto pIndex = Named<vtkIntArray>("Index");
-  auto pPriority = Named<vtkDoubleArray>("Priority");
-  auto pThreshold = Named<vtkDoubleArray>("Threshold");
-  auto pExtension = Named<vtkIntArray>("Extension");
-  auto pSponsor = Named<vtkIdTypeArray>("Sponsor");
+  InsertionArrays rowInsertion;
+  auto pIndex = NamedArray<vtkIntArray>("Index");
+  auto pThreshold = NamedArray<vtkDoubleArray>("Threshold");
   for (std::size_t k = 0; k < c.Run.Order.size(); ++k)
   {
     const Id node = c.Run.Order[k];
     const flowrecon::Insertion& in = steps[node];
-    pStep->InsertNextValue(static_cast<vtkIdType>(k));
-    pNode->InsertNextValue(node);
+    rowInsertion.Append(static_cast<Id>(k), node, in);
     pIndex->InsertNextValue(fc.Nodes[node].Index);
-    pPriority->InsertNextValue(in.Priority);
     pThreshold->InsertNextValue(in.Threshold);
-    pExtension->InsertNextValue(static_cast<int>(in.Kind));
-    pSponsor->InsertNextValue(in.Sponsor);
   }
   profile->Initialize();
-  for (vtkAbstractArray* a : std::initializer_list<vtkAbstractArray*>{ pStep, pNode, pIndex,
-         pPriority, pThreshold, pExtension, pSponsor })
+  for (vtkDataArray* a : rowInsertion.All())
   {
     profile->AddColumn(a);
   }
+  profile->AddColumn(pIndex);
+  profile->AddColumn(pThreshold);
 
   // Port 2: sponsor -> node arrows of the current reconstruction.
   vtkNew<vtkPoints> arrowPoints;
   arrowPoints->SetDataTypeToDouble();
   vtkNew<vtkCellArray> lines;
-  auto aExtension = Named<vtkIntArray>("Extension");
-  auto aPriority = Named<vtkDoubleArray>("Priority");
-  auto aStep = Named<vtkIdTypeArray>("Step");
-  auto aNode = Named<vtkIdTypeArray>("NodeId");
-  auto aSponsor = Named<vtkIdTypeArray>("Sponsor");
+  InsertionArrays arrowInsertion;
   for (const Id node : c.Run.Order)
   {
     const flowrecon::Insertion& in = steps[node];
@@ -333,17 +337,12 @@ int vtkFlowReconstruction::RequestData(
     const vtkIdType ids[2] = { arrowPoints->InsertNextPoint(fc.Nodes[in.Sponsor].Location.data()),
       arrowPoints->InsertNextPoint(fc.Nodes[node].Location.data()) };
     lines->InsertNextCell(2, ids);
-    aExtension->InsertNextValue(static_cast<int>(in.Kind));
-    aPriority->InsertNextValue(in.Priority);
-    aStep->InsertNextValue(in.Step);
-    aNode->InsertNextValue(node);
-    aSponsor->InsertNextValue(in.Sponsor);
+    arrowInsertion.Append(in.Step, node, in);
   }
   arrows->Initialize();
   arrows->SetPoints(arrowPoints);
   arrows->SetLines(lines);
-  for (vtkDataArray* a :
-    std::initializer_list<vtkDataArray*>{ aExtension, aPriority, aStep, aNode, aSponsor })
+  for (vtkDataArray* a : arrowInsertion.All())
   {
     arrows->GetCellData()->AddArray(a);
   }

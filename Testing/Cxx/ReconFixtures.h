@@ -1,8 +1,9 @@
 // Fixtures shared by TestSimplification and TestReconstruction: hand-made Hasse
-// diagrams, random clouds, and small helpers over nodes and arcs.
+// diagrams, quasi-uniform clouds, and small helpers over nodes and arcs.
 #ifndef flowrecon_ReconFixtures_h
 #define flowrecon_ReconFixtures_h
 
+#include "Clouds.h"
 #include "FlowComplex.h"
 
 #include <algorithm>
@@ -17,6 +18,10 @@
 namespace fixtures
 {
 using namespace flowrecon;
+using clouds::Rng;
+using clouds::Cube;
+using clouds::Sphere;
+using clouds::Torus;
 
 inline Node MakeNode(int index, double value, std::array<Id, 4> simplex)
 {
@@ -108,59 +113,6 @@ inline std::map<std::pair<Id, Id>, int> ArcMap(const std::vector<Arc>& arcs)
     m[{ a.Lower, a.Upper }] += a.Multiplicity;
   }
   return m;
-}
-
-// Clouds come from a fixed generator and our own mapping to [0,1), so that they
-// are the same everywhere (as in TestCoreInvariants).
-struct Rng
-{
-  std::mt19937_64 g;
-  explicit Rng(std::uint64_t seed)
-    : g(seed)
-  {
-  }
-  double U() { return static_cast<double>(g() >> 11) * 0x1.0p-53; }
-  double N()
-  {
-    const double u = std::max(this->U(), 1e-300), v = this->U();
-    return std::sqrt(-2 * std::log(u)) * std::cos(2 * M_PI * v);
-  }
-};
-
-inline std::vector<Point3> Cube(int n, std::uint64_t seed)
-{
-  Rng r(seed);
-  std::vector<Point3> c(n);
-  for (Point3& p : c)
-  {
-    p = { { r.U(), r.U(), r.U() } };
-  }
-  return c;
-}
-
-inline std::vector<Point3> Sphere(int n, std::uint64_t seed)
-{
-  Rng r(seed);
-  std::vector<Point3> c(n);
-  for (Point3& p : c)
-  {
-    const double x = r.N(), y = r.N(), z = r.N(), l = std::sqrt(x * x + y * y + z * z);
-    p = { { x / l, y / l, z / l } };
-  }
-  return c;
-}
-
-inline std::vector<Point3> Torus(int n, std::uint64_t seed)
-{
-  Rng r(seed);
-  std::vector<Point3> c(n);
-  for (Point3& p : c)
-  {
-    const double u = 2 * M_PI * r.U(), v = 2 * M_PI * r.U();
-    p = { { (1 + 0.35 * std::cos(v)) * std::cos(u), (1 + 0.35 * std::cos(v)) * std::sin(u),
-      0.35 * std::sin(v) } };
-  }
-  return c;
 }
 
 /// Quasi-uniform sphere sample (Fibonacci lattice), jittered by 1e-4 so that

@@ -4,6 +4,7 @@
 // contractible total complex, determinism; on random, structured and degenerate
 // clouds.
 #include "Check.h"
+#include "Clouds.h"
 
 #include "FlowComplexBuilder.h"
 #include "Persistence.h"
@@ -26,58 +27,10 @@ namespace
 
 using Cloud = std::vector<Point3>;
 
-// Clouds are generated with a fixed generator and our own mapping to [0,1), so
-// that they are the same everywhere.
-struct Rng
-{
-  std::mt19937_64 g;
-  explicit Rng(std::uint64_t seed)
-    : g(seed)
-  {
-  }
-  double U() { return static_cast<double>(g() >> 11) * 0x1.0p-53; }
-  double N()
-  {
-    const double u = std::max(this->U(), 1e-300), v = this->U();
-    return std::sqrt(-2 * std::log(u)) * std::cos(2 * M_PI * v);
-  }
-};
-
-Cloud Cube(int n, std::uint64_t seed)
-{
-  Rng r(seed);
-  Cloud c(n);
-  for (Point3& p : c)
-  {
-    p = { { r.U(), r.U(), r.U() } };
-  }
-  return c;
-}
-
-Cloud Sphere(int n, std::uint64_t seed)
-{
-  Rng r(seed);
-  Cloud c(n);
-  for (Point3& p : c)
-  {
-    const double x = r.N(), y = r.N(), z = r.N(), l = std::sqrt(x * x + y * y + z * z);
-    p = { { x / l, y / l, z / l } };
-  }
-  return c;
-}
-
-Cloud Torus(int n, std::uint64_t seed)
-{
-  Rng r(seed);
-  Cloud c(n);
-  for (Point3& p : c)
-  {
-    const double u = 2 * M_PI * r.U(), v = 2 * M_PI * r.U();
-    p = { { (1 + 0.35 * std::cos(v)) * std::cos(u), (1 + 0.35 * std::cos(v)) * std::sin(u),
-      0.35 * std::sin(v) } };
-  }
-  return c;
-}
+using clouds::Cube;
+using clouds::Rng;
+using clouds::Sphere;
+using clouds::Torus;
 
 Cloud Grid(int k, double jitter, std::uint64_t seed)
 {
