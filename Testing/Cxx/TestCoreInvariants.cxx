@@ -212,7 +212,23 @@ void CheckComplex(const std::string& name, const Cloud& cloud, bool emst)
       }
     }
   }
+  // Conversely, every index-2 node has a patch, and every 1-2 arc appears on it
+  // as a boundary edge used as often as the arc's multiplicity.
+  bool arcsOnPatches = true;
+  for (std::size_t i = 0; i < fc.Nodes.size(); ++i)
+    if (fc.Nodes[i].Index == 2)
+      arcsOnPatches = arcsOnPatches && edgeUse.count(static_cast<Id>(i)) == 1;
+  for (const Arc& a : fc.Arcs)
+  {
+    if (fc.Nodes[a.Lower].Index != 1 || fc.Nodes[a.Upper].Index != 2)
+      continue;
+    const auto& s = fc.Nodes[a.Lower].Simplex;
+    const auto use = edgeUse.find(a.Upper);
+    arcsOnPatches = arcsOnPatches && use != edgeUse.end() &&
+      use->second.count({ s[0], s[1] }) == 1 && use->second.at({ s[0], s[1] }) == a.Multiplicity;
+  }
   CHECK(patches);
+  CHECK(arcsOnPatches);
 
   if (emst)
   {

@@ -25,5 +25,25 @@ for name in ("Reconstruction t_r 2", "Reconstruction t_r 2.5"):
     cells[name] = source.GetDataInformation().GetNumberOfCells()
 print("cells:", cells, "in", os.getcwd())
 if not 0 < cells["Reconstruction t_r 2"] < cells["Reconstruction t_r 2.5"]:
-    sys.exit("FAIL: reconstructions not nested/non-empty: %s" % cells)
+    sys.exit("FAIL: reconstructions empty or not growing with t_r: %s" % cells)
+# Nested: the t_r = 2 cells are exactly the t_r = 2.5 cells with Threshold < 2.
+from paraview import servermanager
+
+
+def cell_keys(name, below=None):
+    grid = servermanager.Fetch(simple.FindSource(name))
+    cd = grid.GetCellData()
+    node, threshold = cd.GetArray("NodeId"), cd.GetArray("Threshold")
+    keys = set()
+    for c in range(grid.GetNumberOfCells()):
+        if below is None or threshold.GetValue(c) < below:
+            ids = grid.GetCell(c).GetPointIds()
+            keys.add((node.GetValue(c), tuple(sorted(ids.GetId(k) for k in range(ids.GetNumberOfIds())))))
+    return keys
+
+
+small, large = cell_keys("Reconstruction t_r 2"), cell_keys("Reconstruction t_r 2.5", below=2)
+if small != large:
+    sys.exit("FAIL: the t_r 2 reconstruction is not the Threshold < 2 part of the t_r 2.5 one "
+             "(%d vs %d cells, %d in common)" % (len(small), len(large), len(small & large)))
 print("PASS")
