@@ -1092,7 +1092,7 @@ int main(int argc, char* argv[])
       const long n = std::strtol(text.c_str(), &end, 10);
       if (text.empty() || *end != '\0' || n < 1 || n > 4096)
       {
-        throw UsageError("option '--threads' needs a positive integer, not '" + text + "'",
+        throw UsageError("option '--threads' needs an integer from 1 to 4096, not '" + text + "'",
           std::string("flowrecon ") + command->Name + " --help");
       }
       threads = std::make_unique<tbb::global_control>(

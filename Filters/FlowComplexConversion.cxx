@@ -98,12 +98,12 @@ double Diagonal(const FlowComplex& fc)
       hi[k] = std::max(hi[k], fc.Points[i][k]);
     }
   }
-  double d2 = 0;
-  for (int k = 0; k < 3; ++k)
+  if (!(hi[0] >= lo[0]))
   {
-    d2 += hi[k] > lo[k] ? (hi[k] - lo[k]) * (hi[k] - lo[k]) : 0;
+    return 0;
   }
-  return std::sqrt(d2);
+  // Halves and hypot: no overflow even for coordinates near the largest doubles.
+  return 2 * std::hypot(0.5 * hi[0] - 0.5 * lo[0], 0.5 * hi[1] - 0.5 * lo[1], 0.5 * hi[2] - 0.5 * lo[2]);
 }
 
 vtkSmartPointer<vtkPolyData> HasseDiagramBlock(const FlowComplex& fc)

@@ -73,11 +73,15 @@ public:
   {
   }
 
-  /// One attempt on `coords` (the unique points, perhaps perturbed). Throws
-  /// Degenerate if general position fails; `first` records the counts.
+  /// One attempt on `coords` (the unique points, perhaps perturbed, scaled by
+  /// 2^-ScaleExponent). Throws Degenerate if general position fails; `first`
+  /// records the counts. Constructed values and points are scaled back.
   void Run(const std::vector<Point3>& coords, bool first);
 
+  int ScaleExponent = 0;
+
 private:
+  void ScaleBack();
   Node MakeNode(int index, const Id* simplex, const std::vector<Point3>& coords) const;
 
   const PreparedInput& In;
@@ -402,6 +406,14 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
         ends[i][s] = static_cast<std::int32_t>(line.Target);
         if (record)
         {
+          // Voronoi vertices of nearly cospherical samples can lie beyond the
+          // range of doubles (clouds mixing scales); such points of a drawn
+          // polyline are left out. The flow line's target is exact regardless.
+          line.Points.erase(std::remove_if(line.Points.begin(), line.Points.end(),
+                              [](const Point3& p) {
+                                return !(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]));
+                              }),
+            line.Points.end());
           fc.FlowLines.push_back(std::move(line));
         }
       }
@@ -533,7 +545,43 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
       }
     }
   }
+  this->ScaleBack();
   fc.Time.Assembly = Seconds(t);
+}
+
+void Builder::ScaleBack()
+{
+  const int e = this->ScaleExponent;
+  if (e == 0)
+  {
+    return;
+  }
+  auto back = [e](Point3& p) {
+    for (double& x : p)
+    {
+      x = std::ldexp(x, e);
+    }
+  };
+  FlowComplex& fc = this->FC;
+  for (Node& n : fc.Nodes)
+  {
+    if (n.Index > 0 && !n.IsInfinity())
+    {
+      n.Value = std::ldexp(n.Value, e);
+      back(n.Location);
+    }
+  }
+  for (std::size_t k = static_cast<std::size_t>(fc.NumberOfInputPoints); k < fc.Points.size(); ++k)
+  {
+    back(fc.Points[k]);
+  }
+  for (FlowLine& line : fc.FlowLines)
+  {
+    for (Point3& p : line.Points)
+    {
+      back(p);
+    }
+  }
 }
 
 /// Renumbers the distinct points along a Hilbert curve. Every per-vertex table
@@ -589,6 +637,34 @@ FlowComplex BuildFlowComplex(
   fc.Report.DuplicatePoints = static_cast<Id>(points.size() - in.Unique.size());
   Builder builder(in, points, options, progress, fc);
 
+  // Work on coordinates scaled by a power of two (exact) to magnitudes about 1:
+  // the constructions square and multiply coordinates, which would overflow or
+  // underflow for clouds measured in units near 1e+-60 and beyond. Outputs are
+  // scaled back.
+  {
+    double largest = 0;
+    for (const Point3& p : in.Unique)
+    {
+      for (const double x : p)
+      {
+        largest = std::max(largest, std::fabs(x));
+      }
+    }
+    builder.ScaleExponent = largest > 0 ? std::ilogb(largest) : 0;
+    Point3 lo{ { HUGE_VAL, HUGE_VAL, HUGE_VAL } }, hi{ { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL } };
+    for (Point3& p : in.Unique)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        p[k] = std::ldexp(p[k], -builder.ScaleExponent);
+        lo[k] = std::min(lo[k], p[k]);
+        hi[k] = std::max(hi[k], p[k]);
+      }
+    }
+    in.Diagonal = std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+      (hi[2] - lo[2]) * (hi[2] - lo[2])); // in scaled units, like everything in the builder
+  }
+
   // Perturbations are relative to the cloud size (never below a few ulps of the
   // coordinates). Degenerate configurations split their critical values only at
   // second order in the perturbation, so 1e-6 of the diagonal keeps those gaps
@@ -617,7 +693,7 @@ FlowComplex BuildFlowComplex(
         builder.Run(Perturb(in.Unique, magnitude, options.Seed * 0x100000001B3ull + attempt), false);
       }
       fc.Report.Attempts = attempt;
-      fc.Report.PerturbationMagnitude = magnitude;
+      fc.Report.PerturbationMagnitude = std::ldexp(magnitude, builder.ScaleExponent);
       break;
     }
     catch (const Degenerate& e)

@@ -59,13 +59,12 @@ PreparedInput PrepareInput(const std::vector<Point3>& points)
   {
     throw InputError("need at least 4 distinct points, got " + std::to_string(in.Unique.size()));
   }
-  double d2 = 0;
   for (int k = 0; k < 3; ++k)
   {
-    d2 += (hi[k] - lo[k]) * (hi[k] - lo[k]);
-    in.Centre[k] = 0.5 * (lo[k] + hi[k]);
+    in.Centre[k] = 0.5 * lo[k] + 0.5 * hi[k]; // halves: no overflow near the largest doubles
   }
-  in.Diagonal = std::sqrt(d2);
+  in.Diagonal =
+    2 * std::hypot(0.5 * hi[0] - 0.5 * lo[0], 0.5 * hi[1] - 0.5 * lo[1], 0.5 * hi[2] - 0.5 * lo[2]);
   return in;
 }
 

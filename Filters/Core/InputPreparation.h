@@ -17,7 +17,7 @@ struct PreparedInput
   std::vector<Point3> Unique;  ///< distinct points, in order of first occurrence
   std::vector<Id> InputId;     ///< input id of each unique point
   std::vector<Id> Representative; ///< per input point: the input id standing for it
-  double Diagonal = 0;         ///< bounding-box diagonal
+  double Diagonal = 0;         ///< bounding-box diagonal (BuildFlowComplex rescales it with Unique)
   Point3 Centre{ { 0, 0, 0 } };
 };
 

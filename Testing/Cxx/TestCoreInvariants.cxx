@@ -253,6 +253,37 @@ void CheckComplex(const std::string& name, const Cloud& cloud, bool emst)
             << ", duplicates " << fc.Report.DuplicatePoints << "\n";
 }
 
+/// Scaling a cloud by 2^k (exact in floating point) scales every critical value
+/// and location by 2^k and changes nothing else, even near the ends of the
+/// double range, where squares of coordinates overflow or underflow.
+void CheckScaleInvariance(const Cloud& cloud, int k)
+{
+  std::cout << "-- scaled by 2^" << k << "\n";
+  Cloud scaled = cloud;
+  for (Point3& p : scaled)
+    for (double& x : p)
+      x = std::ldexp(x, k);
+  const FlowComplex a = BuildFlowComplex(cloud, BuildOptions(), Progress());
+  const FlowComplex b = BuildFlowComplex(scaled, BuildOptions(), Progress());
+  bool same = a.Nodes.size() == b.Nodes.size() && a.Arcs.size() == b.Arcs.size() &&
+    a.Triangles == b.Triangles && a.Points.size() == b.Points.size();
+  for (std::size_t i = 0; same && i < a.Nodes.size(); ++i)
+  {
+    same = a.Nodes[i].Simplex == b.Nodes[i].Simplex &&
+      (a.Nodes[i].IsInfinity() || std::ldexp(a.Nodes[i].Value, k) == b.Nodes[i].Value);
+    for (int c = 0; same && c < 3 && !a.Nodes[i].IsInfinity(); ++c)
+      same = std::ldexp(a.Nodes[i].Location[c], k) == b.Nodes[i].Location[c];
+  }
+  for (std::size_t i = 0; same && i < a.Arcs.size(); ++i)
+    same = a.Arcs[i].Lower == b.Arcs[i].Lower && a.Arcs[i].Upper == b.Arcs[i].Upper &&
+      a.Arcs[i].Multiplicity == b.Arcs[i].Multiplicity;
+  bool finite = true;
+  for (const Point3& p : b.Points)
+    finite = finite && std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
+  CHECK(same);
+  CHECK(finite);
+}
+
 /// The interval-filtered walks and the exact-only walks give the same complex.
 void CheckExactAgreement(const std::string& name, const Cloud& cloud)
 {
@@ -291,6 +322,8 @@ int main()
   }
   CheckComplex("cube 5000", Cube(5000, 7), false);
   CheckComplex("torus 8000", Torus(8000, 8), false);
+  for (const int k : { 700, -700, 250, -1000 })
+    CheckScaleInvariance(Cube(300, 31), k);
   CheckExactAgreement("cube", Cube(400, 21));
   CheckExactAgreement("torus", Torus(600, 22));
   CheckExactAgreement("jittered grid", Grid(5, 1e-3, 23));
