@@ -165,6 +165,16 @@ int vtkFlowReconstruction::RequestData(
       return 0;
     }
     const auto& nodes = cache->FC.Nodes;
+    // Without the index-2 patches the output would hold only vertices and edges
+    // while reporting every step: refuse rather than return a partial shape.
+    const bool hasPatchNodes = std::any_of(nodes.begin(), nodes.end(),
+      [](const flowrecon::Node& n) { return n.Index == 2; });
+    if (hasPatchNodes && cache->FC.Triangles.empty())
+    {
+      vtkErrorMacro("the flow complex has no stable manifolds (computed with StableManifolds "
+                    "off, or --no-stable): the reconstruction needs them");
+      return 0;
+    }
     // The queue is 90% of the work; the selection below reports the rest.
     const flowrecon::Progress progress = flowrecon::AlgorithmProgress(this, 0.9);
     bool finished = false;

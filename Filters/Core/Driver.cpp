@@ -12,7 +12,7 @@ int ObtuseCorner(const KPoint& a, const KPoint& b, const KPoint& c)
   int obtuse = -1;
   for (int i = 0; i < 3; ++i)
   {
-    const CGAL::Angle angle = FastAngle(*p[(i + 1) % 3], *p[i], *p[(i + 2) % 3]);
+    const CGAL::Angle angle = CGAL::angle(*p[(i + 1) % 3], *p[i], *p[(i + 2) % 3]);
     if (angle == CGAL::RIGHT)
     {
       throw Degenerate("right triangle");
@@ -82,7 +82,7 @@ CellDriver ClassifyCell(CellHandle c)
           continue;
         }
         // k is inside the ball of diameter ij iff the angle at k is obtuse.
-        const CGAL::Angle angle = FastAngle(*p[i], *p[k], *p[j]);
+        const CGAL::Angle angle = CGAL::angle(*p[i], *p[k], *p[j]);
         if (angle == CGAL::RIGHT)
         {
           throw Degenerate("right triangle");

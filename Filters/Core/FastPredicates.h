@@ -1,8 +1,9 @@
-// The two predicates the flow complex calls most, with a static floating-point
-// filter in front of CGAL's exact ones: evaluated in double with a bound on the
-// rounding error, and delegated to CGAL (interval + exact) only when the double
-// sign is not certain. Same answers as CGAL::angle and side_of_bounded_sphere;
-// CGAL has no static filter for these two.
+// The side-of-diametral-sphere predicate, which the flow complex calls most,
+// with a static floating-point filter in front of CGAL's exact one: evaluated in
+// double with a bound on the rounding error, and delegated to CGAL (interval +
+// exact) only when the double sign is not certain. Same answers as
+// Side_of_bounded_sphere_3, for which CGAL has no static filter (its angle
+// predicate has one, so CGAL::angle is used directly).
 #ifndef flowrecon_FastPredicates_h
 #define flowrecon_FastPredicates_h
 
@@ -13,23 +14,6 @@
 
 namespace flowrecon
 {
-
-/// Sign of (p - q).(r - q): the angle at q (CGAL::angle(p, q, r)).
-inline CGAL::Angle FastAngle(const KPoint& p, const KPoint& q, const KPoint& r)
-{
-  const double ax = p.x() - q.x(), ay = p.y() - q.y(), az = p.z() - q.z();
-  const double bx = r.x() - q.x(), by = r.y() - q.y(), bz = r.z() - q.z();
-  const double d = ax * bx + ay * by + az * bz;
-  const double m = std::fabs(ax * bx) + std::fabs(ay * by) + std::fabs(az * bz);
-  // Each difference carries a relative error eps, each product and sum one more:
-  // 8 eps * m bounds the total with room to spare.
-  // Tiny or huge magnitudes (underflow, overflow) go to CGAL.
-  if (m > 1e-200 && m < 1e200 && std::fabs(d) > 8 * std::numeric_limits<double>::epsilon() * m)
-  {
-    return d > 0 ? CGAL::ACUTE : CGAL::OBTUSE;
-  }
-  return CGAL::angle(p, q, r);
-}
 
 /// Position of t relative to the diametral sphere of triangle pqr (the smallest
 /// sphere through p, q, r), as Kernel::Side_of_bounded_sphere_3(p, q, r, t).
