@@ -449,23 +449,9 @@ std::string ExtensionOf(const std::string& path)
 // field data), or nullptr if `data` is not one.
 vtkDataObject* CriticalPointsBlock(vtkDataObject* data)
 {
-  auto* tree = vtkMultiBlockDataSet::SafeDownCast(data);
-  if (!tree)
-  {
-    return nullptr;
-  }
-  for (unsigned int b = 0; b < tree->GetNumberOfBlocks(); ++b)
-  {
-    vtkInformation* meta = tree->HasMetaData(b) ? tree->GetMetaData(b) : nullptr;
-    const char* name = meta ? meta->Get(vtkCompositeDataSet::NAME()) : nullptr;
-    vtkDataObject* block = tree->GetBlock(b);
-    if (name && std::string(name) == vtkFlowComplex::BlockName(vtkFlowComplex::CRITICAL_POINTS) &&
-      block && block->GetFieldData()->GetArray("NodeCountByIndex"))
-    {
-      return block;
-    }
-  }
-  return nullptr;
+  vtkDataObject* block = flowrecon::NamedBlock(vtkMultiBlockDataSet::SafeDownCast(data),
+    vtkFlowComplex::BlockName(vtkFlowComplex::CRITICAL_POINTS));
+  return block && block->GetFieldData()->GetArray("NodeCountByIndex") ? block : nullptr;
 }
 
 // A .vtm written by 'complex', or nullptr when `file` is a point cloud. The
