@@ -599,15 +599,17 @@ bool ReadStableManifolds(vtkUnstructuredGrid* ug, FlowComplex& fc, std::string& 
   return true;
 }
 
-void ReadFlowLines(vtkPolyData* um, FlowComplex& fc)
+bool ReadFlowLines(vtkPolyData* um, FlowComplex& fc, std::string& error)
 {
   vtkDataArray* nodeId = um->GetCellData()->GetArray("NodeId");
   vtkDataArray* target = um->GetCellData()->GetArray("TargetNodeId");
   const vtkIdType nc = um->GetNumberOfCells();
   if (!nodeId || !target || nodeId->GetNumberOfTuples() != nc || target->GetNumberOfTuples() != nc)
   {
-    return; // optional geometry
+    return true; // optional geometry
   }
+  const vtkIdType np = um->GetNumberOfPoints();
+  const Id n = static_cast<Id>(fc.Nodes.size());
   for (vtkIdType c = 0; c < nc; ++c)
   {
     FlowLine line;
@@ -616,6 +618,17 @@ void ReadFlowLines(vtkPolyData* um, FlowComplex& fc)
     vtkIdType npts;
     const vtkIdType* pts;
     um->GetCellPoints(c, npts, pts);
+    // Ids come from a file: check them, as for the other blocks.
+    bool ok = line.Node >= 0 && line.Node < n && line.Target >= 0 && line.Target < n;
+    for (vtkIdType k = 0; ok && k < npts; ++k)
+    {
+      ok = pts[k] >= 0 && pts[k] < np;
+    }
+    if (!ok)
+    {
+      error = "block UnstableManifolds: cell " + std::to_string(c) + " has an invalid node or point";
+      return false;
+    }
     for (vtkIdType k = 0; k < npts; ++k)
     {
       Point3 p;
@@ -624,6 +637,7 @@ void ReadFlowLines(vtkPolyData* um, FlowComplex& fc)
     }
     fc.FlowLines.push_back(std::move(line));
   }
+  return true;
 }
 
 vtkSmartPointer<vtkPolyData> PersistencePairsBlock(const FlowComplex& fc, const SimplificationResult& s)
@@ -701,9 +715,11 @@ bool FromMultiBlock(vtkMultiBlockDataSet* input, FlowComplex& fc, std::string& e
     fc = FlowComplex();
     return false;
   }
-  if (auto* um = vtkPolyData::SafeDownCast(NamedBlock(input, "UnstableManifolds")))
+  auto* um = vtkPolyData::SafeDownCast(NamedBlock(input, "UnstableManifolds"));
+  if (um && !ReadFlowLines(um, fc, error))
   {
-    ReadFlowLines(um, fc);
+    fc = FlowComplex();
+    return false;
   }
   ReadReport(cp->GetFieldData(), fc);
   return true;

@@ -16,6 +16,9 @@
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
+#include "vtkIdList.h"
+#include "vtkCell.h"
+#include "vtkCellArray.h"
 #include "vtkInformation.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkNew.h"
@@ -473,12 +476,70 @@ void TestErrors()
   vtkObject::GlobalWarningDisplayOn();
 }
 
+/// A saved complex whose UnstableManifolds polyline names a point that does not
+/// exist (one edited id) must give an error naming the block, not a crash.
+void TestCorruptFlowLines()
+{
+  std::cout << "-- corrupt UnstableManifolds\n";
+  vtkNew<vtkPoints> pts;
+  for (const auto& p : FibonacciSphere(60))
+  {
+    pts->InsertNextPoint(p.data());
+  }
+  vtkNew<vtkPolyData> cloud;
+  cloud->SetPoints(pts);
+  vtkNew<vtkFlowComplex> fc;
+  fc->SetInputData(cloud);
+  fc->Update();
+  vtkNew<vtkMultiBlockDataSet> complex;
+  complex->DeepCopy(fc->GetOutput());
+  vtkPolyData* lines = nullptr;
+  for (unsigned int b = 0; b < complex->GetNumberOfBlocks(); ++b)
+  {
+    const char* name = complex->GetMetaData(b)->Get(vtkCompositeDataSet::NAME());
+    if (name && std::string(name) == "UnstableManifolds")
+    {
+      lines = vtkPolyData::SafeDownCast(complex->GetBlock(b));
+    }
+  }
+  CHECK(lines && lines->GetNumberOfCells() > 0);
+  if (!lines || lines->GetNumberOfCells() == 0)
+  {
+    return;
+  }
+  vtkNew<vtkIdList> ids;
+  lines->GetCellPoints(0, ids);
+  ids->SetId(ids->GetNumberOfIds() - 1, 1000000000);
+  lines->GetLines()->ReplaceCellAtId(0, ids);
+  std::string message;
+  vtkNew<vtkCallbackCommand> onError;
+  onError->SetClientData(&message);
+  onError->SetCallback([](vtkObject*, unsigned long, void* data, void* call) {
+    *static_cast<std::string*>(data) += static_cast<const char*>(call);
+  });
+  // Error events are invoked only while warnings are displayed (the two messages
+  // below are expected).
+  vtkNew<vtkFlowComplexSimplification> s;
+  s->AddObserver(vtkCommand::ErrorEvent, onError);
+  s->SetInputData(complex);
+  s->Update();
+  CHECK(message.find("UnstableManifolds") != std::string::npos);
+  message.clear();
+  vtkNew<vtkFlowReconstruction> r;
+  r->AddObserver(vtkCommand::ErrorEvent, onError);
+  r->SetInputData(complex);
+  r->Update();
+  CHECK(message.find("UnstableManifolds") != std::string::npos);
+  CHECK(r->GetOutput()->GetNumberOfCells() == 0);
+}
+
 } // namespace
 
 int main(int argc, char* argv[])
 {
   const std::string dir = argc > 1 ? argv[1] : ".";
   TestErrors();
+  TestCorruptFlowLines();
   TestQueueCache(FibonacciSphere(300));
   TestShape("sphere", FibonacciSphere(800), { { 1, 0, 1, 0 } }, dir);
   TestShape("torus", GridTorus(40, 14), { { 1, 2, 1, 0 } }, dir);
