@@ -6,6 +6,7 @@
 #include "InputPreparation.h"
 #include "ParallelSlices.h"
 #include "StableManifold.h"
+#include "StableManifoldGeometry.h"
 #include "SuccessorForest.h"
 #include "Triangulation.h"
 
@@ -13,10 +14,6 @@
 #include <tbb/parallel_for.h>
 #include <tbb/scalable_allocator.h>
 #include <tbb/task_group.h>
-
-#include <CGAL/Spatial_sort_traits_adapter_3.h>
-#include <CGAL/hilbert_sort.h>
-#include <CGAL/property_map.h>
 
 #include <algorithm>
 #ifdef __GLIBC__
@@ -584,44 +581,33 @@ void Builder::ScaleBack()
   }
 }
 
-/// Renumbers the distinct points along a Hilbert curve. Every per-vertex table
-/// (adjacency, walks, node lists) is then visited with spatial locality, which
-/// matters more than anything else for large clouds; hilbert_sort is
-/// deterministic (unlike spatial_sort, which shuffles), also in parallel: the
-/// median splits of disjoint ranges do not depend on the schedule.
-void SpatialOrder(PreparedInput& in)
-{
-  std::vector<KPoint> pts;
-  pts.reserve(in.Unique.size());
-  for (const Point3& p : in.Unique)
-  {
-    pts.emplace_back(p[0], p[1], p[2]);
-  }
-  std::vector<std::size_t> order(pts.size());
-  for (std::size_t i = 0; i < order.size(); ++i)
-  {
-    order[i] = i;
-  }
-  using Map = CGAL::Pointer_property_map<KPoint>::const_type;
-  const Map map = CGAL::make_property_map(static_cast<const std::vector<KPoint>&>(pts));
-  CGAL::hilbert_sort<CGAL::Parallel_tag>(
-    order.begin(), order.end(), CGAL::Spatial_sort_traits_adapter_3<Kernel, Map>(map));
-  std::vector<Point3> unique(order.size());
-  std::vector<Id> ids(order.size());
-  for (std::size_t i = 0; i < order.size(); ++i)
-  {
-    unique[i] = in.Unique[order[i]];
-    ids[i] = in.InputId[order[i]];
-  }
-  in.Unique.swap(unique);
-  in.InputId.swap(ids);
-}
-
 } // namespace
 
 FlowComplex BuildFlowComplex(
   const std::vector<Point3>& points, const BuildOptions& options, const Progress& progress)
 {
+  if (options.StableManifolds && options.MaximumGeometryCells >= 0)
+  {
+    // A budget: the Hasse diagram first, then the nodes that fit are drawn.
+    const auto start = Clock::now();
+    BuildOptions hasse = options;
+    hasse.StableManifolds = false;
+    Progress first = progress, second = progress;
+    if (progress.Report)
+    {
+      first.Report = [&](double f, const char* phase) { progress.Report(0.7 * f, phase); };
+      second.Report = [&](double f, const char* phase) { progress.Report(0.7 + 0.3 * f, phase); };
+    }
+    FlowComplex fc = BuildFlowComplex(points, hasse, first);
+    const std::vector<Id> draw = NodesWithinBudget(
+      fc.Nodes, StableManifoldCellCounts(fc.Nodes, fc.Arcs), options.MaximumGeometryCells);
+    const auto t = Clock::now();
+    DrawStableManifolds(points, options, draw, fc, second, "lower the cell budget");
+    fc.Time.StableManifolds += Seconds(t);
+    fc.Time.Total = Seconds(start);
+    progress(1.0, "done");
+    return fc;
+  }
   const auto start = Clock::now();
   struct ExactScope
   {
@@ -629,69 +615,19 @@ FlowComplex BuildFlowComplex(
     ~ExactScope() { ExactOnly() = this->Saved; }
   } exactScope;
   ExactOnly() = options.ExactOnly;
-  PreparedInput in = PrepareInput(points);
-  SpatialOrder(in);
+  PreparedInput in = PrepareForTriangulation(points);
   FlowComplex fc;
   fc.Representative = in.Representative;
   fc.Report.InputPoints = static_cast<Id>(points.size());
   fc.Report.DuplicatePoints = static_cast<Id>(points.size() - in.Unique.size());
   Builder builder(in, points, options, progress, fc);
-
-  // Work on coordinates scaled by a power of two (exact) to magnitudes about 1:
-  // the constructions square and multiply coordinates, which would overflow or
-  // underflow for clouds measured in units near 1e+-60 and beyond. Outputs are
-  // scaled back.
-  {
-    double largest = 0;
-    for (const Point3& p : in.Unique)
-    {
-      for (const double x : p)
-      {
-        largest = std::max(largest, std::fabs(x));
-      }
-    }
-    builder.ScaleExponent = largest > 0 ? std::ilogb(largest) : 0;
-    Point3 lo{ { HUGE_VAL, HUGE_VAL, HUGE_VAL } }, hi{ { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL } };
-    for (Point3& p : in.Unique)
-    {
-      for (int k = 0; k < 3; ++k)
-      {
-        p[k] = std::ldexp(p[k], -builder.ScaleExponent);
-        lo[k] = std::min(lo[k], p[k]);
-        hi[k] = std::max(hi[k], p[k]);
-      }
-    }
-    in.Diagonal = std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
-      (hi[2] - lo[2]) * (hi[2] - lo[2])); // in scaled units, like everything in the builder
-  }
-
-  // Perturbations are relative to the cloud size (never below a few ulps of the
-  // coordinates). Degenerate configurations split their critical values only at
-  // second order in the perturbation, so 1e-6 of the diagonal keeps those gaps
-  // (~1e-12) well above double precision: values stay strictly ordered.
-  double maxAbs = 0;
-  for (const Point3& p : in.Unique)
-  {
-    for (const double x : p)
-    {
-      maxAbs = std::max(maxAbs, std::fabs(x));
-    }
-  }
-  const double floor = 64 * std::numeric_limits<double>::epsilon() * maxAbs;
+  builder.ScaleExponent = in.ScaleExponent;
   for (int attempt = 1;; ++attempt)
   {
-    const double magnitude =
-      attempt == 1 ? 0 : std::max(1e-6 * in.Diagonal * std::ldexp(1.0, attempt - 2), floor);
+    const double magnitude = PerturbationMagnitude(in, attempt);
     try
     {
-      if (attempt == 1)
-      {
-        builder.Run(in.Unique, true);
-      }
-      else
-      {
-        builder.Run(Perturb(in.Unique, magnitude, options.Seed * 0x100000001B3ull + attempt), false);
-      }
+      builder.Run(AttemptCoordinates(in, attempt, options.Seed), attempt == 1);
       fc.Report.Attempts = attempt;
       fc.Report.PerturbationMagnitude = std::ldexp(magnitude, builder.ScaleExponent);
       break;

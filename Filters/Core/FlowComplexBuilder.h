@@ -14,6 +14,10 @@ namespace flowrecon
 struct BuildOptions
 {
   bool StableManifolds = true;   ///< triangulated index-2 patches and index-3 cones
+  /// With StableManifolds: at most this many triangles and tetrahedra, or -1 for
+  /// all. Nodes are drawn in filtration order while their cells fit (see
+  /// NodesWithinBudget), after the Hasse diagram, from a second triangulation.
+  std::int64_t MaximumGeometryCells = -1;
   bool UnstableManifolds = true; ///< polylines of index-2 unstable manifolds
   std::uint64_t Seed = 1;        ///< seed of the perturbation of degenerate input
   int MaxAttempts = 6;           ///< perturbations tried before giving up

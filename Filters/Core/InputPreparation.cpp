@@ -1,11 +1,17 @@
 #include "InputPreparation.h"
 
+#include "Delaunay.h"
 #include "Progress.h"
+
+#include <CGAL/Spatial_sort_traits_adapter_3.h>
+#include <CGAL/hilbert_sort.h>
+#include <CGAL/property_map.h>
 
 #include <tbb/parallel_sort.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <string>
 
@@ -79,7 +85,103 @@ std::uint64_t SplitMix(std::uint64_t& state)
   z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
   return z ^ (z >> 31);
 }
+
+/// Renumbers the distinct points along a Hilbert curve. Every per-vertex table
+/// (adjacency, walks, node lists) is then visited with spatial locality, which
+/// matters more than anything else for large clouds; hilbert_sort is
+/// deterministic (unlike spatial_sort, which shuffles), also in parallel: the
+/// median splits of disjoint ranges do not depend on the schedule.
+void SpatialOrder(PreparedInput& in)
+{
+  std::vector<KPoint> pts;
+  pts.reserve(in.Unique.size());
+  for (const Point3& p : in.Unique)
+  {
+    pts.emplace_back(p[0], p[1], p[2]);
+  }
+  std::vector<std::size_t> order(pts.size());
+  for (std::size_t i = 0; i < order.size(); ++i)
+  {
+    order[i] = i;
+  }
+  using Map = CGAL::Pointer_property_map<KPoint>::const_type;
+  const Map map = CGAL::make_property_map(static_cast<const std::vector<KPoint>&>(pts));
+  CGAL::hilbert_sort<CGAL::Parallel_tag>(
+    order.begin(), order.end(), CGAL::Spatial_sort_traits_adapter_3<Kernel, Map>(map));
+  std::vector<Point3> unique(order.size());
+  std::vector<Id> ids(order.size());
+  for (std::size_t i = 0; i < order.size(); ++i)
+  {
+    unique[i] = in.Unique[order[i]];
+    ids[i] = in.InputId[order[i]];
+  }
+  in.Unique.swap(unique);
+  in.InputId.swap(ids);
+}
+
 } // namespace
+
+PreparedInput PrepareForTriangulation(const std::vector<Point3>& points)
+{
+  PreparedInput in = PrepareInput(points);
+  SpatialOrder(in);
+  // The constructions square and multiply coordinates, which would overflow or
+  // underflow for clouds measured in units near 1e+-60 and beyond: work at
+  // magnitudes about 1 (outputs are scaled back by the caller).
+  double largest = 0;
+  for (const Point3& p : in.Unique)
+  {
+    for (const double x : p)
+    {
+      largest = std::max(largest, std::fabs(x));
+    }
+  }
+  in.ScaleExponent = largest > 0 ? std::ilogb(largest) : 0;
+  Point3 lo{ { HUGE_VAL, HUGE_VAL, HUGE_VAL } }, hi{ { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL } };
+  for (Point3& p : in.Unique)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      p[k] = std::ldexp(p[k], -in.ScaleExponent);
+      lo[k] = std::min(lo[k], p[k]);
+      hi[k] = std::max(hi[k], p[k]);
+    }
+  }
+  in.Diagonal = std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+    (hi[2] - lo[2]) * (hi[2] - lo[2])); // in scaled units
+  return in;
+}
+
+double PerturbationMagnitude(const PreparedInput& in, int attempt)
+{
+  if (attempt <= 1)
+  {
+    return 0;
+  }
+  // Relative to the cloud size, never below a few ulps of the coordinates.
+  // Degenerate configurations split their critical values only at second order
+  // in the perturbation, so 1e-6 of the diagonal keeps those gaps (~1e-12) well
+  // above double precision: values stay strictly ordered.
+  double maxAbs = 0;
+  for (const Point3& p : in.Unique)
+  {
+    for (const double x : p)
+    {
+      maxAbs = std::max(maxAbs, std::fabs(x));
+    }
+  }
+  const double floor = 64 * std::numeric_limits<double>::epsilon() * maxAbs;
+  return std::max(1e-6 * in.Diagonal * std::ldexp(1.0, attempt - 2), floor);
+}
+
+std::vector<Point3> AttemptCoordinates(const PreparedInput& in, int attempt, std::uint64_t seed)
+{
+  if (attempt <= 1)
+  {
+    return in.Unique;
+  }
+  return Perturb(in.Unique, PerturbationMagnitude(in, attempt), seed * 0x100000001B3ull + attempt);
+}
 
 std::vector<Point3> Perturb(const std::vector<Point3>& points, double magnitude, std::uint64_t seed)
 {

@@ -19,11 +19,24 @@ struct PreparedInput
   std::vector<Id> Representative; ///< per input point: the input id standing for it
   double Diagonal = 0;         ///< bounding-box diagonal (BuildFlowComplex rescales it with Unique)
   Point3 Centre{ { 0, 0, 0 } };
+  /// Unique and Diagonal are in units of 2^ScaleExponent (see PrepareForTriangulation).
+  int ScaleExponent = 0;
 };
 
 /// Checks coordinates (finite), merges exact duplicates and requires at least 4
 /// distinct points. Throws InputError with a one-line message.
 PreparedInput PrepareInput(const std::vector<Point3>& points);
+
+/// PrepareInput, then the distinct points renumbered along a Hilbert curve and
+/// scaled by a power of two (exact) to magnitudes about 1: what every attempt of
+/// the builder triangulates, and what a later stage recomputes from the same
+/// samples (geometry on demand), so both must come from this one function.
+PreparedInput PrepareForTriangulation(const std::vector<Point3>& points);
+
+/// The coordinates triangulated by attempt `attempt` (1: the points themselves;
+/// later ones: perturbed by PerturbationMagnitude(in, attempt), in scaled units).
+std::vector<Point3> AttemptCoordinates(const PreparedInput& in, int attempt, std::uint64_t seed);
+double PerturbationMagnitude(const PreparedInput& in, int attempt);
 
 /// `points` moved by a pseudo-random amount of at most `magnitude` per coordinate;
 /// the same seed always gives the same result on every platform.

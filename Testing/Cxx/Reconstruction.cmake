@@ -2,3 +2,4 @@
 # Testing/Cxx/CMakeLists.txt, which defines flowrecon_add_cxx_test).
 flowrecon_add_cxx_test(TestSimplification FlowReconCore)
 flowrecon_add_cxx_test(TestReconstruction FlowReconCore)
+flowrecon_add_cxx_test(TestStableManifoldGeometry FlowReconCore)

@@ -1,0 +1,83 @@
+#include "MemoryGuard.h"
+
+#include "Progress.h"
+
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace flowrecon
+{
+
+namespace
+{
+
+/// A field of /proc/meminfo or /proc/self/status in bytes (-1 if absent).
+double ProcField(const char* file, const std::string& key)
+{
+  std::ifstream in(file);
+  std::string line;
+  while (std::getline(in, line))
+  {
+    if (line.compare(0, key.size(), key) == 0 && line.size() > key.size() && line[key.size()] == ':')
+    {
+      std::istringstream fields(line.substr(key.size() + 1));
+      double kb = -1;
+      fields >> kb;
+      return kb * 1024;
+    }
+  }
+  return -1;
+}
+
+std::string Gigabytes(double bytes)
+{
+  char text[32];
+  std::snprintf(text, sizeof(text), bytes < 1e9 ? "%.2g GB" : "%.1f GB", bytes / 1e9);
+  return text;
+}
+
+} // namespace
+
+double AvailableMemory()
+{
+  double available = ProcField("/proc/meminfo", "MemAvailable");
+  if (available < 0)
+  {
+    available = HUGE_VAL; // not Linux: no estimate, no refusal
+  }
+  rlimit limit{};
+  if (getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY)
+  {
+    const double used = ProcField("/proc/self/status", "VmSize");
+    available = std::min(available, static_cast<double>(limit.rlim_cur) - std::max(0.0, used));
+  }
+  if (const char* text = std::getenv("FLOWRECON_MEMORY_LIMIT"))
+  {
+    const double cap = std::strtod(text, nullptr);
+    const double used = ProcField("/proc/self/status", "VmRSS");
+    if (cap > 0)
+    {
+      available = std::min(available, cap - std::max(0.0, used));
+    }
+  }
+  return std::max(0.0, available);
+}
+
+void RequireMemory(double bytes, const std::string& what, const std::string& advice)
+{
+  const double available = AvailableMemory();
+  if (bytes > available)
+  {
+    throw InputError(what + " needs about " + Gigabytes(bytes) + " of memory, " +
+      Gigabytes(available) + " are available; " + advice);
+  }
+}
+
+} // namespace flowrecon

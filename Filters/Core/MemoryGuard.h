@@ -1,0 +1,26 @@
+// Refusing work that would not fit (DESIGN.md: "never killed for memory"): the
+// kernel's out-of-memory killer ends a process without a word, and an address-
+// space limit turns into an uncaught allocation failure deep inside a library.
+#ifndef flowrecon_MemoryGuard_h
+#define flowrecon_MemoryGuard_h
+
+#include <cstddef>
+#include <string>
+
+namespace flowrecon
+{
+
+/// Bytes this process can still allocate: the smaller of the system's
+/// MemAvailable and what the address-space limit (ulimit -v) leaves; a test may
+/// lower it with the environment variable FLOWRECON_MEMORY_LIMIT (bytes, the
+/// total the process may use), which is how the guard is tested without
+/// exhausting the machine.
+double AvailableMemory();
+
+/// Throws InputError("<what> needs about X GB, Y GB are available; <advice>")
+/// when `bytes` exceeds AvailableMemory().
+void RequireMemory(double bytes, const std::string& what, const std::string& advice);
+
+} // namespace flowrecon
+
+#endif

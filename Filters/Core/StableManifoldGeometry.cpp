@@ -1,0 +1,342 @@
+#include "StableManifoldGeometry.h"
+
+#include "Arithmetic.h"
+#include "CriticalSimplices.h"
+#include "InputPreparation.h"
+#include "MemoryGuard.h"
+#include "ParallelSlices.h"
+#include "StableManifold.h"
+#include "SuccessorForest.h"
+#include "Triangulation.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace flowrecon
+{
+
+namespace
+{
+
+/// Memory of one drawn cell from here to the VTK output: the core's cell and
+/// node (40 B), VTK's connectivity, offset and type (41 B) and ten cell-data
+/// values (76 B), plus a share of the constructed points.
+constexpr double BytesPerCell = 200;
+
+/// Triangulation, critical simplices and the walk tables, per distinct point
+/// (measured peaks of the builder are 1.4-1.5 KB per point on volume samples).
+constexpr double BytesPerPoint = 1500;
+
+} // namespace
+
+std::vector<Id> StableManifoldCellCounts(const std::vector<Node>& nodes, const std::vector<Arc>& arcs)
+{
+  std::vector<Id> counts(nodes.size(), 0);
+  for (const Arc& a : arcs)
+  {
+    if (nodes[a.Lower].Index == 1)
+    {
+      counts[a.Upper] += a.Multiplicity; // arrivals first
+    }
+  }
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+  {
+    if (nodes[i].Index == 2)
+    {
+      counts[i] = std::max<Id>(0, 3 * counts[i] - 6);
+    }
+  }
+  for (const Arc& a : arcs)
+  {
+    if (nodes[a.Lower].Index == 2 && !nodes[a.Upper].IsInfinity() && a.Multiplicity % 2 == 1)
+    {
+      counts[a.Upper] += counts[a.Lower];
+    }
+  }
+  return counts;
+}
+
+std::vector<Id> NodesWithinBudget(
+  const std::vector<Node>& nodes, const std::vector<Id>& counts, Id budget)
+{
+  std::vector<Id> order;
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+  {
+    if (nodes[i].Index >= 2 && !nodes[i].IsInfinity())
+    {
+      order.push_back(static_cast<Id>(i));
+    }
+  }
+  std::sort(order.begin(), order.end(), [&](Id a, Id b) {
+    const Node& x = nodes[a];
+    const Node& y = nodes[b];
+    if (x.Value != y.Value)
+    {
+      return x.Value < y.Value;
+    }
+    return x.Index != y.Index ? x.Index < y.Index : a < b;
+  });
+  Id used = 0;
+  std::size_t k = 0;
+  for (; k < order.size() && counts[order[k]] <= budget - used; ++k)
+  {
+    used += counts[order[k]];
+  }
+  order.resize(k);
+  std::sort(order.begin(), order.end());
+  return order;
+}
+
+void DrawStableManifolds(const std::vector<Point3>& points, const BuildOptions& options,
+  const std::vector<Id>& draw, FlowComplex& fc, const Progress& progress, const std::string& advice)
+{
+  struct ExactScope
+  {
+    bool Saved = ExactOnly();
+    ~ExactScope() { ExactOnly() = this->Saved; }
+  } exactScope;
+  ExactOnly() = options.ExactOnly;
+  const std::string mismatch =
+    "the flow complex does not belong to its points (edited file, or another perturbation seed)";
+  fc.Points = points;
+  fc.NumberOfInputPoints = static_cast<Id>(points.size());
+  fc.Triangles.clear();
+  fc.TriangleNode.clear();
+  fc.Tetrahedra.clear();
+  fc.TetrahedronNode.clear();
+  fc.NodePoint.assign(fc.Nodes.size(), -1);
+  const std::array<Id, 4> n = fc.CountByIndex();
+  for (std::size_t i = 0; i < fc.Nodes.size(); ++i)
+  {
+    const Node& node = fc.Nodes[i];
+    if (node.Index == 0 && !node.IsInfinity())
+    {
+      // A sample node sits exactly on its sample: any edited point shows here.
+      if (node.Simplex[0] >= static_cast<Id>(points.size()) || points[node.Simplex[0]] != node.Location)
+      {
+        throw InputError(mismatch);
+      }
+      fc.NodePoint[i] = node.Simplex[0];
+    }
+  }
+  std::vector<Id> patches, cones; // facet and cell positions asked for
+  for (const Id node : draw)
+  {
+    if (node < 0 || node >= static_cast<Id>(fc.Nodes.size()) || fc.Nodes[node].IsInfinity())
+    {
+      continue;
+    }
+    const Id base2 = n[0] + n[1], base3 = base2 + n[2];
+    if (fc.Nodes[node].Index == 2)
+    {
+      patches.push_back(node - base2);
+    }
+    else if (fc.Nodes[node].Index == 3)
+    {
+      cones.push_back(node - base3);
+    }
+  }
+  std::sort(patches.begin(), patches.end());
+  patches.erase(std::unique(patches.begin(), patches.end()), patches.end());
+  std::sort(cones.begin(), cones.end());
+  cones.erase(std::unique(cones.begin(), cones.end()), cones.end());
+  if (patches.empty() && cones.empty())
+  {
+    return;
+  }
+
+  PreparedInput in = PrepareForTriangulation(points);
+  if (static_cast<Id>(in.Unique.size()) != n[0])
+  {
+    throw InputError(mismatch);
+  }
+  RequireMemory(BytesPerPoint * static_cast<double>(in.Unique.size()),
+    "the triangulation of " + std::to_string(in.Unique.size()) + " points", advice);
+  const std::vector<Point3> coords = AttemptCoordinates(in, fc.Report.Attempts, options.Seed);
+  progress(0.0, "Delaunay triangulation");
+  const Triangulation tri(coords);
+  progress(0.2, "critical points");
+  const CriticalSimplices cs = FindCriticalSimplices(tri, progress);
+  const Id m = tri.NumberOfVertices();
+  const Id nEdges = static_cast<Id>(cs.Edges.size()), nFacets = static_cast<Id>(cs.Facets.size());
+  const Id nCells = static_cast<Id>(cs.Cells.size());
+  const Id base2 = m + nEdges, base3 = base2 + nFacets;
+  if (tri.Dimension() < 3 || m != n[0] || nEdges != n[1] || nFacets != n[2] || nCells != n[3] ||
+    fc.InfinityNode != base3 + nCells)
+  {
+    throw InputError(mismatch);
+  }
+  auto sameSimplex = [&](Id node, const Id* v, int count) {
+    std::array<std::int32_t, 4> s{ { -1, -1, -1, -1 } };
+    for (int k = 0; k < count; ++k)
+    {
+      s[k] = static_cast<std::int32_t>(in.InputId[v[k]]);
+    }
+    std::sort(s.begin(), s.begin() + count);
+    return s == fc.Nodes[node].Simplex;
+  };
+  auto backScaled = [&](Point3 p) {
+    for (double& x : p)
+    {
+      x = std::ldexp(x, in.ScaleExponent);
+    }
+    return p;
+  };
+
+  // The boundary of a cone: the index-2 points with exactly one of their two
+  // flow lines ending at its maximum (the odd 2-3 arcs of the unsimplified
+  // complex, which a simplified input no longer holds).
+  std::vector<std::vector<Id>> boundary(cones.size());
+  std::vector<char> drawPatch(static_cast<std::size_t>(nFacets), 0);
+  for (const Id f : patches)
+  {
+    drawPatch[f] = 1;
+  }
+  std::vector<char> walk(drawPatch);
+  if (!cones.empty())
+  {
+    std::vector<std::int32_t> maximumOfCell(static_cast<std::size_t>(tri.NumberOfCells()), -1);
+    std::vector<std::int32_t> coneOf(static_cast<std::size_t>(nCells), -1);
+    for (Id i = 0; i < nCells; ++i)
+    {
+      maximumOfCell[cs.Cells[i].Cell] = static_cast<std::int32_t>(base3 + i);
+    }
+    for (std::size_t k = 0; k < cones.size(); ++k)
+    {
+      coneOf[cones[k]] = static_cast<std::int32_t>(k);
+    }
+    SuccessorForest forest(tri, maximumOfCell, fc.InfinityNode, 0, false);
+    std::vector<std::array<std::int32_t, 2>> ends(static_cast<std::size_t>(nFacets));
+    ParallelSlices(nFacets, Id(1) << 17, progress, 0.35, 0.45, "boundaries of maxima",
+      [&](Id first, Id last) {
+        for (Id i = first; i < last; ++i)
+        {
+          const CellHandle cell = tri.Cell(cs.Facets[i].Cell);
+          const CellHandle sides[2] = { cell, cell->neighbor(cs.Facets[i].Opposite) };
+          for (int s = 0; s < 2; ++s)
+          {
+            ends[i][s] = static_cast<std::int32_t>(tri.Dt().is_infinite(sides[s])
+                ? fc.InfinityNode
+                : forest.Root(tri.CellId(sides[s])));
+          }
+        }
+      });
+    for (Id i = 0; i < nFacets; ++i)
+    {
+      if (ends[i][0] == ends[i][1])
+      {
+        continue; // multiplicity 2: not on the boundary mod 2
+      }
+      for (const std::int32_t e : ends[i])
+      {
+        if (e != fc.InfinityNode && coneOf[e - base3] >= 0)
+        {
+          boundary[coneOf[e - base3]].push_back(i);
+          walk[i] = 1;
+        }
+      }
+    }
+  }
+
+  // Walks in parallel chunks, merged in facet order (deterministic).
+  std::vector<Id> facets;
+  for (Id i = 0; i < nFacets; ++i)
+  {
+    if (walk[i])
+    {
+      facets.push_back(i);
+    }
+  }
+  std::vector<Id> patchBegin(static_cast<std::size_t>(nFacets) + 1, -1), patchEnd(patchBegin);
+  std::vector<std::array<Id, 3>> walked; // triangles of every walked patch, for the cones
+  const std::size_t chunk = 4096;
+  Id fallbacks = 0;
+  for (std::size_t begin = 0; begin < facets.size(); begin += chunk)
+  {
+    progress(0.45 + 0.5 * static_cast<double>(begin) / static_cast<double>(facets.size()),
+      "stable manifolds");
+    const std::size_t last = std::min(facets.size(), begin + chunk);
+    std::vector<Patch> batch(last - begin);
+    std::vector<Id> batchFallbacks(last - begin, 0);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(begin, last),
+      [&](const tbb::blocked_range<std::size_t>& r) {
+        for (std::size_t k = r.begin(); k != r.end(); ++k)
+        {
+          batch[k - begin] = ComputeStableManifold(
+            tri, cs, static_cast<std::size_t>(facets[k]), true, batchFallbacks[k - begin]);
+        }
+      });
+    for (std::size_t k = begin; k < last; ++k)
+    {
+      const Id f = facets[k];
+      const Id node = base2 + f;
+      const Id v[3] = { cs.Facets[f].Vertices[0], cs.Facets[f].Vertices[1], cs.Facets[f].Vertices[2] };
+      if (!sameSimplex(node, v, 3))
+      {
+        throw InputError(mismatch);
+      }
+      Patch& patch = batch[k - begin];
+      fallbacks += batchFallbacks[k - begin];
+      const Id offset = static_cast<Id>(fc.Points.size());
+      for (const Point3& p : patch.Constructed)
+      {
+        fc.Points.push_back(backScaled(p));
+      }
+      fc.NodePoint[node] = offset; // Constructed[0] is the critical point
+      patchBegin[f] = static_cast<Id>(walked.size());
+      for (const auto& t : patch.Triangles)
+      {
+        std::array<Id, 3> w;
+        for (int j = 0; j < 3; ++j)
+        {
+          w[j] = t[j] >= 0 ? in.InputId[t[j]] : offset + (-1 - t[j]);
+        }
+        walked.push_back(w);
+        if (drawPatch[f])
+        {
+          fc.Triangles.push_back(w);
+          fc.TriangleNode.push_back(node);
+        }
+      }
+      patchEnd[f] = static_cast<Id>(walked.size());
+      patch = Patch();
+    }
+    // The drawing so far predicts the rest: refuse before it no longer fits.
+    const double perFacet = static_cast<double>(walked.size()) / static_cast<double>(last);
+    RequireMemory(BytesPerCell * perFacet * static_cast<double>(facets.size() - last) *
+        (cones.empty() ? 1.0 : 2.0),
+      "drawing the stable manifolds of " + std::to_string(patches.size() + cones.size()) + " nodes",
+      advice);
+  }
+  fc.Report.ExactFallbacks += fallbacks;
+
+  progress(0.95, "index-3 cones");
+  for (std::size_t k = 0; k < cones.size(); ++k)
+  {
+    const Id node = base3 + cones[k];
+    const Id v[4] = { cs.Cells[cones[k]].Vertices[0], cs.Cells[cones[k]].Vertices[1],
+      cs.Cells[cones[k]].Vertices[2], cs.Cells[cones[k]].Vertices[3] };
+    if (!sameSimplex(node, v, 4))
+    {
+      throw InputError(mismatch);
+    }
+    const Id apex = static_cast<Id>(fc.Points.size());
+    fc.NodePoint[node] = apex;
+    fc.Points.push_back(fc.Nodes[node].Location);
+    for (const Id f : boundary[k])
+    {
+      for (Id t = patchBegin[f]; t < patchEnd[f]; ++t)
+      {
+        fc.Tetrahedra.push_back({ { apex, walked[t][0], walked[t][1], walked[t][2] } });
+        fc.TetrahedronNode.push_back(node);
+      }
+    }
+  }
+  progress(1.0, "stable manifolds");
+}
+
+} // namespace flowrecon
