@@ -269,6 +269,8 @@ const Option ThreadsOption{ "--threads", "-j", "N",
   "threads for the flow complex (default: all cores; the output does not depend on it)" };
 const Option NoStableOption{ "--no-stable", nullptr, nullptr,
   "skip the triangulated stable manifolds of index-2 and index-3 nodes" };
+const Option MaxCellsOption{ "--max-cells", nullptr, "N",
+  "draw at most N stable-manifold cells, in order of critical value; 'inf' for all (2e6)" };
 const Option NoUnstableOption{ "--no-unstable", nullptr, nullptr,
   "skip the polylines of the unstable manifolds" };
 
@@ -286,7 +288,7 @@ const std::vector<Command>& Commands()
       "UnstableManifolds to OUT.vtm (VTK XML multiblock, binary, compressed).",
       "INPUT -o OUT.vtm [options]",
       { { "--output", "-o", "OUT.vtm", "the multiblock file to write (.vtm)" }, NoStableOption,
-        NoUnstableOption, ThreadsOption, QuietOption },
+        MaxCellsOption, NoUnstableOption, ThreadsOption, QuietOption },
       RunComplex },
     { "info", "print node counts, Euler characteristic, degeneracies, timings",
       "Compute the flow complex of INPUT (or read a .vtm written by 'complex') and\n"
@@ -301,10 +303,13 @@ const std::vector<Command>& Commands()
       "with the reconstruction threshold t_r, and write its cells (vertices, Gabriel\n"
       "edges, triangles, tetrahedra; cell data Step, Priority, Threshold, Extension,\n"
       "Sponsor, NodeId, Index, CriticalValue, Multiplicity) to OUT.vtu. Every\n"
-      "reconstruction with a smaller t_r is its part with Threshold < t_r.",
+      "reconstruction with a smaller t_r is its part with Threshold < t_r. Only the\n"
+      "cells written are drawn, from a second Delaunay triangulation of the points.",
       "INPUT -o OUT.vtu [options]",
       { { "--output", "-o", "OUT.vtu", "the unstructured grid to write (.vtu)" },
         { "--tr", nullptr, "T", "reconstruction threshold t_r > 1, 'inf' for all steps (2)" },
+        { "--tr-max", nullptr, "T", "write every cell with Threshold < T >= t_r, so any t_r <= T\n"
+          "is a selection of the file; only those cells are drawn (t_r)" },
         { "--tp", nullptr, "P", "persistence threshold t_p, 0 for none (1.1)" },
         { "--profile", nullptr, "P.csv", "write the profile of the t_r = inf run as CSV" },
         { "--jumps", nullptr, "K", "print the K largest jumps of the profile (tracking back)" },
@@ -479,15 +484,28 @@ vtkSmartPointer<vtkMultiBlockDataSet> LoadStoredFlowComplex(const std::string& f
 struct FlowComplexOptions
 {
   bool Stable = true;
+  vtkIdType MaxCells = 2000000; // -1: all
   bool Unstable = true;
   bool Quiet = false;
   std::string Label;
 };
 
+double NumberOption(const Arguments& args, const char* name, double fallback, const char* command);
+
 FlowComplexOptions CommonOptions(const Arguments& args, const char* label)
 {
   FlowComplexOptions options;
   options.Stable = !args.Has("--no-stable");
+  if (args.Has("--max-cells"))
+  {
+    const double cells = NumberOption(args, "--max-cells", 0, label);
+    if (!(cells >= 0) || (cells != std::floor(cells) && !std::isinf(cells)))
+    {
+      throw UsageError("option '--max-cells' needs a whole number >= 0 or 'inf'",
+        std::string("flowrecon ") + label + " --help");
+    }
+    options.MaxCells = std::isinf(cells) || cells >= 9e18 ? -1 : static_cast<vtkIdType>(cells);
+  }
   options.Unstable = !args.Has("--no-unstable");
   options.Quiet = args.Has("--quiet");
   options.Label = label;
@@ -528,6 +546,7 @@ vtkSmartPointer<vtkMultiBlockDataSet> ComputeFlowComplex(
   vtkNew<vtkFlowComplex> filter;
   filter->SetInputConnection(reader->GetOutputPort());
   filter->SetComputeStableManifolds(options.Stable);
+  filter->SetMaximumStableManifoldCells(options.MaxCells);
   filter->SetComputeUnstableManifolds(options.Unstable);
   RunFilter(filter, file, options, "flow complex computation");
   auto* output = vtkMultiBlockDataSet::SafeDownCast(filter->GetOutputDataObject(0));
@@ -625,7 +644,9 @@ int RunInfo(const Arguments& args)
   const bool stored = complex != nullptr;
   if (!stored)
   {
-    complex = ComputeFlowComplex(input, CommonOptions(args, "info"));
+    FlowComplexOptions options = CommonOptions(args, "info");
+    options.Stable = false; // info prints no geometry
+    complex = ComputeFlowComplex(input, options);
   }
   vtkFieldData* fd = CriticalPointsBlock(complex)->GetFieldData();
   const std::string attempts = Field(fd, "PerturbationAttempts");
@@ -813,8 +834,16 @@ int RunReconstruct(const Arguments& args)
     }
   }
 
+  const double trmax = args.Has("--tr-max") ? NumberOption(args, "--tr-max", tr, "reconstruct") : tr;
+  if (!(trmax >= tr))
+  {
+    throw UsageError("--tr-max must be at least the reconstruction threshold --tr", help);
+  }
   FlowComplexOptions options = CommonOptions(args, "reconstruct");
-  options.Unstable = false; // not needed by the reconstruction
+  // The reconstruction draws the cells it writes by itself: the complex needs
+  // only its Hasse diagram (DESIGN.md, "Cost follows the output").
+  options.Stable = false;
+  options.Unstable = false;
   vtkSmartPointer<vtkMultiBlockDataSet> complex = FlowComplexOf(input, options);
   vtkSmartPointer<vtkMultiBlockDataSet> simplified = complex;
   if (IsSimplified(complex))
@@ -834,7 +863,8 @@ int RunReconstruct(const Arguments& args)
   }
   vtkNew<vtkFlowReconstruction> reconstruction;
   reconstruction->SetInputData(simplified);
-  reconstruction->SetReconstructionThreshold(tr);
+  reconstruction->SetReconstructionThreshold(trmax);
+  reconstruction->SetMaximumThreshold(trmax);
   RunFilter(reconstruction, input, options, "reconstruction");
   auto* grid = vtkUnstructuredGrid::SafeDownCast(reconstruction->GetOutputDataObject(0));
   auto* profile = vtkTable::SafeDownCast(reconstruction->GetOutputDataObject(1));

@@ -332,6 +332,8 @@ void AddReport(const FlowComplex& fc, vtkFieldData* fd)
   auto attempts = NamedArray<vtkIntArray>("PerturbationAttempts");
   attempts->InsertNextValue(fc.Report.Attempts);
   fd->AddArray(attempts);
+  // With the attempts, what a later stage needs to redo the triangulation.
+  scalar("PerturbationSeed", static_cast<vtkIdType>(fc.Report.Seed));
   auto magnitude = NamedArray<vtkDoubleArray>("PerturbationMagnitude");
   magnitude->InsertNextValue(fc.Report.PerturbationMagnitude);
   fd->AddArray(magnitude);
@@ -425,6 +427,7 @@ void ReadReport(vtkFieldData* fd, FlowComplex& fc)
   r.ExactFallbacks = static_cast<Id>(get("ExactFallbackCount", 0, 0));
   r.Attempts = static_cast<int>(get("PerturbationAttempts", 0, 1));
   r.PerturbationMagnitude = get("PerturbationMagnitude", 0, 0);
+  r.Seed = static_cast<std::uint64_t>(static_cast<vtkIdType>(get("PerturbationSeed", 0, 1)));
   double* t[6] = { &fc.Time.Delaunay, &fc.Time.CriticalPoints, &fc.Time.StableManifolds,
     &fc.Time.UnstableManifolds, &fc.Time.Assembly, &fc.Time.Total };
   for (int k = 0; k < 6; ++k)

@@ -76,6 +76,7 @@ int vtkFlowComplex::RequestData(
 
   flowrecon::BuildOptions options;
   options.StableManifolds = this->ComputeStableManifolds;
+  options.MaximumGeometryCells = this->MaximumStableManifoldCells;
   options.UnstableManifolds = this->ComputeUnstableManifolds;
   options.Seed = static_cast<std::uint64_t>(static_cast<unsigned int>(this->PerturbationSeed));
   const flowrecon::Progress progress = flowrecon::AlgorithmProgress(this);
@@ -93,6 +94,7 @@ void vtkFlowComplex::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "ComputeStableManifolds: " << this->ComputeStableManifolds << "\n";
+  os << indent << "MaximumStableManifoldCells: " << this->MaximumStableManifoldCells << "\n";
   os << indent << "ComputeUnstableManifolds: " << this->ComputeUnstableManifolds << "\n";
   os << indent << "PerturbationSeed: " << this->PerturbationSeed << "\n";
 }

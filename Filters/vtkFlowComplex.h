@@ -53,6 +53,20 @@ public:
 
   ///@{
   /**
+   * With ComputeStableManifolds: the most triangles and tetrahedra to draw, or
+   * -1 for all. The full complex of a surface sample with tubes has ~n^1.5 cells,
+   * so by default only the nodes that come first in filtration order (critical
+   * value, index) are drawn while their cells fit: the picture is the flow
+   * complex below a value, closed under faces. The drawing comes after the Hasse
+   * diagram, from a second Delaunay triangulation. Default 2,000,000 (every cell
+   * of clouds up to some 10^4 points).
+   */
+  vtkSetClampMacro(MaximumStableManifoldCells, vtkIdType, -1, VTK_ID_MAX);
+  vtkGetMacro(MaximumStableManifoldCells, vtkIdType);
+  ///@}
+
+  ///@{
+  /**
    * Record the polylines of the unstable manifolds of index-2 points. The 2->3
    * arcs are always computed. Default on.
    */
@@ -90,6 +104,7 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   bool ComputeStableManifolds = true;
+  vtkIdType MaximumStableManifoldCells = 2000000;
   bool ComputeUnstableManifolds = true;
   int PerturbationSeed = 1;
 

@@ -4,6 +4,7 @@
 #include "FlowComplexConversion.h"
 #include "Reconstruction.h"
 #include "Simplification.h"
+#include "StableManifoldGeometry.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -39,6 +40,8 @@ struct vtkFlowReconstruction::Cache
   /// Node whose insertion brings each node's cells: itself, the earliest
   /// reconstructed owner of a cancelled node, or -1.
   std::vector<Id> Carrier;
+  /// The T_max whose geometry FC holds (-1: none yet).
+  double GeometryThreshold = -1;
   /// Triangles and tetrahedra of each node (compressed rows of cell positions).
   std::vector<Id> TriangleOffsets, TriangleList, TetraOffsets, TetraList;
 };
@@ -165,18 +168,8 @@ int vtkFlowReconstruction::RequestData(
       return 0;
     }
     const auto& nodes = cache->FC.Nodes;
-    // Without the index-2 patches the output would hold only vertices and edges
-    // while reporting every step: refuse rather than return a partial shape.
-    const bool hasPatchNodes = std::any_of(nodes.begin(), nodes.end(),
-      [](const flowrecon::Node& n) { return n.Index == 2; });
-    if (hasPatchNodes && cache->FC.Triangles.empty())
-    {
-      vtkErrorMacro("the flow complex has no stable manifolds (computed with StableManifolds "
-                    "off, or --no-stable): the reconstruction needs them");
-      return 0;
-    }
-    // The queue is 90% of the work; the selection below reports the rest.
-    const flowrecon::Progress progress = flowrecon::AlgorithmProgress(this, 0.9);
+    // The queue is 30% of the work, drawing 60%, the selection the rest.
+    const flowrecon::Progress progress = flowrecon::AlgorithmProgress(this, 0.3);
     bool finished = false;
     const int ok = flowrecon::CallCore(
       this, "reconstruction",
@@ -215,16 +208,28 @@ int vtkFlowReconstruction::RequestData(
         }
       }
     }
-    GroupByNode(cache->FC.TriangleNode, nodes.size(), cache->TriangleOffsets, cache->TriangleList);
-    GroupByNode(cache->FC.TetrahedronNode, nodes.size(), cache->TetraOffsets, cache->TetraList);
     this->Cached = std::move(cache);
+  }
+  const double tmax = this->MaximumThreshold >= VTK_DOUBLE_MAX ? HUGE_VAL : this->MaximumThreshold;
+  if (this->Cached->GeometryThreshold != tmax && !this->DrawGeometry(tmax))
+  {
+    grid->Initialize();
+    profile->Initialize();
+    arrows->Initialize();
+    return this->GetAbortExecute() ? 1 : 0;
   }
 
   const Cache& c = *this->Cached;
   const flowrecon::FlowComplex& fc = c.FC;
   const auto& steps = c.Run.Nodes;
-  const double t =
+  double t =
     this->ReconstructionThreshold >= VTK_DOUBLE_MAX ? HUGE_VAL : this->ReconstructionThreshold;
+  if (t > tmax)
+  {
+    vtkWarningMacro(<< "ReconstructionThreshold " << t << " is above MaximumThreshold " << tmax
+                    << ": showing the reconstruction at " << tmax);
+    t = tmax;
+  }
   this->SetProgressText("output");
   this->UpdateProgress(0.9);
 
@@ -242,21 +247,20 @@ int vtkFlowReconstruction::RequestData(
   const std::vector<int> multiplicity =
     flowrecon::EdgeMultiplicities(fc.Nodes, fc.Arcs, c.Run, t);
 
-  // Port 0: the cells.
+  // Port 0: the cells, over the points they use (samples keep their input id).
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(static_cast<vtkIdType>(fc.Points.size()));
   auto original = NamedArray<vtkIdTypeArray>("vtkOriginalPointIds");
-  original->SetNumberOfTuples(static_cast<vtkIdType>(fc.Points.size()));
-  for (std::size_t i = 0; i < fc.Points.size(); ++i)
-  {
-    points->SetPoint(static_cast<vtkIdType>(i), fc.Points[i].data());
-    original->SetValue(static_cast<vtkIdType>(i),
-      static_cast<Id>(i) < fc.NumberOfInputPoints ? static_cast<vtkIdType>(i) : -1);
-  }
+  std::vector<vtkIdType> pointOf(fc.Points.size(), -1);
+  auto point = [&](Id p) {
+    if (pointOf[p] < 0)
+    {
+      pointOf[p] = points->InsertNextPoint(fc.Points[p].data());
+      original->InsertNextValue(p < fc.NumberOfInputPoints ? static_cast<vtkIdType>(p) : -1);
+    }
+    return pointOf[p];
+  };
   grid->Initialize();
-  grid->SetPoints(points);
-  grid->GetPointData()->AddArray(original);
   InsertionArrays cellInsertion;
   auto index = NamedArray<vtkIntArray>("Index");
   auto value = NamedArray<vtkDoubleArray>("CriticalValue");
@@ -267,7 +271,12 @@ int vtkFlowReconstruction::RequestData(
   auto add = [&](int type, int n, const vtkIdType* ids, Id node) {
     const Id carrier = c.Carrier[node];
     const flowrecon::Insertion& in = steps[carrier];
-    grid->InsertNextCell(type, n, ids);
+    vtkIdType local[4];
+    for (int k = 0; k < n; ++k)
+    {
+      local[k] = point(ids[k]);
+    }
+    grid->InsertNextCell(type, n, local);
     cellInsertion.Append(in.Step, node, in);
     index->InsertNextValue(fc.Nodes[node].Index);
     value->InsertNextValue(fc.Nodes[node].Value);
@@ -302,6 +311,8 @@ int vtkFlowReconstruction::RequestData(
       add(VTK_TETRA, 4, ids, node);
     }
   }
+  grid->SetPoints(points);
+  grid->GetPointData()->AddArray(original);
   for (vtkDataArray* a : cellInsertion.All())
   {
     grid->GetCellData()->AddArray(a);
@@ -364,9 +375,71 @@ int vtkFlowReconstruction::RequestData(
 }
 
 //------------------------------------------------------------------------------
+bool vtkFlowReconstruction::DrawGeometry(double tmax)
+{
+  Cache& cache = *this->Cached;
+  flowrecon::FlowComplex& fc = cache.FC;
+  cache.GeometryThreshold = -1;
+  // The nodes whose cells the output can show: carriers below T_max.
+  std::vector<Id> draw;
+  for (std::size_t i = 0; i < fc.Nodes.size(); ++i)
+  {
+    const Id carrier = cache.Carrier[i];
+    if (fc.Nodes[i].Index >= 2 && carrier >= 0 && cache.Run.Contains(carrier, tmax))
+    {
+      draw.push_back(static_cast<Id>(i));
+    }
+  }
+  // The input's own cells do when they cover every such node (a complex
+  // computed with all its geometry); otherwise draw them from the samples.
+  std::vector<char> drawn(fc.Nodes.size(), 0);
+  for (const Id node : fc.TriangleNode)
+  {
+    drawn[node] = 1;
+  }
+  for (const Id node : fc.TetrahedronNode)
+  {
+    drawn[node] = 1;
+  }
+  const bool covered =
+    std::all_of(draw.begin(), draw.end(), [&](Id node) { return drawn[node] != 0; });
+  if (!covered)
+  {
+    const std::vector<flowrecon::Point3> samples(
+      fc.Points.begin(), fc.Points.begin() + fc.NumberOfInputPoints);
+    flowrecon::BuildOptions options;
+    options.Seed = fc.Report.Seed;
+    flowrecon::Progress progress = flowrecon::AlgorithmProgress(this);
+    progress.Report = [this](double f, const char* phase) {
+      this->SetProgressText(phase);
+      this->UpdateProgress(0.3 + 0.6 * f);
+    };
+    bool finished = false;
+    const int ok = flowrecon::CallCore(
+      this, "drawing the stable manifolds",
+      [&]() {
+        flowrecon::DrawStableManifolds(samples, options, draw, fc, progress,
+          "lower MaximumThreshold (flowrecon --tr-max), or the cloud's size");
+        finished = true;
+      },
+      []() {});
+    if (!finished)
+    {
+      (void)ok;
+      return false;
+    }
+  }
+  GroupByNode(fc.TriangleNode, fc.Nodes.size(), cache.TriangleOffsets, cache.TriangleList);
+  GroupByNode(fc.TetrahedronNode, fc.Nodes.size(), cache.TetraOffsets, cache.TetraList);
+  cache.GeometryThreshold = tmax;
+  return true;
+}
+
+//------------------------------------------------------------------------------
 void vtkFlowReconstruction::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "ReconstructionThreshold: " << this->ReconstructionThreshold << "\n";
+  os << indent << "MaximumThreshold: " << this->MaximumThreshold << "\n";
   os << indent << "NumberOfQueueRuns: " << this->NumberOfQueueRuns << "\n";
 }

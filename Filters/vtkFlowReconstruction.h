@@ -14,8 +14,11 @@
  * Output port 0 (vtkUnstructuredGrid): the stable-manifold cells of the
  * reconstructed nodes, in insertion order: sample vertices, Gabriel edges,
  * triangulated index-2 patches and the index-3 cones (tetrahedra) of
- * reconstructed maxima. Points are those of `StableManifolds` (same ids, with
- * `vtkOriginalPointIds`). Cell data: `NodeId`, `Index`, `CriticalValue` (of the
+ * reconstructed maxima. Their geometry is drawn on demand, once per input and
+ * MaximumThreshold, for the nodes with Threshold < MaximumThreshold only
+ * (recomputing the Delaunay triangulation of the samples when the input does
+ * not hold it). Points are the samples and constructed points the cells use,
+ * with `vtkOriginalPointIds` (input id, -1 for constructed points). Cell data: `NodeId`, `Index`, `CriticalValue` (of the
  * node whose stable manifold the cell belongs to), `Step`, `Priority`,
  * `Threshold`, `Extension` (0 initialization, 1 regularization, 2 upflow,
  * 3 horizontal), `Sponsor` (node id, -1 for initialization), `Owner` (the node
@@ -61,6 +64,19 @@ public:
   vtkGetMacro(ReconstructionThreshold, double);
   ///@}
 
+  ///@{
+  /**
+   * T_max, the largest t_r the output can show: the stable manifolds of the
+   * nodes with Threshold < T_max are drawn once (when the input or T_max
+   * changes), so any ReconstructionThreshold <= T_max is a selection; a larger
+   * one shows the reconstruction at T_max, with a warning. Nothing above T_max
+   * is drawn, which is what keeps large surface samples in memory.
+   * VTK_DOUBLE_MAX draws every step. Default 4.
+   */
+  vtkSetClampMacro(MaximumThreshold, double, 1.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(MaximumThreshold, double);
+  ///@}
+
   /// How many times the priority queue has run (once per new input).
   vtkGetMacro(NumberOfQueueRuns, int);
 
@@ -80,6 +96,7 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   double ReconstructionThreshold = 2.0;
+  double MaximumThreshold = 4.0;
   int NumberOfQueueRuns = 0;
 
 private:
@@ -88,6 +105,8 @@ private:
 
   struct Cache;
   std::unique_ptr<Cache> Cached; // the t_r = infinity run of the last input
+  /// Draws the cells of the nodes below `tmax` into the cache (false: failed or aborted).
+  bool DrawGeometry(double tmax);
 };
 
 #endif

@@ -65,6 +65,7 @@ struct DegeneracyReport
   Id ApexOnSphere = 0;        ///< apex on a facet's diametral sphere (first attempt)
   Id WalkTies = 0;            ///< ties or zero steps met by a walk (first attempt)
   int Attempts = 1;           ///< 1 = no perturbation was needed
+  std::uint64_t Seed = 1;     ///< seed of the perturbation (with Attempts, enough to redo it)
   double PerturbationMagnitude = 0; ///< max displacement applied to each coordinate
   Id ExactFallbacks = 0;      ///< walks whose interval filter failed and were redone exactly
   bool Perturbed() const { return Attempts > 1; }

@@ -629,6 +629,7 @@ FlowComplex BuildFlowComplex(
     {
       builder.Run(AttemptCoordinates(in, attempt, options.Seed), attempt == 1);
       fc.Report.Attempts = attempt;
+      fc.Report.Seed = options.Seed;
       fc.Report.PerturbationMagnitude = std::ldexp(magnitude, builder.ScaleExponent);
       break;
     }

@@ -78,7 +78,8 @@ Cloud GridTorus(int nu, int nv)
   return c;
 }
 
-vtkSmartPointer<vtkMultiBlockDataSet> FlowComplexOf(const Cloud& cloud)
+/// `cells`: MaximumStableManifoldCells (-1 all), or -2 for no stable manifolds.
+vtkSmartPointer<vtkMultiBlockDataSet> FlowComplexOf(const Cloud& cloud, vtkIdType cells = -1)
 {
   vtkNew<vtkPoints> pts;
   for (const auto& p : cloud)
@@ -90,6 +91,8 @@ vtkSmartPointer<vtkMultiBlockDataSet> FlowComplexOf(const Cloud& cloud)
   vtkNew<vtkFlowComplex> fc;
   fc->SetInputData(pd);
   fc->SetComputeUnstableManifolds(false);
+  fc->SetComputeStableManifolds(cells != -2);
+  fc->SetMaximumStableManifoldCells(std::max<vtkIdType>(cells, -1));
   fc->Update();
   return fc->GetOutput();
 }
@@ -103,11 +106,13 @@ vtkSmartPointer<vtkMultiBlockDataSet> Simplified(vtkMultiBlockDataSet* complex, 
   return s->GetOutput();
 }
 
+/// The reconstruction at `tr` (and T_max = tr when tr is infinite).
 vtkSmartPointer<vtkUnstructuredGrid> Reconstructed(vtkMultiBlockDataSet* input, double tr)
 {
   vtkNew<vtkFlowReconstruction> r;
   r->SetInputData(input);
   r->SetReconstructionThreshold(tr);
+  r->SetMaximumThreshold(std::max(4.0, tr));
   r->Update();
   return vtkUnstructuredGrid::SafeDownCast(r->GetOutputDataObject(0));
 }
@@ -393,6 +398,18 @@ void TestShape(const std::string& name, const Cloud& cloud, std::array<long, 4> 
     CHECK(Rows(Reconstructed(Simplified(complexBack, tp), 2.0)) == Rows(at2));
     auto simplifiedBack = RoundTrip(simplified, base + "_simplified.vtm");
     CHECK(Rows(Reconstructed(simplifiedBack, 2.0)) == Rows(at2));
+
+    // Geometry on demand: from a complex without stable manifolds, or with a
+    // small cell budget, the reconstruction draws its own cells and equals the
+    // one made of the eager cells, cell by cell, at t_r 2 and infinity.
+    for (const vtkIdType cells : { vtkIdType(-2), vtkIdType(50) })
+    {
+      auto lazy = Simplified(FlowComplexOf(cloud, cells), tp);
+      CHECK(Rows(Reconstructed(lazy, VTK_DOUBLE_MAX)) == Rows(atInf));
+      CHECK(Rows(Reconstructed(lazy, 2.0)) == Rows(at2));
+      auto lazyBack = RoundTrip(lazy, base + "_lazy.vtm");
+      CHECK(Rows(Reconstructed(lazyBack, 2.0)) == Rows(at2));
+    }
   }
 }
 
