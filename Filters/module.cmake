@@ -10,7 +10,9 @@ vtk_module_add_module(FlowRecon::Filters
   PRIVATE_HEADERS
     ${_flowrecon_filters_dir}/CoreCall.h
     ${_flowrecon_filters_dir}/FlowComplexConversion.h
+    ${_flowrecon_filters_dir}/ReconstructionConversion.h
   SOURCES
-    ${_flowrecon_filters_dir}/FlowComplexConversion.cxx)
+    ${_flowrecon_filters_dir}/FlowComplexConversion.cxx
+    ${_flowrecon_filters_dir}/ReconstructionConversion.cxx)
 vtk_module_include(FlowRecon::Filters PUBLIC "$<BUILD_INTERFACE:${_flowrecon_filters_dir}>")
 vtk_module_link(FlowRecon::Filters PRIVATE "$<BUILD_INTERFACE:FlowReconCore>")

@@ -2,6 +2,7 @@
 
 #include "CoreCall.h"
 #include "FlowComplexConversion.h"
+#include "ReconstructionConversion.h"
 #include "Reconstruction.h"
 #include "Simplification.h"
 #include "StableManifoldGeometry.h"
@@ -43,60 +44,9 @@ struct vtkFlowReconstruction::Cache
   /// The T_max whose geometry FC holds (-1: none yet).
   double GeometryThreshold = -1;
   /// Triangles and tetrahedra of each node (compressed rows of cell positions).
-  std::vector<Id> TriangleOffsets, TriangleList, TetraOffsets, TetraList;
+  flowrecon::CellsByNode TriangleGroups, TetraGroups;
 };
 
-namespace
-{
-
-void GroupByNode(const std::vector<Id>& cellNode, std::size_t nodes, std::vector<Id>& offsets,
-  std::vector<Id>& list)
-{
-  offsets.assign(nodes + 1, 0);
-  for (Id node : cellNode)
-  {
-    ++offsets[node + 1];
-  }
-  for (std::size_t i = 0; i < nodes; ++i)
-  {
-    offsets[i + 1] += offsets[i];
-  }
-  list.resize(cellNode.size());
-  std::vector<Id> next(offsets.begin(), offsets.end() - 1);
-  for (std::size_t c = 0; c < cellNode.size(); ++c)
-  {
-    list[next[cellNode[c]]++] = static_cast<Id>(c);
-  }
-}
-
-using flowrecon::NamedArray;
-
-/// The arrays that describe an insertion, in all three outputs (cells of the
-/// reconstruction, rows of the profile, sponsor arrows): Step, NodeId, Priority,
-/// Extension, Sponsor.
-struct InsertionArrays
-{
-  vtkSmartPointer<vtkIdTypeArray> Step = NamedArray<vtkIdTypeArray>("Step");
-  vtkSmartPointer<vtkIdTypeArray> NodeId = NamedArray<vtkIdTypeArray>("NodeId");
-  vtkSmartPointer<vtkDoubleArray> Priority = NamedArray<vtkDoubleArray>("Priority");
-  vtkSmartPointer<vtkIntArray> Extension = NamedArray<vtkIntArray>("Extension");
-  vtkSmartPointer<vtkIdTypeArray> Sponsor = NamedArray<vtkIdTypeArray>("Sponsor");
-
-  void Append(Id step, Id node, const flowrecon::Insertion& in)
-  {
-    this->Step->InsertNextValue(step);
-    this->NodeId->InsertNextValue(node);
-    this->Priority->InsertNextValue(in.Priority);
-    this->Extension->InsertNextValue(static_cast<int>(in.Kind));
-    this->Sponsor->InsertNextValue(in.Sponsor);
-  }
-  std::array<vtkDataArray*, 5> All() const
-  {
-    return { { this->Step, this->NodeId, this->Priority, this->Extension, this->Sponsor } };
-  }
-};
-
-} // namespace
 
 vtkStandardNewMacro(vtkFlowReconstruction);
 
@@ -190,24 +140,7 @@ int vtkFlowReconstruction::RequestData(
     {
       return ok; // failed (0) or aborted (1, nothing cached)
     }
-    const auto& steps = cache->Run.Nodes;
-    cache->Carrier.assign(nodes.size(), -1);
-    for (std::size_t i = 0; i < nodes.size(); ++i)
-    {
-      if (s.Survives[i])
-      {
-        cache->Carrier[i] = steps[i].Step >= 0 ? static_cast<Id>(i) : -1;
-        continue;
-      }
-      for (const Id* o = s.OwnersBegin(i); o != s.OwnersEnd(i); ++o)
-      {
-        const Id c = cache->Carrier[i];
-        if (steps[*o].Step >= 0 && (c < 0 || steps[*o].Step < steps[c].Step))
-        {
-          cache->Carrier[i] = *o;
-        }
-      }
-    }
+    cache->Carrier = flowrecon::CellCarriers(cache->Run, &s);
     this->Cached = std::move(cache);
   }
   const double tmax = this->MaximumThreshold >= VTK_DOUBLE_MAX ? HUGE_VAL : this->MaximumThreshold;
@@ -221,7 +154,6 @@ int vtkFlowReconstruction::RequestData(
 
   const Cache& c = *this->Cached;
   const flowrecon::FlowComplex& fc = c.FC;
-  const auto& steps = c.Run.Nodes;
   double t =
     this->ReconstructionThreshold >= VTK_DOUBLE_MAX ? HUGE_VAL : this->ReconstructionThreshold;
   if (t > tmax)
@@ -233,141 +165,8 @@ int vtkFlowReconstruction::RequestData(
   this->SetProgressText("output");
   this->UpdateProgress(0.9);
 
-  // Nodes whose cells are in the reconstruction at t, in insertion order.
-  std::vector<std::pair<Id, Id>> selected; // (step of the carrier, node)
-  for (std::size_t i = 0; i < fc.Nodes.size(); ++i)
-  {
-    const Id carrier = c.Carrier[i];
-    if (carrier >= 0 && c.Run.Contains(carrier, t))
-    {
-      selected.emplace_back(steps[carrier].Step, static_cast<Id>(i));
-    }
-  }
-  std::sort(selected.begin(), selected.end());
-  const std::vector<int> multiplicity =
-    flowrecon::EdgeMultiplicities(fc.Nodes, fc.Arcs, c.Run, t);
-
-  // Port 0: the cells, over the points they use (samples keep their input id).
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  auto original = NamedArray<vtkIdTypeArray>("vtkOriginalPointIds");
-  std::vector<vtkIdType> pointOf(fc.Points.size(), -1);
-  auto point = [&](Id p) {
-    if (pointOf[p] < 0)
-    {
-      pointOf[p] = points->InsertNextPoint(fc.Points[p].data());
-      original->InsertNextValue(p < fc.NumberOfInputPoints ? static_cast<vtkIdType>(p) : -1);
-    }
-    return pointOf[p];
-  };
-  grid->Initialize();
-  InsertionArrays cellInsertion;
-  auto index = NamedArray<vtkIntArray>("Index");
-  auto value = NamedArray<vtkDoubleArray>("CriticalValue");
-  auto threshold = NamedArray<vtkDoubleArray>("Threshold");
-  auto owner = NamedArray<vtkIdTypeArray>("Owner");
-  auto mult = NamedArray<vtkIntArray>("Multiplicity");
-  grid->AllocateEstimate(static_cast<vtkIdType>(selected.size()), 3);
-  auto add = [&](int type, int n, const vtkIdType* ids, Id node) {
-    const Id carrier = c.Carrier[node];
-    const flowrecon::Insertion& in = steps[carrier];
-    vtkIdType local[4];
-    for (int k = 0; k < n; ++k)
-    {
-      local[k] = point(ids[k]);
-    }
-    grid->InsertNextCell(type, n, local);
-    cellInsertion.Append(in.Step, node, in);
-    index->InsertNextValue(fc.Nodes[node].Index);
-    value->InsertNextValue(fc.Nodes[node].Value);
-    threshold->InsertNextValue(in.Threshold);
-    owner->InsertNextValue(carrier);
-    mult->InsertNextValue(fc.Nodes[node].Index == 1 ? multiplicity[node] : 0);
-  };
-  for (const auto& entry : selected)
-  {
-    const Id node = entry.second;
-    const flowrecon::Node& n = fc.Nodes[node];
-    if (n.Index == 0)
-    {
-      const vtkIdType v = n.Simplex[0];
-      add(VTK_VERTEX, 1, &v, node);
-    }
-    else if (n.Index == 1)
-    {
-      const vtkIdType e[2] = { n.Simplex[0], n.Simplex[1] };
-      add(VTK_LINE, 2, e, node);
-    }
-    for (Id k = c.TriangleOffsets[node]; k < c.TriangleOffsets[node + 1]; ++k)
-    {
-      const auto& tri = fc.Triangles[c.TriangleList[k]];
-      const vtkIdType ids[3] = { tri[0], tri[1], tri[2] };
-      add(VTK_TRIANGLE, 3, ids, node);
-    }
-    for (Id k = c.TetraOffsets[node]; k < c.TetraOffsets[node + 1]; ++k)
-    {
-      const auto& tet = fc.Tetrahedra[c.TetraList[k]];
-      const vtkIdType ids[4] = { tet[0], tet[1], tet[2], tet[3] };
-      add(VTK_TETRA, 4, ids, node);
-    }
-  }
-  grid->SetPoints(points);
-  grid->GetPointData()->AddArray(original);
-  for (vtkDataArray* a : cellInsertion.All())
-  {
-    grid->GetCellData()->AddArray(a);
-  }
-  for (vtkDataArray* a : std::initializer_list<vtkDataArray*>{ index, value, threshold, owner, mult })
-  {
-    grid->GetCellData()->AddArray(a);
-  }
-  grid->GetCellData()->SetActiveScalars("CriticalValue");
-
-  // Port 1: the profile of the whole run.
-  InsertionArrays rowInsertion;
-  auto pIndex = NamedArray<vtkIntArray>("Index");
-  auto pThreshold = NamedArray<vtkDoubleArray>("Threshold");
-  for (std::size_t k = 0; k < c.Run.Order.size(); ++k)
-  {
-    const Id node = c.Run.Order[k];
-    const flowrecon::Insertion& in = steps[node];
-    rowInsertion.Append(static_cast<Id>(k), node, in);
-    pIndex->InsertNextValue(fc.Nodes[node].Index);
-    pThreshold->InsertNextValue(in.Threshold);
-  }
-  profile->Initialize();
-  for (vtkDataArray* a : rowInsertion.All())
-  {
-    profile->AddColumn(a);
-  }
-  profile->AddColumn(pIndex);
-  profile->AddColumn(pThreshold);
-
-  // Port 2: sponsor -> node arrows of the current reconstruction.
-  vtkNew<vtkPoints> arrowPoints;
-  arrowPoints->SetDataTypeToDouble();
-  vtkNew<vtkCellArray> lines;
-  InsertionArrays arrowInsertion;
-  for (const Id node : c.Run.Order)
-  {
-    const flowrecon::Insertion& in = steps[node];
-    if (!c.Run.Contains(node, t) || in.Sponsor < 0)
-    {
-      continue;
-    }
-    const vtkIdType ids[2] = { arrowPoints->InsertNextPoint(fc.Nodes[in.Sponsor].Location.data()),
-      arrowPoints->InsertNextPoint(fc.Nodes[node].Location.data()) };
-    lines->InsertNextCell(2, ids);
-    arrowInsertion.Append(in.Step, node, in);
-  }
-  arrows->Initialize();
-  arrows->SetPoints(arrowPoints);
-  arrows->SetLines(lines);
-  for (vtkDataArray* a : arrowInsertion.All())
-  {
-    arrows->GetCellData()->AddArray(a);
-  }
-  arrows->GetCellData()->SetActiveScalars("Priority");
+  flowrecon::ReconstructionToVTK(fc, c.Carrier, c.Run, t, c.TriangleGroups, c.TetraGroups,
+    grid, profile, arrows);
 
   this->SetProgressText(nullptr);
   this->UpdateProgress(1.0);
@@ -381,15 +180,7 @@ bool vtkFlowReconstruction::DrawGeometry(double tmax)
   flowrecon::FlowComplex& fc = cache.FC;
   cache.GeometryThreshold = -1;
   // The nodes whose cells the output can show: carriers below T_max.
-  std::vector<Id> draw;
-  for (std::size_t i = 0; i < fc.Nodes.size(); ++i)
-  {
-    const Id carrier = cache.Carrier[i];
-    if (fc.Nodes[i].Index >= 2 && carrier >= 0 && cache.Run.Contains(carrier, tmax))
-    {
-      draw.push_back(static_cast<Id>(i));
-    }
-  }
+  const std::vector<Id> draw = flowrecon::NodesToDraw(fc.Nodes, cache.Carrier, cache.Run, tmax);
   // The input's own cells do when they cover every such node (a complex
   // computed with all its geometry); otherwise draw them from the samples.
   std::vector<char> drawn(fc.Nodes.size(), 0);
@@ -429,8 +220,8 @@ bool vtkFlowReconstruction::DrawGeometry(double tmax)
       return false;
     }
   }
-  GroupByNode(fc.TriangleNode, fc.Nodes.size(), cache.TriangleOffsets, cache.TriangleList);
-  GroupByNode(fc.TetrahedronNode, fc.Nodes.size(), cache.TetraOffsets, cache.TetraList);
+  cache.TriangleGroups = flowrecon::CellsByNode(fc.TriangleNode, fc.Nodes.size());
+  cache.TetraGroups = flowrecon::CellsByNode(fc.TetrahedronNode, fc.Nodes.size());
   cache.GeometryThreshold = tmax;
   return true;
 }

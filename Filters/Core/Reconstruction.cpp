@@ -369,4 +369,42 @@ std::vector<int> EdgeMultiplicities(const std::vector<Node>& nodes,
   return m;
 }
 
+std::vector<Id> CellCarriers(
+  const ReconstructionResult& run, const SimplificationResult* simplification)
+{
+  const auto& steps = run.Nodes;
+  std::vector<Id> carrier(steps.size(), -1);
+  for (std::size_t i = 0; i < steps.size(); ++i)
+  {
+    if (!simplification || simplification->Survives[i])
+    {
+      carrier[i] = steps[i].Step >= 0 ? static_cast<Id>(i) : -1;
+      continue;
+    }
+    for (const Id* o = simplification->OwnersBegin(i); o != simplification->OwnersEnd(i); ++o)
+    {
+      const Id c = carrier[i];
+      if (steps[*o].Step >= 0 && (c < 0 || steps[*o].Step < steps[c].Step))
+      {
+        carrier[i] = *o;
+      }
+    }
+  }
+  return carrier;
+}
+
+std::vector<Id> NodesToDraw(const std::vector<Node>& nodes, const std::vector<Id>& carriers,
+  const ReconstructionResult& run, double t)
+{
+  std::vector<Id> draw;
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+  {
+    if (nodes[i].Index >= 2 && carriers[i] >= 0 && run.Contains(carriers[i], t))
+    {
+      draw.push_back(static_cast<Id>(i));
+    }
+  }
+  return draw;
+}
+
 } // namespace flowrecon

@@ -5,6 +5,7 @@
 
 #include "FlowComplex.h"
 #include "Progress.h"
+#include "Simplification.h"
 
 #include <cmath>
 #include <vector>
@@ -96,6 +97,18 @@ std::vector<Id> NearestNeighboursFromDiagram(
 std::vector<int> EdgeMultiplicities(const std::vector<Node>& nodes,
   const std::vector<Arc>& arcs, const ReconstructionResult& reconstruction,
   double t = HUGE_VAL);
+
+/// The node whose insertion brings each node's cells into the reconstruction:
+/// the node itself when it survives and is inserted; for a node cancelled by
+/// `simplification` (null: none), the earliest inserted of its owners (its
+/// stable manifold went to them, paper §3.3); -1 when never inserted.
+std::vector<Id> CellCarriers(
+  const ReconstructionResult& run, const SimplificationResult* simplification);
+
+/// The nodes of index 2 and 3 whose cells are in the reconstruction at threshold
+/// `t` (their carrier is): the stable manifolds a stage showing it must draw.
+std::vector<Id> NodesToDraw(const std::vector<Node>& nodes, const std::vector<Id>& carriers,
+  const ReconstructionResult& run, double t);
 
 } // namespace flowrecon
 
