@@ -11,3 +11,12 @@ if (FLOWRECON_WRAP_PYTHON)
     LABELS "python"
     TIMEOUT 300)
 endif ()
+
+# The output-sensitive reconstruction equals the eager one below every t_r
+# (DESIGN.md, "Cost follows the output").
+if (TARGET flowrecon)
+  add_test(NAME py.reconstruction.lazy_equals_eager
+    COMMAND "${FLOWRECON_TEST_PYTHON}" "${CMAKE_CURRENT_SOURCE_DIR}/test_lazy_equals_eager.py"
+            "$<TARGET_FILE:flowrecon>" "${CMAKE_CURRENT_BINARY_DIR}/lazy_equals_eager")
+  set_tests_properties(py.reconstruction.lazy_equals_eager PROPERTIES LABELS "python" TIMEOUT 300)
+endif ()
