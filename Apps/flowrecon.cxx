@@ -13,7 +13,12 @@
 // are captured, never printed.
 
 #include "FlowComplexConversion.h"
+#include "FlowComplexBuilder.h" // flowrecon diagram calls the core directly
 #include "Persistence.h"
+#include "Reconstruction.h"
+#include "ReconstructionConversion.h"
+#include "Simplification.h"
+#include "StableManifoldGeometry.h"
 #include "vtkFlowComplex.h"
 #include "vtkFlowComplexSimplification.h"
 #include "vtkFlowReconstruction.h"
@@ -51,11 +56,14 @@
 #include <algorithm>
 #include <atomic>
 #include <cctype>
+#include <charconv>
+#include <cerrno>
 #include <cmath>
 #include <fstream>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <iomanip>
 #include <memory>
@@ -202,8 +210,26 @@ public:
     {
       return;
     }
-    const int percent = static_cast<int>(100 * *static_cast<double*>(callData));
-    const char* phase = algorithm->GetProgressText();
+    this->Print(*static_cast<double*>(callData), algorithm->GetProgressText());
+  }
+
+  // The same line for the core's progress, which also polls for Ctrl-C.
+  flowrecon::Progress Core()
+  {
+    flowrecon::Progress progress;
+    progress.Report = [this](double fraction, const char* phase) {
+      if (this->Show)
+      {
+        this->Print(fraction, phase);
+      }
+    };
+    progress.ShouldAbort = []() { return InterruptRequested.load(); };
+    return progress;
+  }
+
+  void Print(double fraction, const char* phase)
+  {
+    const int percent = static_cast<int>(100 * fraction);
     std::string line =
       "[" + this->Label + "] " + std::to_string(percent) + "%  " + (phase ? phase : "");
     line = line.substr(0, 79);
@@ -759,6 +785,14 @@ bool IsSimplified(vtkMultiBlockDataSet* complex)
   return points && points->GetPointData()->GetArray("Cancelled");
 }
 
+// "PATH: cannot write (why)". VTK's writers report a full disk like any failed
+// write; errno, reset before writing, tells it.
+Failure WriteFailure(const std::string& path, const std::string& why)
+{
+  return Failure(
+    path + ": cannot write (" + (errno == ENOSPC ? "no space left on device" : why) + ")");
+}
+
 // Writes `data` as VTK XML (appended raw binary, LZ4), removing it on Ctrl-C.
 template <class Writer>
 void WriteXML(vtkDataObject* data, const std::string& output)
@@ -772,6 +806,7 @@ void WriteXML(vtkDataObject* data, const std::string& output)
   vtkNew<ProgressLine> abortOnly;
   writer->AddObserver(vtkCommand::ProgressEvent, abortOnly);
   Messages->FirstError.clear();
+  errno = 0;
   const int written = writer->Write();
   std::error_code error;
   if (InterruptRequested)
@@ -781,20 +816,112 @@ void WriteXML(vtkDataObject* data, const std::string& output)
   }
   if (!written || writer->GetErrorCode() != 0)
   {
-    throw Failure(output + ": cannot write (" +
-      (Messages->FirstError.empty() ? std::string("unknown error") : Messages->FirstError) + ")");
+    throw WriteFailure(
+      output, Messages->FirstError.empty() ? "unknown error" : Messages->FirstError);
   }
 }
 
 std::ofstream OpenText(const std::string& path)
 {
+  errno = 0;
   std::ofstream out(path);
   if (!out)
   {
-    throw Failure(path + ": cannot write");
+    throw WriteFailure(path, errno ? std::strerror(errno) : "cannot open");
   }
   out << std::setprecision(17);
   return out;
+}
+
+// Text is written when the buffer fills and here: a full disk shows here.
+void CloseText(std::ofstream& out, const std::string& path)
+{
+  out.close();
+  if (!out)
+  {
+    throw WriteFailure(path, errno ? std::strerror(errno) : "write error");
+  }
+}
+
+// The reconstruction of a point cloud through the core: the flow complex stays
+// in the core's compact form (a VTK copy of its Hasse diagram would be most of
+// the memory), and only the cells written are drawn. Fills `grid` and `profile`
+// as vtkFlowReconstruction does (the tests compare the two paths) and `nodes`.
+void ReconstructCloud(const std::string& input, double tp, double trmax,
+  const FlowComplexOptions& options, vtkUnstructuredGrid* grid, vtkTable* profile,
+  std::vector<flowrecon::Node>& nodes)
+{
+  vtkNew<vtkPointCloudReader> reader;
+  reader->SetFileName(input.c_str());
+  if (!reader->GetExecutive()->Update())
+  {
+    throw Failure(reader->GetErrorMessage());
+  }
+  ThrowIfInterrupted();
+  std::vector<flowrecon::Point3> samples;
+  std::string error;
+  if (!flowrecon::ExtractSamples(reader->GetOutputDataObject(0), samples, error))
+  {
+    throw Failure(input + ": " + error);
+  }
+  vtkNew<ProgressLine> line;
+  line->Label = options.Label;
+  line->Show = !options.Quiet && isatty(2);
+  const flowrecon::Progress progress = line->Core();
+  auto stage = [&](double from, double to) {
+    flowrecon::Progress p = progress;
+    p.Report = [&progress, from, to](double f, const char* phase) {
+      progress.Report(from + (to - from) * f, phase);
+    };
+    return p;
+  };
+  try
+  {
+    flowrecon::BuildOptions build;
+    build.StableManifolds = false;
+    build.UnstableManifolds = false;
+    flowrecon::FlowComplex fc = flowrecon::BuildFlowComplex(samples, build, stage(0, 0.5));
+    flowrecon::SimplificationResult s;
+    const bool simplify = tp >= 1; // below 1 nothing is cancelled
+    if (simplify)
+    {
+      s = flowrecon::Simplify(fc.Nodes, fc.Arcs, tp, stage(0.5, 0.6));
+      fc.Arcs = std::move(s.Arcs); // the reconstruction grows on the simplified diagram
+      s.Arcs = {};
+    }
+    const std::vector<bool> survives = simplify ? s.Survives : std::vector<bool>(fc.Nodes.size(), true);
+    const std::vector<flowrecon::Id> init = flowrecon::InitializationEdges(
+      fc.Nodes, flowrecon::NearestNeighboursFromDiagram(fc.Nodes, fc.Arcs));
+    const flowrecon::ReconstructionResult run =
+      flowrecon::Reconstruct(fc.Nodes, fc.Arcs, survives, init, HUGE_VAL, stage(0.6, 0.7));
+    const std::vector<flowrecon::Id> carriers = flowrecon::CellCarriers(run, simplify ? &s : nullptr);
+    flowrecon::DrawStableManifolds(samples, build,
+      flowrecon::NodesToDraw(fc.Nodes, carriers, run, trmax), fc, stage(0.7, 0.95),
+      "lower --tr (or --tr-max)");
+    progress(0.95, "output");
+    vtkNew<vtkPolyData> arrows;
+    flowrecon::ReconstructionToVTK(fc, carriers, run, trmax,
+      flowrecon::CellsByNode(fc.TriangleNode, fc.Nodes.size()),
+      flowrecon::CellsByNode(fc.TetrahedronNode, fc.Nodes.size()), grid, profile, arrows);
+    nodes = std::move(fc.Nodes);
+  }
+  catch (const flowrecon::Aborted&)
+  {
+    line->Finish();
+    throw Interrupted();
+  }
+  catch (const flowrecon::InputError& e)
+  {
+    line->Finish();
+    throw Failure(input + ": " + e.what());
+  }
+  catch (const std::bad_alloc&)
+  {
+    line->Finish();
+    throw Failure(input + ": out of memory reconstructing " + std::to_string(samples.size()) +
+      " points; lower --tr, use --tp 0, or fewer points");
+  }
+  line->Finish();
 }
 
 int RunReconstruct(const Arguments& args)
@@ -844,30 +971,48 @@ int RunReconstruct(const Arguments& args)
   // only its Hasse diagram (DESIGN.md, "Cost follows the output").
   options.Stable = false;
   options.Unstable = false;
-  vtkSmartPointer<vtkMultiBlockDataSet> complex = FlowComplexOf(input, options);
+  vtkSmartPointer<vtkMultiBlockDataSet> complex = LoadStoredFlowComplex(input);
   vtkSmartPointer<vtkMultiBlockDataSet> simplified = complex;
-  if (IsSimplified(complex))
+  vtkSmartPointer<vtkUnstructuredGrid> grid;
+  vtkSmartPointer<vtkTable> profile;
+  std::vector<flowrecon::Node> nodes; // for --jumps
+  if (!complex)
   {
-    if (args.Has("--tp"))
+    grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+    profile = vtkSmartPointer<vtkTable>::New();
+    ReconstructCloud(input, tp, trmax, options, grid, profile, nodes);
+  }
+  else
+  {
+    if (IsSimplified(complex))
     {
-      throw Failure(input + ": already simplified; --tp applies to a flow complex only");
+      if (args.Has("--tp"))
+      {
+        throw Failure(input + ": already simplified; --tp applies to a flow complex only");
+      }
+    }
+    else if (tp >= 1) // below 1 nothing is cancelled
+    {
+      vtkNew<vtkFlowComplexSimplification> simplification;
+      simplification->SetInputData(complex);
+      simplification->SetPersistenceThreshold(tp);
+      RunFilter(simplification, input, options, "simplification");
+      simplified = vtkMultiBlockDataSet::SafeDownCast(simplification->GetOutputDataObject(0));
+    }
+    vtkNew<vtkFlowReconstruction> reconstruction;
+    reconstruction->SetInputData(simplified);
+    reconstruction->SetReconstructionThreshold(trmax);
+    reconstruction->SetMaximumThreshold(trmax);
+    RunFilter(reconstruction, input, options, "reconstruction");
+    grid = vtkUnstructuredGrid::SafeDownCast(reconstruction->GetOutputDataObject(0));
+    profile = vtkTable::SafeDownCast(reconstruction->GetOutputDataObject(1));
+    std::string error;
+    flowrecon::FlowComplex stored;
+    if (jumps > 0 && flowrecon::FromMultiBlock(simplified, stored, error))
+    {
+      nodes = std::move(stored.Nodes);
     }
   }
-  else if (tp >= 1) // below 1 nothing is cancelled
-  {
-    vtkNew<vtkFlowComplexSimplification> simplification;
-    simplification->SetInputData(complex);
-    simplification->SetPersistenceThreshold(tp);
-    RunFilter(simplification, input, options, "simplification");
-    simplified = vtkMultiBlockDataSet::SafeDownCast(simplification->GetOutputDataObject(0));
-  }
-  vtkNew<vtkFlowReconstruction> reconstruction;
-  reconstruction->SetInputData(simplified);
-  reconstruction->SetReconstructionThreshold(trmax);
-  reconstruction->SetMaximumThreshold(trmax);
-  RunFilter(reconstruction, input, options, "reconstruction");
-  auto* grid = vtkUnstructuredGrid::SafeDownCast(reconstruction->GetOutputDataObject(0));
-  auto* profile = vtkTable::SafeDownCast(reconstruction->GetOutputDataObject(1));
   WriteXML<vtkXMLUnstructuredGridWriter>(grid, output);
 
   const char* columns[5] = { "Step", "NodeId", "Index", "Priority", "Threshold" };
@@ -888,10 +1033,7 @@ int RunReconstruct(const Arguments& args)
           << static_cast<int>(column[2]->GetComponent(r, 0)) << ","
           << column[3]->GetComponent(r, 0) << "," << column[4]->GetComponent(r, 0) << "\n";
     }
-    if (!csv)
-    {
-      throw Failure(profilePath + ": cannot write");
-    }
+    CloseText(csv, profilePath);
   }
   vtkIdType kept = 0;
   while (kept < steps && column[4]->GetComponent(kept, 0) < tr)
@@ -917,24 +1059,19 @@ int RunReconstruct(const Arguments& args)
       }
     }
     std::sort(rises.begin(), rises.end());
-    auto* points = vtkPolyData::SafeDownCast(flowrecon::NamedBlock(simplified, "CriticalPoints"));
-    vtkDataArray* value = points ? points->GetPointData()->GetArray("CriticalValue") : nullptr;
     std::cout << "largest jumps of the profile (step: threshold before -> after, node, index, "
                  "critical value, location):\n";
     for (std::size_t j = 0; j < rises.size() && static_cast<long>(j) < jumps; ++j)
     {
       const vtkIdType r = rises[j].second;
       const vtkIdType node = static_cast<vtkIdType>(column[1]->GetComponent(r, 0));
-      double x[3] = { 0, 0, 0 };
-      if (points && node < points->GetNumberOfPoints())
-      {
-        points->GetPoint(node, x); // CriticalPoints are stored in node order
-      }
+      const bool known = node >= 0 && node < static_cast<vtkIdType>(nodes.size());
+      const flowrecon::Point3 x = known ? nodes[node].Location : flowrecon::Point3{ { 0, 0, 0 } };
       std::cout << "  step " << r << ": " << column[4]->GetComponent(r - 1, 0) << " -> "
                 << column[4]->GetComponent(r, 0) << ", node " << node << ", index "
                 << static_cast<int>(column[2]->GetComponent(r, 0)) << ", value "
-                << (value ? value->GetComponent(node, 0) : std::nan("")) << ", at (" << x[0]
-                << ", " << x[1] << ", " << x[2] << ")\n";
+                << (known ? nodes[node].Value : std::nan("")) << ", at (" << x[0] << ", "
+                << x[1] << ", " << x[2] << ")\n";
     }
   }
   return 0;
@@ -998,18 +1135,89 @@ int RunDiagram(const Arguments& args)
   const std::string& input = args.Inputs[0];
   const std::string output = OutputOption(args, "diagram", { ".csv", ".vtu" });
   FlowComplexOptions options = CommonOptions(args, "diagram");
-  options.Stable = false; // nodes and arcs suffice
-  options.Unstable = false;
-  vtkSmartPointer<vtkMultiBlockDataSet> complex = FlowComplexOf(input, options);
-  if (IsSimplified(complex))
-  {
-    throw Failure(input + ": simplified; the diagram needs the flow complex itself");
-  }
+  // Nodes and arcs suffice: a point cloud goes to the core directly (no manifold
+  // geometry, no VTK round trip); a stored complex is read back.
   flowrecon::FlowComplex fc;
-  std::string error;
-  if (!flowrecon::FromMultiBlock(complex, fc, error))
+  if (vtkSmartPointer<vtkMultiBlockDataSet> stored = LoadStoredFlowComplex(input))
   {
-    throw Failure(input + ": " + error);
+    if (IsSimplified(stored))
+    {
+      throw Failure(input + ": simplified; the diagram needs the flow complex itself");
+    }
+    std::string error;
+    if (!flowrecon::FromMultiBlock(stored, fc, error))
+    {
+      throw Failure(input + ": " + error);
+    }
+  }
+  else
+  {
+    std::vector<flowrecon::Point3> samples;
+    {
+      vtkNew<vtkPointCloudReader> reader;
+      reader->SetFileName(input.c_str());
+      if (!reader->GetExecutive()->Update())
+      {
+        throw Failure(reader->GetErrorMessage());
+      }
+      ThrowIfInterrupted();
+      std::string error;
+      if (!flowrecon::ExtractSamples(reader->GetOutputDataObject(0), samples, error))
+      {
+        throw Failure(input + ": " + error);
+      }
+    }
+    // The progress line of the filters ("[diagram] 42%  phase"), and Ctrl-C.
+    const bool show = !options.Quiet && isatty(2);
+    std::string last;
+    flowrecon::Progress progress;
+    progress.Report = [&](double fraction, const char* phase) {
+      if (!show)
+      {
+        return;
+      }
+      std::string line = "[" + options.Label + "] " +
+        std::to_string(static_cast<int>(100 * fraction)) + "%  " + (phase ? phase : "");
+      line = line.substr(0, 79);
+      if (line != last)
+      {
+        const std::size_t width = std::max(line.size(), last.size());
+        std::fprintf(stderr, "\r%-*s", static_cast<int>(width), line.c_str());
+        std::fflush(stderr);
+        last = line;
+      }
+    };
+    progress.ShouldAbort = []() { return InterruptRequested.load(); };
+    auto finishLine = [&]() {
+      if (!last.empty())
+      {
+        std::fputc('\n', stderr);
+      }
+    };
+    flowrecon::BuildOptions build;
+    build.StableManifolds = false;
+    build.UnstableManifolds = false;
+    try
+    {
+      fc = flowrecon::BuildFlowComplex(samples, build, progress);
+    }
+    catch (const flowrecon::InputError& e)
+    {
+      finishLine();
+      throw Failure(input + ": " + e.what());
+    }
+    catch (const flowrecon::Aborted&)
+    {
+      finishLine();
+      throw Interrupted();
+    }
+    catch (const std::exception& e)
+    {
+      finishLine();
+      throw Failure(input + ": flow complex construction failed: " + e.what());
+    }
+    finishLine();
+    ThrowIfInterrupted();
   }
   std::vector<flowrecon::PersistencePair> pairs;
   for (const auto& p : flowrecon::ComputePersistence(fc.Nodes, fc.Arcs))
@@ -1019,27 +1227,43 @@ int RunDiagram(const Arguments& args)
       pairs.push_back(p);
     }
   }
+  fc = flowrecon::FlowComplex();
   ThrowIfInterrupted();
   if (ExtensionOf(output) == ".csv")
   {
+    // As ostream << setprecision(17) would write them (printf's %.17g), faster.
     std::ofstream csv = OpenText(output);
     csv << "dimension,birth,death\n";
+    std::string text;
+    char number[32];
+    auto append = [&](double value) {
+      const auto end = std::to_chars(number, number + sizeof number, value,
+        std::chars_format::general, 17).ptr;
+      text.append(number, end);
+    };
     for (const auto& p : pairs)
     {
-      csv << p.Dimension << "," << p.BirthValue << ",";
+      text += std::to_string(p.Dimension);
+      text += ',';
+      append(p.BirthValue);
+      text += ',';
       if (std::isinf(p.DeathValue))
       {
-        csv << "inf\n";
+        text += "inf";
       }
       else
       {
-        csv << p.DeathValue << "\n";
+        append(p.DeathValue);
+      }
+      text += '\n';
+      if (text.size() > (1 << 20))
+      {
+        csv.write(text.data(), static_cast<std::streamsize>(text.size()));
+        text.clear();
       }
     }
-    if (!csv)
-    {
-      throw Failure(output + ": cannot write");
-    }
+    csv.write(text.data(), static_cast<std::streamsize>(text.size()));
+    CloseText(csv, output);
   }
   else
   {

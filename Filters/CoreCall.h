@@ -10,6 +10,7 @@
 #include "vtkSetGet.h"
 
 #include <exception>
+#include <new>
 #include <string>
 
 namespace flowrecon
@@ -48,6 +49,11 @@ int CallCore(vtkAlgorithm* algorithm, const char* what, Work&& work, OnAbort&& o
   {
     onAbort();
     return 1;
+  }
+  catch (const std::bad_alloc&)
+  {
+    vtkErrorWithObjectMacro(algorithm, << what << " ran out of memory");
+    return 0;
   }
   catch (const std::exception& e)
   {

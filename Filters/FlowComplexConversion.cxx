@@ -1,5 +1,7 @@
 #include "FlowComplexConversion.h"
 
+#include "MemoryGuard.h"
+
 #include "vtkAbstractArray.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -348,6 +350,18 @@ void AddReport(const FlowComplex& fc, vtkFieldData* fd)
     fc.Time.UnstableManifolds, fc.Time.Assembly, fc.Time.Total };
   timings->InsertNextTypedTuple(t);
   fd->AddArray(timings);
+}
+
+void RequireMemoryForVTK(const FlowComplex& fc)
+{
+  const double bytes = 100.0 * static_cast<double>(fc.Arcs.size()) +
+    150.0 * static_cast<double>(fc.Nodes.size()) +
+    200.0 * static_cast<double>(fc.Triangles.size() + fc.Tetrahedra.size());
+  RequireMemory(bytes,
+    "the VTK output of the flow complex of " + std::to_string(fc.Report.InputPoints) +
+      " points (" + std::to_string(fc.Arcs.size()) + " arcs)",
+    "reconstruct with flowrecon or Flow Reconstruction from the points, which keep the complex "
+    "in its compact form, or use fewer points");
 }
 
 void ToMultiBlock(const FlowComplex& fc, vtkMultiBlockDataSet* output)

@@ -27,6 +27,11 @@ bool ExtractSamples(vtkDataObject* input, std::vector<Point3>& points, std::stri
 /// UnstableManifolds (the last two empty when not computed) and the report arrays.
 void ToMultiBlock(const FlowComplex& fc, vtkMultiBlockDataSet* output);
 
+/// Refuses (InputError, one line) to convert a flow complex whose VTK copy
+/// would not fit in memory: about 100 bytes per arc, 150 per node and 200 per
+/// drawn cell, on top of the core's copy.
+void RequireMemoryForVTK(const FlowComplex& fc);
+
 /// The report arrays (NodeCountByIndex, EulerCharacteristic, ..., Timings).
 void AddReport(const FlowComplex& fc, vtkFieldData* fd);
 

@@ -1,6 +1,7 @@
 #include "ReconstructionConversion.h"
 
 #include "FlowComplexConversion.h"
+#include "MemoryGuard.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -89,6 +90,20 @@ void ReconstructionToVTK(const FlowComplex& fc, const std::vector<Id>& carriers,
     }
   }
   std::sort(selected.begin(), selected.end());
+  {
+    // VTK aborts the process when an array cannot grow: check first. About 110
+    // bytes a cell and 40 a point, twice for the arrays' growth by doubling.
+    double cells = static_cast<double>(selected.size());
+    for (const auto& entry : selected)
+    {
+      const Id node = entry.second;
+      cells += static_cast<double>(triangles.Offsets[node + 1] - triangles.Offsets[node] +
+        tetrahedra.Offsets[node + 1] - tetrahedra.Offsets[node]);
+    }
+    RequireMemory(2 * (110 * cells + 40 * static_cast<double>(fc.Points.size())),
+      "the VTK output of " + std::to_string(static_cast<long long>(cells)) + " cells",
+      "lower the reconstruction threshold (or MaximumThreshold)");
+  }
   const std::vector<int> multiplicity =
     flowrecon::EdgeMultiplicities(fc.Nodes, fc.Arcs, run, t);
 

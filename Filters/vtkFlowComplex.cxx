@@ -84,6 +84,7 @@ int vtkFlowComplex::RequestData(
     this, "flow complex construction",
     [&]() {
       const flowrecon::FlowComplex fc = flowrecon::BuildFlowComplex(samples, options, progress);
+      flowrecon::RequireMemoryForVTK(fc);
       flowrecon::ToMultiBlock(fc, output);
     },
     [&]() { output->Initialize(); });

@@ -11,6 +11,8 @@
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkLZ4DataCompressor.h"
+#include "vtkLZMADataCompressor.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOutputWindow.h"
@@ -19,7 +21,11 @@
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkXMLDataElement.h"
+#include "vtkXMLDataParser.h"
 #include "vtkXMLGenericDataObjectReader.h"
+#include "vtkZLibDataCompressor.h"
+#include "vtksys/FStream.hxx"
 
 #include <algorithm>
 #include <array>
@@ -32,6 +38,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <new>
 #include <numeric>
 #include <stdexcept>
@@ -1154,42 +1161,122 @@ bool DecodeBase64(std::string_view text, std::string& bytes)
   return true;
 }
 
-// The first words of a compressed data array are (number of blocks, block
-// size, last block size); vtkXMLDataParser allocates a table of "number of
-// blocks" entries without checking it (a corrupt value hangs it). In base64
-// they are encoded alone, in 4 * wordSize characters without padding.
-bool CompressionHeaderOk(
-  std::string_view bytes, std::size_t wordSize, bool bigEndian, long long fileSize, long long limit)
+// The largest ratio of uncompressed to compressed bytes each of VTK's
+// compressors reaches: LZ4 spends at least a byte per 255 bytes of a run,
+// deflate 2 bits per 258 bytes; LZMA reaches about 7100 on zeros (measured;
+// 16384 leaves room). 1 when the file is not compressed.
+long long MaximumRatio(std::string_view header)
 {
-  if (bytes.size() < 3 * wordSize)
-  {
-    return false;
-  }
-  unsigned long long words[3] = { 0, 0, 0 };
-  for (std::size_t w = 0; w < 3; ++w)
-  {
-    for (std::size_t b = 0; b < wordSize; ++b)
+  const auto has = [&header](const char* name) {
+    return header.find(std::string("compressor=\"") + name + '"') != std::string_view::npos;
+  };
+  return header.find("compressor=") == std::string_view::npos ? 1
+    : has("vtkLZ4DataCompressor")                             ? 255
+    : has("vtkZLibDataCompressor")                            ? 1032
+                                                              : 16384;
+}
+
+// The fewest bits a value of an XML data array takes in the file before
+// compression: an ASCII value at least a character, a Bit value one bit.
+int BitsPerValue(std::string_view type, std::string_view format)
+{
+  const std::size_t digits = type.find_first_of("123456789");
+  return format == "ascii"             ? 8
+    : type == "Bit"                    ? 1
+    : digits == std::string_view::npos ? 8
+                                       : std::atoi(type.data() + digits);
+}
+
+// The block header of a binary data array is its byte count or, compressed,
+// (number of blocks, block size, last block size, compressed size of each
+// block); vtkXMLDataParser allocates a table of "number of blocks" entries and
+// a buffer of "block size" bytes from it unchecked. So each size must fit in
+// the `available` bytes (base64: characters, 3 bytes per 4) that follow, and
+// each block must not expand more than `ratio` times. read(n) gives the first
+// n bytes or characters. Returns the problem, or "".
+template <class Read>
+std::string CheckBlockHeader(const Read& read, long long available, bool base64, bool compressed,
+  std::size_t wordSize, bool bigEndian, long long ratio)
+{
+  std::vector<unsigned long long> words;
+  const auto decode = [&](std::size_t count) {
+    const std::size_t bytes = count * wordSize;
+    std::string chunk = read(base64 ? 4 * ((bytes + 2) / 3) : bytes);
+    if (base64)
     {
-      const std::size_t byte = bigEndian ? b : wordSize - 1 - b;
-      words[w] = (words[w] << 8) | static_cast<unsigned char>(bytes[w * wordSize + byte]);
+      std::string decoded;
+      chunk.erase(chunk.find_last_not_of('=') + 1);
+      if (!DecodeBase64(chunk, decoded))
+      {
+        return false;
+      }
+      chunk.swap(decoded);
+    }
+    if (chunk.size() < bytes)
+    {
+      return false;
+    }
+    words.assign(count, 0);
+    for (std::size_t w = 0; w < bytes; ++w)
+    {
+      const std::size_t byte =
+        w - w % wordSize + (bigEndian ? w % wordSize : wordSize - 1 - w % wordSize);
+      words[w / wordSize] = (words[w / wordSize] << 8) | static_cast<unsigned char>(chunk[byte]);
+    }
+    return true;
+  };
+  // Bytes the file holds after a header of `count` words.
+  const auto after = [&](std::size_t count) {
+    const long long bytes = base64 ? available / 4 * 3 : available;
+    return static_cast<unsigned long long>(
+      std::max(0LL, bytes - static_cast<long long>(count * wordSize)));
+  };
+  if (!compressed)
+  {
+    if (!decode(1))
+    {
+      return "truncated block header";
+    }
+    return words[0] <= after(1)
+      ? std::string()
+      : "its header announces " + std::to_string(words[0]) + " bytes, more than the file holds";
+  }
+  if (!decode(3) || words[0] > after(3) / wordSize || words[2] > words[1] ||
+    !decode(3 + static_cast<std::size_t>(words[0])))
+  {
+    return "corrupt compression header";
+  }
+  const std::size_t blocks = words.size() - 3;
+  const unsigned long long room = after(3 + blocks);
+  unsigned long long total = 0;
+  for (std::size_t b = 0; b < blocks; ++b)
+  {
+    const unsigned long long packed = words[3 + b];
+    const unsigned long long unpacked = b + 1 == blocks && words[2] > 0 ? words[2] : words[1];
+    total += packed;
+    if (packed > room || total > room || unpacked > packed * static_cast<unsigned long long>(ratio))
+    {
+      return "its compression header announces " + std::to_string(unpacked) + " bytes from " +
+        std::to_string(packed) + " compressed bytes, which this file cannot hold";
     }
   }
-  return words[0] <= static_cast<unsigned long long>(fileSize) / wordSize &&
-    words[1] <= static_cast<unsigned long long>(limit) && words[2] <= words[1];
+  return std::string();
 }
+
+void CheckCellOffsets(const std::string& file, long long limit);
 
 // vtkXMLReader aborts the process when an allocation fails and loops on absurd
 // component counts, so the counts in the XML header (and in the files a .vtm or
-// .pvt* refers to) are checked against the file size first: every stored value
-// takes at least one byte, or 1/2000 byte when compressed (zlib's best ratio is
-// about 1:1000).
+// .pvt* refers to) are checked against the file size first: the arrays cannot
+// declare more bytes than the file holds times the compressor's best ratio (an
+// ASCII value takes at least one character).
 void CheckXmlCounts(const std::string& file, int depth = 0)
 {
   const std::string text = ReadWholeFile(file, "<AppendedData");
   const std::string_view header = std::string_view(text).substr(0, text.find("<AppendedData"));
   const long long size = static_cast<long long>(std::filesystem::file_size(file));
-  const bool compressed = header.find("compressor=") != std::string_view::npos;
-  const long long limit = compressed ? size * 2000 : size;
+  const long long ratio = MaximumRatio(header);
+  const long long limit = size * ratio;
   constexpr long long maximumPoints = 1LL << 30;
   const std::size_t wordSize =
     header.find("header_type=\"UInt64\"") != std::string_view::npos ? 8 : 4;
@@ -1198,8 +1285,11 @@ void CheckXmlCounts(const std::string& file, int depth = 0)
   const std::size_t appended = text.find('_', std::min(text.find('>', header.size()), text.size()));
   const bool rawAppended =
     text.substr(header.size(), 60).find("encoding=\"raw\"") != std::string::npos;
-  long long pieceCount = 0;
-  bool inCoordinates = false;
+  // Tuples of the arrays of each section of the current piece ("Points",
+  // "CellData", "Verts"...), and the bytes all arrays declare.
+  std::map<std::string, long long, std::less<>> tuplesOf;
+  std::string_view section;
+  double declared = 0;
   std::size_t tag = 0;
   while ((tag = header.find('<', tag)) != std::string_view::npos)
   {
@@ -1212,9 +1302,17 @@ void CheckXmlCounts(const std::string& file, int depth = 0)
     const std::size_t line = 1 + std::count(header.begin(), header.begin() + tag, '\n');
     tag = close;
     const std::string_view name = element.substr(0, element.find_first_of(" \t\r\n/"));
-    inCoordinates = name == "Coordinates" ? true : name == "/Coordinates" ? false : inCoordinates;
+    static const char* const sections[] = { "PointData", "CellData", "Points", "Verts", "Lines",
+      "Strips", "Polys", "Cells", "Coordinates", "FieldData" };
+    section = std::find(std::begin(sections), std::end(sections), name) != std::end(sections)
+      ? name
+      : section;
+    if (name == "Piece")
+    {
+      tuplesOf.clear();
+    }
     long long components = 1, tuples = -1;
-    std::string_view format, offset;
+    std::string_view format, offset, type, arrayName;
     // Attributes: name="value".
     for (std::size_t eq = 0; (eq = element.find("=\"", eq)) != std::string_view::npos; eq += 2)
     {
@@ -1234,6 +1332,8 @@ void CheckXmlCounts(const std::string& file, int depth = 0)
       };
       format = attribute == "format" ? value : format;
       offset = attribute == "offset" ? value : offset;
+      type = attribute == "type" ? value : type;
+      arrayName = attribute == "Name" ? value : arrayName;
       if (attribute.substr(0, 8) == "NumberOf" && attribute != "NumberOfPieces")
       {
         if (!ParseCount(value, count) || count > limit ||
@@ -1251,7 +1351,10 @@ void CheckXmlCounts(const std::string& file, int depth = 0)
         }
         else if (name == "Piece")
         {
-          pieceCount = std::max(pieceCount, count);
+          // NumberOfPoints, NumberOfCells, NumberOfVerts...
+          const std::string_view kind = attribute.substr(8);
+          tuplesOf[std::string(kind)] = count;
+          tuplesOf[kind == "Points" ? "PointData" : "CellData"] += count;
         }
       }
       else if ((attribute == "type" && (name == "DataArray" || name == "Array")) ||
@@ -1278,7 +1381,7 @@ void CheckXmlCounts(const std::string& file, int depth = 0)
       {
         std::vector<std::string_view> bounds;
         SplitLoose(value, bounds, 6);
-        long long product = 1;
+        long long product = 1, cells = 1;
         for (std::size_t k = 0; k + 1 < bounds.size(); k += 2)
         {
           long long lo = 0, hi = 0;
@@ -1292,8 +1395,13 @@ void CheckXmlCounts(const std::string& file, int depth = 0)
           {
             implausible();
           }
+          cells *= std::max(hi - lo, 1LL);
         }
-        pieceCount = name == "Piece" ? product : pieceCount;
+        if (name == "Piece")
+        {
+          tuplesOf["PointData"] = product;
+          tuplesOf["CellData"] = cells;
+        }
       }
       else if ((attribute == "file" || attribute == "Source") && depth < 8)
       {
@@ -1306,41 +1414,59 @@ void CheckXmlCounts(const std::string& file, int depth = 0)
         }
       }
     }
-    if (name == "DataArray" && !inCoordinates &&
-      components * (tuples >= 0 ? tuples : pieceCount) > limit)
+    const bool isArray = name == "DataArray" || name == "Array";
+    // The connectivity of cells is sized by offsets (CheckCellOffsets).
+    const auto sized = tuplesOf.find(section);
+    if (isArray && arrayName != "connectivity" && arrayName != "faces" &&
+      (tuples >= 0 || sized != tuplesOf.end()))
     {
-      Fail(file, line, "a data array is larger than the file (corrupt or truncated file?)");
+      declared += static_cast<double>(components) * (tuples >= 0 ? tuples : sized->second) *
+        BitsPerValue(type, format) / 8;
+      if (declared > static_cast<double>(limit))
+      {
+        Fail(file, line,
+          "data array " + Quote(arrayName) +
+            " makes the data larger than the file can hold (corrupt or truncated file?)");
+      }
     }
-    if (name == "DataArray" && compressed && (format == "binary" || format == "appended"))
+    if (isArray && (format == "binary" || format == "appended"))
     {
-      std::string chars;
+      std::string problem = "no data at offset " + Quote(offset);
       long long position = 0;
-      bool ok = true;
       if (format == "binary")
       {
-        const std::size_t start = header.find_first_not_of(" \t\r\n", close + 1);
-        chars = std::string(header.substr(std::min(start, header.size()), 4 * wordSize));
+        const std::size_t start =
+          std::min(header.find_first_not_of(" \t\r\n", close + 1), header.size());
+        const std::size_t end = std::min(header.find('<', start), header.size());
+        const auto read = [&](std::size_t n) { return std::string(header.substr(start, n)); };
+        problem = CheckBlockHeader(
+          read, static_cast<long long>(end - start), true, ratio > 1, wordSize, bigEndian, ratio);
       }
       else if (appended != std::string::npos && ParseCount(offset, position) &&
         position < size - static_cast<long long>(appended + 1))
       {
-        std::ifstream in(file, std::ios::binary);
-        in.seekg(static_cast<std::streamoff>(appended + 1 + position));
-        chars.resize(rawAppended ? 3 * wordSize : 4 * wordSize);
-        in.read(&chars[0], static_cast<std::streamsize>(chars.size()));
-        chars.resize(static_cast<std::size_t>(in.gcount()));
+        const long long at = static_cast<long long>(appended + 1) + position;
+        const auto read = [&](std::size_t n) {
+          std::ifstream in(file, std::ios::binary);
+          in.seekg(static_cast<std::streamoff>(at));
+          std::string bytes(n, '\0');
+          in.read(&bytes[0], static_cast<std::streamsize>(n));
+          bytes.resize(static_cast<std::size_t>(in.gcount()));
+          return bytes;
+        };
+        problem =
+          CheckBlockHeader(read, size - at, !rawAppended, ratio > 1, wordSize, bigEndian, ratio);
       }
-      else
+      if (!problem.empty())
       {
-        ok = false;
-      }
-      std::string bytes = chars;
-      ok = ok && ((format == "appended" && rawAppended) || DecodeBase64(chars, bytes));
-      if (!ok || !CompressionHeaderOk(bytes, wordSize, bigEndian, size, limit))
-      {
-        Fail(file, line, "corrupt compressed data array");
+        Fail(file, line,
+          "data array " + Quote(arrayName) + ": " + problem + " (corrupt or truncated file?)");
       }
     }
+  }
+  if (header.find("offsets\"") != std::string_view::npos)
+  {
+    CheckCellOffsets(file, limit);
   }
 }
 
@@ -1354,7 +1480,16 @@ public:
   static MessageCapture* New();
   vtkTypeMacro(MessageCapture, vtkOutputWindow);
   void DisplayText(const char*) override {}
-  void DisplayErrorText(const char* text) override { this->Keep(text); }
+  void DisplayErrorText(const char* text) override
+  {
+    this->Keep(text);
+    // VTK built without NDEBUG (Debian's is) aborts after this message when an
+    // array cannot be allocated; throw what its release builds throw instead.
+    if (text && std::strstr(text, "Unable to allocate "))
+    {
+      throw std::bad_alloc();
+    }
+  }
   void DisplayWarningText(const char* text) override { this->Keep(text); }
   void DisplayGenericWarningText(const char* text) override { this->Keep(text); }
   void DisplayDebugText(const char*) override {}
@@ -1393,6 +1528,127 @@ private:
   }
 };
 vtkStandardNewMacro(MessageCapture);
+
+// The largest of `count` values of a data array from value `start`; false if
+// VTK cannot read them (its reader reports that later).
+bool ReadLargest(vtkXMLDataParser* parser, vtkXMLDataElement* array, vtkTypeUInt64 start,
+  std::size_t count, double& largest)
+{
+  int type = 0;
+  vtkTypeInt64 offset = 0;
+  const char* format = array->GetAttribute("format");
+  if (!format || !array->GetWordTypeAttribute("type", type))
+  {
+    return false;
+  }
+  std::vector<unsigned char> buffer(count * vtkAbstractArray::GetDataTypeSize(type));
+  const std::size_t read = std::strcmp(format, "appended") == 0
+    ? (array->GetScalarAttribute("offset", offset)
+          ? parser->ReadAppendedData(offset, buffer.data(), start, count, type)
+          : 0)
+    : parser->ReadInlineData(
+        array, std::strcmp(format, "ascii") == 0, buffer.data(), start, count, type);
+  largest = 0;
+  switch (type)
+  {
+    vtkTemplateMacro(for (std::size_t i = 0; i < read; ++i) {
+      largest = std::max(largest, static_cast<double>(reinterpret_cast<VTK_TT*>(buffer.data())[i]));
+    });
+    default:
+      return false;
+  }
+  return read == count;
+}
+
+// VTK sizes the connectivity of a cell block by the last of its offsets (the
+// faces of polyhedra by the largest face offset), data the header checks do
+// not see: read them with VTK's own parser, which knows every encoding and
+// compressor, once CheckXmlCounts has checked the block headers it trusts.
+void CheckCellOffsets(const std::string& file, long long limit)
+{
+  vtksys::ifstream stream(file.c_str(), std::ios::in | std::ios::binary);
+  vtkNew<vtkXMLDataParser> parser;
+  parser->SetStream(&stream);
+  parser->SetIgnoreCharacterData(1); // inline data is read from the file when asked for
+  // Its messages are the reader's to report.
+  vtkSmartPointer<vtkOutputWindow> previous = vtkOutputWindow::GetInstance();
+  vtkNew<MessageCapture> capture;
+  vtkOutputWindow::SetInstance(capture);
+  const auto check = [&]() {
+    vtkXMLDataElement* root = parser->Parse() ? parser->GetRootElement() : nullptr;
+    const char* type = root ? root->GetAttribute("type") : nullptr;
+    vtkXMLDataElement* data = type ? root->FindNestedElementWithName(type) : nullptr;
+    const std::string compressor =
+      root && root->GetAttribute("compressor") ? root->GetAttribute("compressor") : "";
+    vtkSmartPointer<vtkDataCompressor> decompressor;
+    if (compressor == "vtkLZ4DataCompressor")
+    {
+      decompressor = vtkSmartPointer<vtkLZ4DataCompressor>::New();
+    }
+    else if (compressor == "vtkZLibDataCompressor")
+    {
+      decompressor = vtkSmartPointer<vtkZLibDataCompressor>::New();
+    }
+    else if (compressor == "vtkLZMADataCompressor")
+    {
+      decompressor = vtkSmartPointer<vtkLZMADataCompressor>::New();
+    }
+    if (!data || (!compressor.empty() && !decompressor))
+    {
+      return;
+    }
+    parser->SetCompressor(decompressor);
+    for (int p = 0, piece = 0; p < data->GetNumberOfNestedElements(); ++p)
+    {
+      vtkXMLDataElement* ePiece = data->GetNestedElement(p);
+      if (std::strcmp(ePiece->GetName(), "Piece") != 0)
+      {
+        continue;
+      }
+      for (int b = 0; b < ePiece->GetNumberOfNestedElements(); ++b)
+      {
+        vtkXMLDataElement* block = ePiece->GetNestedElement(b);
+        long long cells = 0; // NumberOfVerts, ..., NumberOfCells
+        if (!ePiece->GetScalarAttribute(
+              (std::string("NumberOf") + block->GetName()).c_str(), cells) ||
+          cells <= 0)
+        {
+          continue;
+        }
+        for (int a = 0; a < block->GetNumberOfNestedElements(); ++a)
+        {
+          vtkXMLDataElement* array = block->GetNestedElement(a);
+          const char* arrayName = array->GetAttribute("Name");
+          const bool faces = arrayName && std::strcmp(arrayName, "faceoffsets") == 0;
+          double largest = 0;
+          // Offsets increase (VTK refuses them otherwise): the last is the largest.
+          if ((faces || (arrayName && std::strcmp(arrayName, "offsets") == 0)) &&
+            ReadLargest(parser, array, faces ? 0 : cells - 1, faces ? cells : 1, largest) &&
+            largest > static_cast<double>(limit))
+          {
+            char count[32];
+            std::snprintf(count, sizeof(count), "%.15g", largest);
+            Fail(file, 0,
+              "piece " + std::to_string(piece) + ", " + block->GetName() + ": array '" + arrayName +
+                "' announces " + count +
+                " connectivity values, more than the file can hold (corrupt or truncated file?)");
+          }
+        }
+      }
+      ++piece;
+    }
+  };
+  try
+  {
+    check();
+  }
+  catch (...)
+  {
+    vtkOutputWindow::SetInstance(previous);
+    throw;
+  }
+  vtkOutputWindow::SetInstance(previous);
+}
 
 // Runs a VTK reader with a MessageCapture as the output window; fails with
 // "FILE: cannot read KIND file (first VTK message)" on any error or warning.

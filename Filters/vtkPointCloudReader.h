@@ -19,9 +19,12 @@
  * - `.vtk` (legacy VTK) and the VTK XML formats `.vtp .vtu .vts .vtr .vti .vtm
  *   .vthb .pvtp .pvtu .pvts .pvtr .pvti`: the points of the data set, or of
  *   every leaf of a composite data set, appended in order. Point data arrays are
- *   passed through (for a composite, the arrays all leaves have). The counts in
- *   these files are checked against the file size before VTK's readers see them,
- *   since those readers abort or hang on some corrupt files.
+ *   passed through (for a composite, the arrays all leaves have). The counts,
+ *   block headers and last cell offsets in these files (and in the files a
+ *   `.vtm` or `.pvt*` names) are checked against the file size, times the best
+ *   ratio of its compressor, before VTK's readers see them, since those readers
+ *   abort or hang on some corrupt files; an allocation VTK's reader still cannot
+ *   make fails the read (`FILE: out of memory`) instead of aborting.
  *
  * The output is a vtkPolyData with double-precision points and one VTK_VERTEX
  * cell per point. Text, OFF, OBJ and PLY files are parsed here (independently of

@@ -94,6 +94,40 @@ flowrecon_add_cli_test(ComplexOfComplex EXIT 1 STDERR_LINES 1
   STDERR "already a flow complex" FIXTURES_REQUIRED flowrecon_cli_vtm
   ARGS complex "${_w}/tetrahedron.vtm" -o again.vtm)
 
+# Corrupt VTK XML files: a last cell offset raised by 2^32 made VTK allocate
+# 32 GB and abort; one line naming the file instead. Copies of the complex
+# above, corrupted by CorruptXML.py.
+add_test(NAME cli.CorruptFilesSetup COMMAND "${FLOWRECON_TEST_PYTHON}"
+  "${CMAKE_CURRENT_LIST_DIR}/CorruptXML.py" "${_w}/tetrahedron.vtm" "${_w}/corrupt")
+set_tests_properties(cli.CorruptFilesSetup PROPERTIES
+  FIXTURES_SETUP flowrecon_cli_corrupt FIXTURES_REQUIRED flowrecon_cli_vtm)
+flowrecon_add_cli_test(CorruptCloud EXIT 1 STDERR_LINES 1
+  STDERR "^flowrecon: [^\n]*/corrupt/cloud\\.vtp: piece 0, Verts: array 'offsets' announces [0-9]+ connectivity values, more than the file can hold"
+  FIXTURES_REQUIRED flowrecon_cli_corrupt ARGS info "${_w}/corrupt/cloud.vtp")
+flowrecon_add_cli_test(CorruptComplexPiece EXIT 1 STDERR_LINES 1
+  STDERR "^flowrecon: [^\n]*/corrupt/tetrahedron/tetrahedron_2\\.vtu: piece 0, Cells: array 'offsets' announces [0-9]+ connectivity values"
+  FIXTURES_REQUIRED flowrecon_cli_corrupt
+  ARGS reconstruct "${_w}/corrupt/tetrahedron.vtm" -o "${_w}/corrupt.vtu")
+
+# A full disk is named as such (/dev/full fails every write with ENOSPC; the
+# .vtu and .csv outputs are links to it).
+if (EXISTS /dev/full)
+  add_test(NAME cli.FullDiskSetup COMMAND sh -c
+    "ln -sf /dev/full '${_w}/full.vtu' && ln -sf /dev/full '${_w}/full.csv'")
+  set_tests_properties(cli.FullDiskSetup PROPERTIES FIXTURES_SETUP flowrecon_cli_full)
+  flowrecon_add_cli_test(FullDiskProfile EXIT 1 STDERR_LINES 1
+    STDERR "^flowrecon: /dev/full: cannot write \\(no space left on device\\)\n$"
+    ARGS reconstruct "${_d}/tetrahedron.xyz" -o "${_w}/full_profile.vtu" --quiet --profile /dev/full)
+  flowrecon_add_cli_test(FullDiskVtu EXIT 1 STDERR_LINES 1
+    STDERR "^flowrecon: [^\n]*/full\\.vtu: cannot write \\(no space left on device\\)\n$"
+    FIXTURES_REQUIRED flowrecon_cli_full
+    ARGS reconstruct "${_d}/tetrahedron.xyz" -o "${_w}/full.vtu" --quiet)
+  flowrecon_add_cli_test(FullDiskCsv EXIT 1 STDERR_LINES 1
+    STDERR "^flowrecon: [^\n]*/full\\.csv: cannot write \\(no space left on device\\)\n$"
+    FIXTURES_REQUIRED flowrecon_cli_full
+    ARGS diagram "${_d}/tetrahedron.xyz" -o "${_w}/full.csv" --quiet)
+endif ()
+
 # Ctrl-C stops a long run cleanly (needs coreutils' timeout to send SIGINT).
 find_program(FLOWRECON_TIMEOUT_PROGRAM timeout)
 mark_as_advanced(FLOWRECON_TIMEOUT_PROGRAM)
@@ -102,3 +136,9 @@ if (FLOWRECON_TIMEOUT_PROGRAM)
     COMMAND sh "${CMAKE_CURRENT_LIST_DIR}/RunInterrupt.sh" "$<TARGET_FILE:flowrecon>" "${_w}")
   set_tests_properties(cli.Interrupt PROPERTIES TIMEOUT 120)
 endif ()
+
+# Under an address-space limit a run that would not fit stops with the memory
+# guard's one line (estimate, what is available, what to do), not an abort.
+add_test(NAME cli.MemoryGuard
+  COMMAND sh "${CMAKE_CURRENT_LIST_DIR}/RunUnderLimit.sh" "$<TARGET_FILE:flowrecon>" "${_w}")
+set_tests_properties(cli.MemoryGuard PROPERTIES TIMEOUT 120)

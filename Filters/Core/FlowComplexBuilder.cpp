@@ -4,6 +4,7 @@
 #include "CriticalSimplices.h"
 #include "HugePages.h"
 #include "InputPreparation.h"
+#include "MemoryGuard.h"
 #include "ParallelSlices.h"
 #include "StableManifold.h"
 #include "StableManifoldGeometry.h"
@@ -121,6 +122,11 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
   this->Report(0.0, "Delaunay triangulation");
   // Held by pointer so that it can be freed before the nodes and arcs are built:
   // the triangulation is the largest structure, and peak memory matters.
+  // Measured peaks are 1.4-1.5 KB per point on volume samples (more on
+  // surfaces, checked again below as the arcs come in).
+  const std::string cloud = std::to_string(coords.size()) + " points";
+  RequireMemory(1500.0 * static_cast<double>(coords.size()), "the flow complex of " + cloud,
+    "use fewer points (a subsample) or a machine with more memory");
   auto tri = std::make_unique<const Triangulation>(coords);
   if (tri->Dimension() < 3)
   {
@@ -235,7 +241,13 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
       const double perFacet = static_cast<double>(arcs12) / static_cast<double>(last);
       const std::size_t estimate = 2 * static_cast<std::size_t>(nEdges) +
         static_cast<std::size_t>(1.05 * perFacet * static_cast<double>(nFacets)) + 2 * cs.Facets.size();
-      ReserveHuge(fc.Arcs, std::max(estimate, fc.Arcs.capacity() + fc.Arcs.capacity() / 2));
+      const std::size_t grown = std::max(estimate, fc.Arcs.capacity() + fc.Arcs.capacity() / 2);
+      // Surface samples with tubes have ~n^1.5 arcs: say so before the kernel
+      // kills the process (the copy holds the old and the new list at once).
+      RequireMemory(static_cast<double>(sizeof(Arc)) * static_cast<double>(grown + fc.Arcs.size()),
+        "the Hasse diagram of " + cloud + " (about " + std::to_string(estimate) + " arcs)",
+        "use fewer points (a subsample) or a machine with more memory");
+      ReserveHuge(fc.Arcs, grown);
     }
     for (std::size_t i = begin; i < last; ++i)
     {
@@ -255,6 +267,14 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
       }
       if (this->Options.StableManifolds)
       {
+        if (fc.Triangles.size() == fc.Triangles.capacity() && !fc.Triangles.empty())
+        {
+          // All the geometry was asked for: refuse before it no longer fits.
+          const double perFacet = static_cast<double>(fc.Triangles.size()) / static_cast<double>(i);
+          RequireMemory(3 * 48 * perFacet * static_cast<double>(nFacets),
+            "drawing every stable manifold of " + cloud,
+            "draw fewer cells (MaximumStableManifoldCells, flowrecon --max-cells)");
+        }
         triangleBegin[i] = static_cast<Id>(fc.Triangles.size());
         const Id offset = static_cast<Id>(fc.Points.size());
         fc.Points.insert(fc.Points.end(), patch.Constructed.begin(), patch.Constructed.end());

@@ -1,6 +1,7 @@
 #include "Simplification.h"
 
 #include "HasseDiagram.h"
+#include "MemoryGuard.h"
 
 #include <algorithm>
 #include <cmath>
@@ -226,6 +227,11 @@ SimplificationResult Simplify(const std::vector<Node>& nodes, const std::vector<
   {
     throw InputError("persistence threshold is not a number");
   }
+  // Two 16-byte half-arcs per arc and two lists per node, plus the queue and
+  // the result's copy of the arcs.
+  RequireMemory(56.0 * static_cast<double>(arcs.size()) + 80.0 * static_cast<double>(nodes.size()),
+    "simplifying a Hasse diagram of " + std::to_string(arcs.size()) + " arcs",
+    "use t_p 0 (no simplification) or fewer points");
   Simplifier simplifier(nodes, arcs);
   return simplifier.Run(persistenceThreshold, progress);
 }

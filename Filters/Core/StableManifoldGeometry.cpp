@@ -309,7 +309,8 @@ void DrawStableManifolds(const std::vector<Point3>& points, const BuildOptions& 
     const double perFacet = static_cast<double>(walked.size()) / static_cast<double>(last);
     RequireMemory(BytesPerCell * perFacet * static_cast<double>(facets.size() - last) *
         (cones.empty() ? 1.0 : 2.0),
-      "drawing the stable manifolds of " + std::to_string(patches.size() + cones.size()) + " nodes",
+      "drawing the stable manifolds of " + std::to_string(patches.size() + cones.size()) +
+        " nodes of a " + std::to_string(points.size()) + "-point cloud",
       advice);
   }
   fc.Report.ExactFallbacks += fallbacks;

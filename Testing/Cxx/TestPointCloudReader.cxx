@@ -10,6 +10,8 @@
 #include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkExecutive.h"
+#include "vtkIdList.h"
+#include "vtkIdTypeArray.h"
 #include "vtkImageData.h"
 #include "vtkLogger.h"
 #include "vtkMultiBlockDataSet.h"
@@ -21,9 +23,11 @@
 #include "vtkPolyData.h"
 #include "vtkPolyDataWriter.h"
 #include "vtkSmartPointer.h"
+#include "vtkUnstructuredGrid.h"
 #include "vtkXMLImageDataWriter.h"
 #include "vtkXMLMultiBlockDataWriter.h"
 #include "vtkXMLPolyDataWriter.h"
+#include "vtkXMLUnstructuredGridWriter.h"
 
 #include <algorithm>
 #include <array>
@@ -35,6 +39,11 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+#ifdef __linux__
+#include <sys/resource.h> // setrlimit
+#include <unistd.h>       // sysconf
+#endif
 
 namespace
 {
@@ -430,6 +439,196 @@ void TestVtkWrittenFiles()
   Corrupt("written.vtk", "corrupt_count.vtk", "POLYGONS 2 3", "POLYGONS 2 -3", "invalid count");
 }
 
+std::string Slurp(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+int LineOf(const std::string& text, std::size_t at)
+{
+  return 1 + static_cast<int>(std::count(text.begin(), text.begin() + at, '\n'));
+}
+
+// Where the data of array `name` starts: its appended bytes or its inline text.
+std::size_t DataOf(const std::string& text, const std::string& name)
+{
+  const std::size_t tag = text.find("Name=\"" + name + "\"");
+  const std::size_t close = text.find('>', tag);
+  const std::size_t offset = text.find("offset=\"", tag);
+  if (offset < close)
+  {
+    return text.find('_', text.find("<AppendedData")) + 1 + std::stoull(text.substr(offset + 8));
+  }
+  return text.find_first_not_of(" \n", close + 1);
+}
+
+std::string WriteXml(vtkXMLWriter* writer, vtkDataObject* data, const std::string& name, int mode,
+  bool encode, int compressor)
+{
+  writer->SetInputData(data);
+  writer->SetDataMode(mode);
+  writer->SetEncodeAppendedData(encode);
+  writer->SetCompressorType(compressor);
+  writer->SetFileName(PathOf(name).c_str());
+  CHECK(writer->Write() == 1);
+  return PathOf(name);
+}
+
+// Four points and four vertices whose offsets end at `last` (4 in a good file).
+vtkSmartPointer<vtkPolyData> Vertices(vtkIdType last)
+{
+  auto cloud = Cloud({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } }, "Temperature", 0);
+  vtkNew<vtkIdTypeArray> offsets, connectivity;
+  for (vtkIdType i = 0; i < 4; ++i)
+  {
+    offsets->InsertNextValue(i);
+    connectivity->InsertNextValue(i);
+  }
+  offsets->InsertNextValue(last);
+  vtkNew<vtkCellArray> vertices;
+  vertices->SetData(offsets, connectivity);
+  cloud->SetPolys(nullptr);
+  cloud->SetVerts(vertices);
+  return cloud;
+}
+
+// Sizes VTK's XML readers allocate without checking them (VTK 9.2 aborts the
+// process when that fails): declared counts, block headers of binary arrays
+// and the last cell offset, which sizes the connectivity. Each is refused with
+// one line before VTK reads the file.
+void TestCorruptSizes()
+{
+  // The last offset, in every encoding and with every compressor.
+  struct Variant
+  {
+    const char* Name;
+    int Mode;
+    bool Encode;
+    int Compressor;
+  };
+  for (const Variant& v : { Variant{ "offsets_raw.vtp", vtkXMLWriter::Appended, false, 0 },
+         Variant{ "offsets_lz4.vtp", vtkXMLWriter::Appended, false, vtkXMLWriterBase::LZ4 },
+         Variant{ "offsets_zlib.vtp", vtkXMLWriter::Appended, false, vtkXMLWriterBase::ZLIB },
+         Variant{ "offsets_lzma.vtp", vtkXMLWriter::Appended, false, vtkXMLWriterBase::LZMA },
+         Variant{ "offsets_base64.vtp", vtkXMLWriter::Appended, true, vtkXMLWriterBase::LZ4 },
+         Variant{ "offsets_inline.vtp", vtkXMLWriter::Binary, true, vtkXMLWriterBase::NONE },
+         Variant{ "offsets_inline_lz4.vtp", vtkXMLWriter::Binary, true, vtkXMLWriterBase::LZ4 },
+         Variant{ "offsets_ascii.vtp", vtkXMLWriter::Ascii, true, vtkXMLWriterBase::NONE } })
+  {
+    vtkNew<vtkXMLPolyDataWriter> writer;
+    const std::string good =
+      WriteXml(writer, Vertices(4), std::string("good_") + v.Name, v.Mode, v.Encode, v.Compressor);
+    ExpectPoints(good, { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } });
+    ExpectError(WriteXml(writer, Vertices(5000000000), v.Name, v.Mode, v.Encode, v.Compressor), 0,
+      "piece 0, Verts: array 'offsets' announces 5000000000 connectivity values, more than the "
+      "file can hold");
+  }
+
+  // The same in a piece of a multiblock file: the message names the piece.
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  blocks->SetBlock(0, Vertices(5000000000));
+  vtkNew<vtkXMLMultiBlockDataWriter> vtm;
+  const std::string multi =
+    WriteXml(vtm, blocks, "offsets.vtm", vtkXMLWriter::Appended, false, vtkXMLWriterBase::LZ4);
+  const Result r = Read(multi);
+  const std::string piece = PathOf("offsets/offsets_0.vtp");
+  CHECK(!r.Ok && r.Message.rfind(piece + ": piece 0, Verts: array 'offsets' announces", 0) == 0);
+
+  // Polyhedra: VTK sizes their faces by the largest face offset.
+  vtkNew<vtkUnstructuredGrid> grid;
+  vtkNew<vtkPoints> corners;
+  for (const auto& p : Points{ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } })
+  {
+    corners->InsertNextPoint(p.data());
+  }
+  grid->SetPoints(corners);
+  vtkNew<vtkIdList> faces; // 4 faces of 3 points
+  for (const vtkIdType id : { 4, 3, 0, 2, 1, 3, 0, 1, 3, 3, 0, 3, 2, 3, 1, 2, 3 })
+  {
+    faces->InsertNextId(id);
+  }
+  grid->InsertNextCell(VTK_POLYHEDRON, faces);
+  vtkNew<vtkXMLUnstructuredGridWriter> vtu;
+  std::string text = Slurp(WriteXml(vtu, grid, "polyhedron.vtu", vtkXMLWriter::Appended, false, 0));
+  const std::size_t wordSize = text.find("header_type=\"UInt64\"") != std::string::npos ? 8 : 4;
+  const std::int64_t huge = 5000000000;
+  text.replace(DataOf(text, "faceoffsets") + wordSize, 8, reinterpret_cast<const char*>(&huge), 8);
+  ExpectError(Write("faceoffsets.vtu", text), 0, "array 'faceoffsets' announces 5000000000");
+
+  // Block headers announcing more bytes than the file holds: raw, base64, LZ4.
+  // (A new writer each time: one that wrote raw appended data writes raw inline data.)
+  text = Slurp(WriteXml(
+    vtkNew<vtkXMLPolyDataWriter>(), Vertices(4), "plain.vtp", vtkXMLWriter::Appended, false, 0));
+  std::size_t tag = text.find("Name=\"Points\"");
+  text.replace(DataOf(text, "Points"), wordSize, std::string(wordSize, '\xff'));
+  ExpectError(Write("header_raw.vtp", text), LineOf(text, tag),
+    "data array 'Points': its header announces " +
+      std::string(wordSize == 8 ? "18446744073709551615" : "4294967295") +
+      " bytes, more than the file holds");
+  text = Slurp(WriteXml(
+    vtkNew<vtkXMLPolyDataWriter>(), Vertices(4), "inline.vtp", vtkXMLWriter::Binary, true, 0));
+  tag = text.find("Name=\"Points\"");
+  text.replace(
+    DataOf(text, "Points"), wordSize == 8 ? 12 : 8, wordSize == 8 ? "//////////8A" : "/////wAA");
+  ExpectError(Write("header_inline.vtp", text), LineOf(text, tag),
+    "data array 'Points': its header announces");
+  text = Slurp(WriteXml(vtkNew<vtkXMLPolyDataWriter>(), Vertices(4), "lz4.vtp",
+    vtkXMLWriter::Appended, false, vtkXMLWriterBase::LZ4));
+  tag = text.find("Name=\"Points\"");
+  // One block of 4000000 bytes (within the old bound of 2000 times the file size).
+  for (std::size_t w = 1; w < 3; ++w)
+  {
+    const std::uint64_t bytes = 4000000;
+    text.replace(DataOf(text, "Points") + w * wordSize, wordSize,
+      reinterpret_cast<const char*>(&bytes), wordSize); // little-endian
+  }
+  ExpectError(Write("header_lz4.vtp", text), LineOf(text, tag),
+    "data array 'Points': its compression header announces 4000000 bytes from");
+
+  // A count within 2000 times the file size (the old bound for every
+  // compressor), for more bytes than LZ4 can expand the file to.
+  text = Slurp(PathOf("lz4.vtp"));
+  text.replace(text.find("NumberOfPoints=\"4\""), 18,
+    "NumberOfPoints=\"" + std::to_string(text.size() * 255 / 4) + "\"");
+  ExpectError(Write("count_lz4.vtp", text), LineOf(text, text.find("Name=\"Temperature\"")),
+    "data array 'Temperature' makes the data larger than the file can hold");
+
+#ifdef __linux__
+  // A count the file could hold, for more memory than there is: VTK's failed
+  // allocation becomes a one-line error instead of aborting the process.
+  Points many(50000);
+  for (std::size_t i = 0; i < many.size(); ++i)
+  {
+    many[i] = { std::sin(1.0 + i), std::cos(2.0 * i), std::sin(3.0 * i + 0.5) }; // incompressible
+  }
+  auto big = Cloud(many, "Temperature", 0);
+  big->SetPolys(nullptr);
+  big->GetPointData()->Initialize();
+  text = Slurp(WriteXml(vtkNew<vtkXMLPolyDataWriter>(), big, "memory.vtp", vtkXMLWriter::Appended,
+    false, vtkXMLWriterBase::LZ4));
+  // 24 bytes a point: 100 times the file size, well within 255 times.
+  const std::string points = std::to_string(text.size() * 100 / 24);
+  text.replace(text.find("NumberOfPoints=\"50000\""), 22, "NumberOfPoints=\"" + points + "\"");
+  const std::string memory = Write("memory_big.vtp", text);
+  std::ifstream statm("/proc/self/statm");
+  long long pages = 0;
+  statm >> pages;
+  rlimit old{};
+  getrlimit(RLIMIT_AS, &old);
+  rlimit tight = old;
+  tight.rlim_cur = static_cast<rlim_t>(pages * sysconf(_SC_PAGESIZE) + (64LL << 20));
+  CHECK(setrlimit(RLIMIT_AS, &tight) == 0);
+  const Result oom = Read(memory);
+  setrlimit(RLIMIT_AS, &old);
+  CHECK(!oom.Ok && oom.Message == memory + ": out of memory");
+  if (oom.Ok || oom.Message != memory + ": out of memory")
+  {
+    std::cout << "  " << memory << ": " << oom.Message << "\n";
+  }
+#endif
+}
+
 } // namespace
 
 int main(int argc, char* argv[])
@@ -453,5 +652,6 @@ int main(int argc, char* argv[])
   TestTextFormats();
   TestBadInput();
   TestVtkWrittenFiles();
+  TestCorruptSizes();
   return check::Finish("TestPointCloudReader");
 }

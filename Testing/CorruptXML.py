@@ -1,0 +1,46 @@
+"""Copies a flow complex written by `flowrecon complex` and corrupts copies of it.
+
+Usage: CorruptXML.py COMPLEX.vtm OUTDIR
+
+Writes OUTDIR/COMPLEX.vtm (with its folder), whose StableManifolds piece has
+its last cell offset raised by 2^32, and OUTDIR/cloud.vtp, a copy of the
+CriticalPoints piece with its last vertex offset raised the same way. VTK 9.2's
+reader sizes the connectivity by that offset: 32 GB. The pieces are LZ4
+compressed, but an LZ4 block always ends with 5 literal bytes, so the high
+bytes of the last offset can be edited in place.
+"""
+import os
+import re
+import shutil
+import struct
+import sys
+
+
+def raise_last_offset(path, section):
+    data = bytearray(open(path, "rb").read())
+    appended = data.index(b"<AppendedData")
+    header = bytes(data[:appended])
+    match = re.search(
+        rb"<" + section + rb">.*?Name=\"offsets\"[^>]*offset=\"\s*(\d+)", header, re.S)
+    start = data.index(b"_", appended) + 1 + int(match.group(1))
+    if b'header_type="UInt32"' not in header or b"vtkLZ4DataCompressor" not in header:
+        sys.exit(path + ": expected UInt32 headers and LZ4 compression")
+    blocks = struct.unpack_from("<I", data, start)[0]
+    sizes = struct.unpack_from("<%dI" % blocks, data, start + 12)
+    end = start + 12 + 4 * blocks + sum(sizes)
+    if data[end - 4:end] != b"\0\0\0\0":
+        sys.exit(path + ": the last offset is not below 2^32")
+    data[end - 4] = 1  # byte 4 of the little-endian Int64
+    open(path, "wb").write(data)
+
+
+source, outdir = sys.argv[1], sys.argv[2]
+name = os.path.splitext(os.path.basename(source))[0]
+shutil.rmtree(outdir, ignore_errors=True)
+os.makedirs(outdir)
+shutil.copy(source, outdir)
+shutil.copytree(os.path.join(os.path.dirname(source), name), os.path.join(outdir, name))
+raise_last_offset(os.path.join(outdir, name, name + "_2.vtu"), b"Cells")
+cloud = os.path.join(outdir, "cloud.vtp")
+shutil.copy(os.path.join(outdir, name, name + "_0.vtp"), cloud)
+raise_last_offset(cloud, b"Verts")
