@@ -586,6 +586,9 @@ vtkSmartPointer<vtkMultiBlockDataSet> ComputeFlowComplex(
 // ---------------------------------------------------------------------------
 // Commands.
 
+template <class Writer>
+void WriteXML(vtkDataObject* data, const std::string& output);
+
 int RunComplex(const Arguments& args)
 {
   const std::string& input = args.Inputs[0];
@@ -612,26 +615,7 @@ int RunComplex(const Arguments& args)
   const FlowComplexOptions options = CommonOptions(args, "complex");
   vtkSmartPointer<vtkMultiBlockDataSet> complex = ComputeFlowComplex(input, options);
 
-  vtkNew<vtkXMLMultiBlockDataWriter> writer;
-  writer->SetFileName(output.c_str());
-  writer->SetInputData(complex);
-  writer->SetDataModeToAppended();
-  writer->EncodeAppendedDataOff(); // raw binary
-  writer->SetCompressorTypeToLZ4(); // several times faster than zlib on large complexes
-  vtkNew<ProgressLine> abortOnly;  // forwards Ctrl-C, draws nothing
-  writer->AddObserver(vtkCommand::ProgressEvent, abortOnly);
-  Messages->FirstError.clear();
-  const int written = writer->Write();
-  if (InterruptRequested)
-  {
-    std::filesystem::remove(output, error); // no valid-looking partial result
-    throw Interrupted();
-  }
-  if (!written || writer->GetErrorCode() != 0)
-  {
-    throw Failure(output + ": cannot write (" +
-      (Messages->FirstError.empty() ? std::string("unknown error") : Messages->FirstError) + ")");
-  }
+  WriteXML<vtkXMLMultiBlockDataWriter>(complex, output);
   if (!options.Quiet)
   {
     vtkFieldData* fd = CriticalPointsBlock(complex)->GetFieldData();
