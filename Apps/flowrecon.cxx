@@ -57,6 +57,7 @@
 #include <atomic>
 #include <cctype>
 #include <charconv>
+#include <chrono>
 #include <cerrno>
 #include <cmath>
 #include <fstream>
@@ -339,7 +340,8 @@ const std::vector<Command>& Commands()
         { "--tp", nullptr, "P", "persistence threshold t_p, 0 for none (1.1)" },
         { "--profile", nullptr, "P.csv", "write the profile of the t_r = inf run as CSV" },
         { "--jumps", nullptr, "K", "print the K largest jumps of the profile (tracking back)" },
-        ThreadsOption, QuietOption },
+        { "--timings", nullptr, nullptr, "print the seconds of each phase" }, ThreadsOption,
+        QuietOption },
       RunReconstruct },
     { "diagram", "write the persistence diagram of the flow complex",
       "Compute the flow complex of INPUT (or read a .vtm written by 'complex') and\n"
@@ -831,9 +833,31 @@ void CloseText(std::ofstream& out, const std::string& path)
 // in the core's compact form (a VTK copy of its Hasse diagram would be most of
 // the memory), and only the cells written are drawn. Fills `grid` and `profile`
 // as vtkFlowReconstruction does (the tests compare the two paths) and `nodes`.
+using PhaseTimes = std::vector<std::pair<std::string, double>>;
+
+// Seconds since the previous call, appended to `times` under `phase`.
+class PhaseClock
+{
+public:
+  explicit PhaseClock(PhaseTimes& times)
+    : Times(times)
+  {
+  }
+  void operator()(const char* phase)
+  {
+    const auto now = std::chrono::steady_clock::now();
+    this->Times.emplace_back(phase, std::chrono::duration<double>(now - this->Last).count());
+    this->Last = now;
+  }
+
+private:
+  PhaseTimes& Times;
+  std::chrono::steady_clock::time_point Last = std::chrono::steady_clock::now();
+};
+
 void ReconstructCloud(const std::string& input, double tp, double trmax,
   const FlowComplexOptions& options, vtkUnstructuredGrid* grid, vtkTable* profile,
-  std::vector<flowrecon::Node>& nodes)
+  std::vector<flowrecon::Node>& nodes, PhaseClock& clock)
 {
   vtkNew<vtkPointCloudReader> reader;
   reader->SetFileName(input.c_str());
@@ -848,6 +872,7 @@ void ReconstructCloud(const std::string& input, double tp, double trmax,
   {
     throw Failure(input + ": " + error);
   }
+  clock("reading");
   vtkNew<ProgressLine> line;
   line->Label = options.Label;
   line->Show = !options.Quiet && isatty(2);
@@ -865,6 +890,7 @@ void ReconstructCloud(const std::string& input, double tp, double trmax,
     build.StableManifolds = false;
     build.UnstableManifolds = false;
     flowrecon::FlowComplex fc = flowrecon::BuildFlowComplex(samples, build, stage(0, 0.5));
+    clock("flow complex");
     flowrecon::SimplificationResult s;
     const bool simplify = tp >= 1; // below 1 nothing is cancelled
     if (simplify)
@@ -873,21 +899,25 @@ void ReconstructCloud(const std::string& input, double tp, double trmax,
       fc.Arcs = std::move(s.Arcs); // the reconstruction grows on the simplified diagram
       s.Arcs = {};
     }
+    clock("simplification");
     const std::vector<bool> survives = simplify ? s.Survives : std::vector<bool>(fc.Nodes.size(), true);
     const std::vector<flowrecon::Id> init = flowrecon::InitializationEdges(
       fc.Nodes, flowrecon::NearestNeighboursFromDiagram(fc.Nodes, fc.Arcs));
     const flowrecon::ReconstructionResult run =
       flowrecon::Reconstruct(fc.Nodes, fc.Arcs, survives, init, HUGE_VAL, stage(0.6, 0.7));
     const std::vector<flowrecon::Id> carriers = flowrecon::CellCarriers(run, simplify ? &s : nullptr);
+    clock("reconstruction queue");
     flowrecon::DrawStableManifolds(samples, build,
       flowrecon::NodesToDraw(fc.Nodes, carriers, run, trmax), fc, stage(0.7, 0.95),
       "lower --tr (or --tr-max)");
+    clock("drawing");
     progress(0.95, "output");
     vtkNew<vtkPolyData> arrows;
     flowrecon::ReconstructionToVTK(fc, carriers, run, trmax,
       flowrecon::CellsByNode(fc.TriangleNode, fc.Nodes.size()),
       flowrecon::CellsByNode(fc.TetrahedronNode, fc.Nodes.size()), grid, profile, arrows);
     nodes = std::move(fc.Nodes);
+    clock("VTK output");
   }
   catch (const flowrecon::Aborted&)
   {
@@ -960,11 +990,13 @@ int RunReconstruct(const Arguments& args)
   vtkSmartPointer<vtkUnstructuredGrid> grid;
   vtkSmartPointer<vtkTable> profile;
   std::vector<flowrecon::Node> nodes; // for --jumps
+  PhaseTimes times;
+  PhaseClock clock(times);
   if (!complex)
   {
     grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
     profile = vtkSmartPointer<vtkTable>::New();
-    ReconstructCloud(input, tp, trmax, options, grid, profile, nodes);
+    ReconstructCloud(input, tp, trmax, options, grid, profile, nodes, clock);
   }
   else
   {
@@ -990,6 +1022,7 @@ int RunReconstruct(const Arguments& args)
     RunFilter(reconstruction, input, options, "reconstruction");
     grid = vtkUnstructuredGrid::SafeDownCast(reconstruction->GetOutputDataObject(0));
     profile = vtkTable::SafeDownCast(reconstruction->GetOutputDataObject(1));
+    clock("flow complex file, simplification, reconstruction");
     std::string error;
     flowrecon::FlowComplex stored;
     if (jumps > 0 && flowrecon::FromMultiBlock(simplified, stored, error))
@@ -998,6 +1031,17 @@ int RunReconstruct(const Arguments& args)
     }
   }
   WriteXML<vtkXMLUnstructuredGridWriter>(grid, output);
+  clock("writing");
+  if (args.Has("--timings"))
+  {
+    std::cout << "timings (s):";
+    for (const auto& phase : times)
+    {
+      std::cout << " " << phase.first << " " << std::fixed << std::setprecision(3)
+                << phase.second << ";";
+    }
+    std::cout << std::defaultfloat << "\n";
+  }
 
   const char* columns[5] = { "Step", "NodeId", "Index", "Priority", "Threshold" };
   vtkDataArray* column[5];
@@ -1151,56 +1195,37 @@ int RunDiagram(const Arguments& args)
         throw Failure(input + ": " + error);
       }
     }
-    // The progress line of the filters ("[diagram] 42%  phase"), and Ctrl-C.
-    const bool show = !options.Quiet && isatty(2);
-    std::string last;
-    flowrecon::Progress progress;
-    progress.Report = [&](double fraction, const char* phase) {
-      if (!show)
-      {
-        return;
-      }
-      std::string line = "[" + options.Label + "] " +
-        std::to_string(static_cast<int>(100 * fraction)) + "%  " + (phase ? phase : "");
-      line = line.substr(0, 79);
-      if (line != last)
-      {
-        const std::size_t width = std::max(line.size(), last.size());
-        std::fprintf(stderr, "\r%-*s", static_cast<int>(width), line.c_str());
-        std::fflush(stderr);
-        last = line;
-      }
-    };
-    progress.ShouldAbort = []() { return InterruptRequested.load(); };
-    auto finishLine = [&]() {
-      if (!last.empty())
-      {
-        std::fputc('\n', stderr);
-      }
-    };
+    vtkNew<ProgressLine> line;
+    line->Label = options.Label;
+    line->Show = !options.Quiet && isatty(2);
     flowrecon::BuildOptions build;
     build.StableManifolds = false;
     build.UnstableManifolds = false;
     try
     {
-      fc = flowrecon::BuildFlowComplex(samples, build, progress);
+      fc = flowrecon::BuildFlowComplex(samples, build, line->Core());
     }
     catch (const flowrecon::InputError& e)
     {
-      finishLine();
+      line->Finish();
       throw Failure(input + ": " + e.what());
     }
     catch (const flowrecon::Aborted&)
     {
-      finishLine();
+      line->Finish();
       throw Interrupted();
+    }
+    catch (const std::bad_alloc&)
+    {
+      line->Finish();
+      throw;
     }
     catch (const std::exception& e)
     {
-      finishLine();
+      line->Finish();
       throw Failure(input + ": flow complex construction failed: " + e.what());
     }
-    finishLine();
+    line->Finish();
     ThrowIfInterrupted();
   }
   std::vector<flowrecon::PersistencePair> pairs;

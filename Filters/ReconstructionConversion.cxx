@@ -14,6 +14,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkTable.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
@@ -53,6 +54,15 @@ struct InsertionArrays
   }
 };
 
+/// A named array of `n` values, to be filled by index.
+template <class A>
+vtkSmartPointer<A> Sized(const char* name, vtkIdType n)
+{
+  auto a = NamedArray<A>(name);
+  a->SetNumberOfValues(n);
+  return a;
+}
+
 } // namespace
 
 CellsByNode::CellsByNode(const std::vector<Id>& cellNode, std::size_t nodes)
@@ -90,94 +100,108 @@ void ReconstructionToVTK(const FlowComplex& fc, const std::vector<Id>& carriers,
     }
   }
   std::sort(selected.begin(), selected.end());
+  // Sizes first: VTK aborts the process when an array cannot be allocated, so
+  // check that they fit, and fill preallocated arrays (millions of cells).
+  vtkIdType cells = 0, corners = 0;
+  for (const auto& entry : selected)
   {
-    // VTK aborts the process when an array cannot grow: check first. About 110
-    // bytes a cell and 40 a point, twice for the arrays' growth by doubling.
-    double cells = static_cast<double>(selected.size());
-    for (const auto& entry : selected)
-    {
-      const Id node = entry.second;
-      cells += static_cast<double>(triangles.Offsets[node + 1] - triangles.Offsets[node] +
-        tetrahedra.Offsets[node + 1] - tetrahedra.Offsets[node]);
-    }
-    RequireMemory(2 * (110 * cells + 40 * static_cast<double>(fc.Points.size())),
-      "the VTK output of " + std::to_string(static_cast<long long>(cells)) + " cells",
-      "lower the reconstruction threshold (or MaximumThreshold)");
+    const Id node = entry.second;
+    const int own = fc.Nodes[node].Index <= 1 ? 1 : 0; // vertex or edge
+    const Id nt = triangles.Offsets[node + 1] - triangles.Offsets[node];
+    const Id nq = tetrahedra.Offsets[node + 1] - tetrahedra.Offsets[node];
+    cells += own + nt + nq;
+    corners += own * (fc.Nodes[node].Index + 1) + 3 * nt + 4 * nq;
   }
+  RequireMemory(90.0 * static_cast<double>(cells) + 8.0 * static_cast<double>(corners) +
+      48.0 * static_cast<double>(fc.Points.size()),
+    "the VTK output of " + std::to_string(cells) + " cells",
+    "lower the reconstruction threshold (or MaximumThreshold)");
   const std::vector<int> multiplicity =
     flowrecon::EdgeMultiplicities(fc.Nodes, fc.Arcs, run, t);
 
   // Port 0: the cells, over the points they use (samples keep their input id).
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  auto original = NamedArray<vtkIdTypeArray>("vtkOriginalPointIds");
+  auto offsets = vtkSmartPointer<vtkIdTypeArray>::New();
+  auto connectivity = vtkSmartPointer<vtkIdTypeArray>::New();
+  auto types = vtkSmartPointer<vtkUnsignedCharArray>::New();
+  offsets->SetNumberOfValues(cells + 1);
+  connectivity->SetNumberOfValues(corners);
+  types->SetNumberOfValues(cells);
+  auto step = Sized<vtkIdTypeArray>("Step", cells);
+  auto nodeId = Sized<vtkIdTypeArray>("NodeId", cells);
+  auto priority = Sized<vtkDoubleArray>("Priority", cells);
+  auto extension = Sized<vtkIntArray>("Extension", cells);
+  auto sponsor = Sized<vtkIdTypeArray>("Sponsor", cells);
+  auto index = Sized<vtkIntArray>("Index", cells);
+  auto value = Sized<vtkDoubleArray>("CriticalValue", cells);
+  auto threshold = Sized<vtkDoubleArray>("Threshold", cells);
+  auto owner = Sized<vtkIdTypeArray>("Owner", cells);
+  auto mult = Sized<vtkIntArray>("Multiplicity", cells);
   std::vector<vtkIdType> pointOf(fc.Points.size(), -1);
-  auto point = [&](Id p) {
-    if (pointOf[p] < 0)
-    {
-      pointOf[p] = points->InsertNextPoint(fc.Points[p].data());
-      original->InsertNextValue(p < fc.NumberOfInputPoints ? static_cast<vtkIdType>(p) : -1);
-    }
-    return pointOf[p];
-  };
-  grid->Initialize();
-  InsertionArrays cellInsertion;
-  auto index = NamedArray<vtkIntArray>("Index");
-  auto value = NamedArray<vtkDoubleArray>("CriticalValue");
-  auto threshold = NamedArray<vtkDoubleArray>("Threshold");
-  auto owner = NamedArray<vtkIdTypeArray>("Owner");
-  auto mult = NamedArray<vtkIntArray>("Multiplicity");
-  grid->AllocateEstimate(static_cast<vtkIdType>(selected.size()), 3);
-  auto add = [&](int type, int n, const vtkIdType* ids, Id node) {
+  std::vector<Id> used; // fc point of each output point
+  vtkIdType c = 0, k = 0;
+  auto add = [&](int type, int n, const Id* ids, Id node) {
     const Id carrier = carriers[node];
     const flowrecon::Insertion& in = steps[carrier];
-    vtkIdType local[4];
-    for (int k = 0; k < n; ++k)
+    offsets->SetValue(c, k);
+    for (int j = 0; j < n; ++j)
     {
-      local[k] = point(ids[k]);
+      if (pointOf[ids[j]] < 0)
+      {
+        pointOf[ids[j]] = static_cast<vtkIdType>(used.size());
+        used.push_back(ids[j]);
+      }
+      connectivity->SetValue(k++, pointOf[ids[j]]);
     }
-    grid->InsertNextCell(type, n, local);
-    cellInsertion.Append(in.Step, node, in);
-    index->InsertNextValue(fc.Nodes[node].Index);
-    value->InsertNextValue(fc.Nodes[node].Value);
-    threshold->InsertNextValue(in.Threshold);
-    owner->InsertNextValue(carrier);
-    mult->InsertNextValue(fc.Nodes[node].Index == 1 ? multiplicity[node] : 0);
+    types->SetValue(c, static_cast<unsigned char>(type));
+    step->SetValue(c, in.Step);
+    nodeId->SetValue(c, node);
+    priority->SetValue(c, in.Priority);
+    extension->SetValue(c, static_cast<int>(in.Kind));
+    sponsor->SetValue(c, in.Sponsor);
+    index->SetValue(c, fc.Nodes[node].Index);
+    value->SetValue(c, fc.Nodes[node].Value);
+    threshold->SetValue(c, in.Threshold);
+    owner->SetValue(c, carrier);
+    mult->SetValue(c, fc.Nodes[node].Index == 1 ? multiplicity[node] : 0);
+    ++c;
   };
   for (const auto& entry : selected)
   {
     const Id node = entry.second;
     const flowrecon::Node& n = fc.Nodes[node];
-    if (n.Index == 0)
+    if (n.Index <= 1)
     {
-      const vtkIdType v = n.Simplex[0];
-      add(VTK_VERTEX, 1, &v, node);
+      const Id v[2] = { n.Simplex[0], n.Simplex[1] };
+      add(n.Index == 0 ? VTK_VERTEX : VTK_LINE, n.Index + 1, v, node);
     }
-    else if (n.Index == 1)
+    for (Id j = triangles.Offsets[node]; j < triangles.Offsets[node + 1]; ++j)
     {
-      const vtkIdType e[2] = { n.Simplex[0], n.Simplex[1] };
-      add(VTK_LINE, 2, e, node);
+      add(VTK_TRIANGLE, 3, fc.Triangles[triangles.List[j]].data(), node);
     }
-    for (Id k = triangles.Offsets[node]; k < triangles.Offsets[node + 1]; ++k)
+    for (Id j = tetrahedra.Offsets[node]; j < tetrahedra.Offsets[node + 1]; ++j)
     {
-      const auto& tri = fc.Triangles[triangles.List[k]];
-      const vtkIdType ids[3] = { tri[0], tri[1], tri[2] };
-      add(VTK_TRIANGLE, 3, ids, node);
-    }
-    for (Id k = tetrahedra.Offsets[node]; k < tetrahedra.Offsets[node + 1]; ++k)
-    {
-      const auto& tet = fc.Tetrahedra[tetrahedra.List[k]];
-      const vtkIdType ids[4] = { tet[0], tet[1], tet[2], tet[3] };
-      add(VTK_TETRA, 4, ids, node);
+      add(VTK_TETRA, 4, fc.Tetrahedra[tetrahedra.List[j]].data(), node);
     }
   }
-  grid->SetPoints(points);
-  grid->GetPointData()->AddArray(original);
-  for (vtkDataArray* a : cellInsertion.All())
+  offsets->SetValue(c, k);
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(used.size()));
+  auto original = Sized<vtkIdTypeArray>("vtkOriginalPointIds", static_cast<vtkIdType>(used.size()));
+  for (std::size_t p = 0; p < used.size(); ++p)
   {
-    grid->GetCellData()->AddArray(a);
+    points->SetPoint(static_cast<vtkIdType>(p), fc.Points[used[p]].data());
+    original->SetValue(static_cast<vtkIdType>(p),
+      used[p] < fc.NumberOfInputPoints ? static_cast<vtkIdType>(used[p]) : -1);
   }
-  for (vtkDataArray* a : std::initializer_list<vtkDataArray*>{ index, value, threshold, owner, mult })
+  vtkNew<vtkCellArray> cellArray;
+  cellArray->SetData(offsets, connectivity);
+  grid->Initialize();
+  grid->SetPoints(points);
+  grid->SetCells(types, cellArray);
+  grid->GetPointData()->AddArray(original);
+  for (vtkDataArray* a : std::initializer_list<vtkDataArray*>{ step, nodeId, priority, extension,
+         sponsor, index, value, threshold, owner, mult })
   {
     grid->GetCellData()->AddArray(a);
   }

@@ -40,6 +40,7 @@ public:
 
   SimplificationResult Run(double threshold, const Progress& progress)
   {
+    this->Threshold = threshold;
     std::vector<Candidate> initial;
     for (Id lower = 0; lower < this->Diagram.NodeCount(); ++lower)
     {
@@ -113,7 +114,9 @@ private:
       return;
     }
     const double ratio = b.Value / a.Value;
-    if (std::isfinite(ratio))
+    // A pair above the threshold is never cancelled (its ratio depends on its
+    // two nodes only): keeping it out of the queue keeps the queue small.
+    if (std::isfinite(ratio) && ratio <= this->Threshold)
     {
       out.push_back(Candidate{ ratio, lower, upper });
     }
@@ -215,6 +218,7 @@ private:
   std::vector<bool> Alive;
   std::vector<std::vector<Id>> DirectOwners;
   std::vector<Id> Order; ///< cancelled nodes, in cancellation order
+  double Threshold = 0;
   std::vector<Id> Lowers, Uppers;
 };
 
