@@ -110,46 +110,70 @@ double Diagonal(const FlowComplex& fc)
 
 vtkSmartPointer<vtkPolyData> HasseDiagramBlock(const FlowComplex& fc)
 {
-  // Two points per arc, so that an arc to infinity can end on a short outward
-  // stub instead of a point that would distort the bounds.
+  // Point k is node k's critical point, shared by its arcs (a surface sample has
+  // ~100 arcs per point: two points per arc would double the block); an arc to
+  // infinity ends on a short outward stub of its own instead of a point that
+  // would distort the bounds.
   const double stub = 0.05 * Diagonal(fc);
   const Point3 centre = fc.InfinityNode >= 0 ? fc.Nodes[fc.InfinityNode].Location : Point3{};
+  const vtkIdType nodes = static_cast<vtkIdType>(fc.Nodes.size());
+  const vtkIdType arcs = static_cast<vtkIdType>(fc.Arcs.size());
   std::vector<Point3> pts;
+  pts.reserve(fc.Nodes.size());
+  for (const Node& node : fc.Nodes)
+  {
+    pts.push_back(node.Location);
+  }
   auto nodeId = NamedArray<vtkIdTypeArray>("NodeId");
   auto mult = NamedArray<vtkIntArray>("Multiplicity");
   auto ratio = NamedArray<vtkDoubleArray>("Ratio");
   auto lowerId = NamedArray<vtkIdTypeArray>("LowerNodeId");
   auto upperId = NamedArray<vtkIdTypeArray>("UpperNodeId");
-  vtkNew<vtkCellArray> lines;
-  for (const Arc& a : fc.Arcs)
+  vtkNew<vtkIdTypeArray> offsets, connectivity;
+  offsets->SetNumberOfValues(arcs + 1);
+  connectivity->SetNumberOfValues(2 * arcs);
+  for (auto* a : { static_cast<vtkDataArray*>(mult), static_cast<vtkDataArray*>(ratio),
+         static_cast<vtkDataArray*>(lowerId), static_cast<vtkDataArray*>(upperId) })
   {
+    a->SetNumberOfTuples(arcs);
+  }
+  for (vtkIdType c = 0; c < arcs; ++c)
+  {
+    const Arc& a = fc.Arcs[c];
     const Node& lo = fc.Nodes[a.Lower];
     const Node& up = fc.Nodes[a.Upper];
-    Point3 end = up.Location;
+    vtkIdType end = a.Upper;
     if (up.IsInfinity())
     {
       Point3 d{ { lo.Location[0] - centre[0], lo.Location[1] - centre[1],
         lo.Location[2] - centre[2] } };
       const double n = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+      Point3 tip;
       for (int k = 0; k < 3; ++k)
       {
-        end[k] = lo.Location[k] + (n > 0 ? d[k] / n * stub : (k == 2 ? stub : 0));
+        tip[k] = lo.Location[k] + (n > 0 ? d[k] / n * stub : (k == 2 ? stub : 0));
       }
+      end = static_cast<vtkIdType>(pts.size());
+      pts.push_back(tip);
     }
-    const vtkIdType ids[2] = { static_cast<vtkIdType>(pts.size()),
-      static_cast<vtkIdType>(pts.size() + 1) };
-    pts.push_back(lo.Location);
-    pts.push_back(end);
-    lines->InsertNextCell(2, ids);
-    nodeId->InsertNextValue(a.Lower);
-    nodeId->InsertNextValue(a.Upper);
-    mult->InsertNextValue(a.Multiplicity);
+    offsets->SetValue(c, 2 * c);
+    connectivity->SetValue(2 * c, a.Lower);
+    connectivity->SetValue(2 * c + 1, end);
+    mult->SetValue(c, a.Multiplicity);
     // Ratios are >= 1 in exact arithmetic; rounding of nearly tied values must
     // not make them look smaller.
-    ratio->InsertNextValue(lo.Value > 0 ? std::max(1.0, up.Value / lo.Value) : HUGE_VAL);
-    lowerId->InsertNextValue(a.Lower);
-    upperId->InsertNextValue(a.Upper);
+    ratio->SetValue(c, lo.Value > 0 ? std::max(1.0, up.Value / lo.Value) : HUGE_VAL);
+    lowerId->SetValue(c, a.Lower);
+    upperId->SetValue(c, a.Upper);
   }
+  offsets->SetValue(arcs, 2 * arcs);
+  nodeId->SetNumberOfValues(static_cast<vtkIdType>(pts.size()));
+  for (vtkIdType k = 0; k < static_cast<vtkIdType>(pts.size()); ++k)
+  {
+    nodeId->SetValue(k, k < nodes ? k : fc.InfinityNode); // stubs stand for infinity
+  }
+  vtkNew<vtkCellArray> lines;
+  lines->SetData(offsets, connectivity);
   vtkNew<vtkPolyData> pd;
   pd->SetPoints(MakePoints(pts));
   pd->SetLines(lines);
@@ -354,7 +378,7 @@ void AddReport(const FlowComplex& fc, vtkFieldData* fd)
 
 void RequireMemoryForVTK(const FlowComplex& fc)
 {
-  const double bytes = 100.0 * static_cast<double>(fc.Arcs.size()) +
+  const double bytes = 60.0 * static_cast<double>(fc.Arcs.size()) +
     150.0 * static_cast<double>(fc.Nodes.size()) +
     200.0 * static_cast<double>(fc.Triangles.size() + fc.Tetrahedra.size());
   RequireMemory(bytes,

@@ -28,7 +28,7 @@ bool ExtractSamples(vtkDataObject* input, std::vector<Point3>& points, std::stri
 void ToMultiBlock(const FlowComplex& fc, vtkMultiBlockDataSet* output);
 
 /// Refuses (InputError, one line) to convert a flow complex whose VTK copy
-/// would not fit in memory: about 100 bytes per arc, 150 per node and 200 per
+/// would not fit in memory: about 60 bytes per arc, 150 per node and 200 per
 /// drawn cell, on top of the core's copy.
 void RequireMemoryForVTK(const FlowComplex& fc);
 
