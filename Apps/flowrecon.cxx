@@ -891,6 +891,15 @@ void ReconstructCloud(const std::string& input, double tp, double trmax,
     build.UnstableManifolds = false;
     flowrecon::FlowComplex fc = flowrecon::BuildFlowComplex(samples, build, stage(0, 0.5));
     clock("flow complex");
+    // The 2-3 arcs as computed: the boundaries of the cones to draw.
+    std::vector<flowrecon::Arc> cones;
+    for (const flowrecon::Arc& a : fc.Arcs)
+    {
+      if (fc.Nodes[a.Lower].Index == 2)
+      {
+        cones.push_back(a);
+      }
+    }
     flowrecon::SimplificationResult s;
     const bool simplify = tp >= 1; // below 1 nothing is cancelled
     if (simplify)
@@ -909,7 +918,7 @@ void ReconstructCloud(const std::string& input, double tp, double trmax,
     clock("reconstruction queue");
     flowrecon::DrawStableManifolds(samples, build,
       flowrecon::NodesToDraw(fc.Nodes, carriers, run, trmax), fc, stage(0.7, 0.95),
-      "lower --tr (or --tr-max)");
+      "lower --tr (or --tr-max)", &cones);
     clock("drawing");
     progress(0.95, "output");
     vtkNew<vtkPolyData> arrows;

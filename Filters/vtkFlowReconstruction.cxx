@@ -41,6 +41,8 @@ struct vtkFlowReconstruction::Cache
   /// Node whose insertion brings each node's cells: itself, the earliest
   /// reconstructed owner of a cancelled node, or -1.
   std::vector<Id> Carrier;
+  /// Whether FC.Arcs are simplified (else they give the cones' boundaries).
+  bool Simplified = false;
   /// The T_max whose geometry FC holds (-1: none yet).
   double GeometryThreshold = -1;
   /// Triangles and tetrahedra of each node (compressed rows of cell positions).
@@ -109,10 +111,14 @@ int vtkFlowReconstruction::RequestData(
     cache->InputTime = input->GetMTime();
     flowrecon::SimplificationResult s;
     std::string error;
-    if (!flowrecon::FromMultiBlock(input, cache->FC, error) ||
-      (!flowrecon::SimplificationFromMultiBlock(
-         input, static_cast<Id>(cache->FC.Nodes.size()), s, error) &&
-        !error.empty()))
+    if (!flowrecon::FromMultiBlock(input, cache->FC, error))
+    {
+      vtkErrorMacro(<< error);
+      return 0;
+    }
+    cache->Simplified = flowrecon::SimplificationFromMultiBlock(
+      input, static_cast<Id>(cache->FC.Nodes.size()), s, error);
+    if (!error.empty())
     {
       vtkErrorMacro(<< error);
       return 0;
@@ -210,7 +216,8 @@ bool vtkFlowReconstruction::DrawGeometry(double tmax)
       this, "drawing the stable manifolds",
       [&]() {
         flowrecon::DrawStableManifolds(samples, options, draw, fc, progress,
-          "lower MaximumThreshold (flowrecon --tr-max), or the cloud's size");
+          "lower MaximumThreshold (flowrecon --tr-max), or the cloud's size",
+          cache.Simplified ? nullptr : &fc.Arcs);
         finished = true;
       },
       []() {});

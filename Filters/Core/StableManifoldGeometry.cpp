@@ -92,7 +92,8 @@ std::vector<Id> NodesWithinBudget(
 }
 
 void DrawStableManifolds(const std::vector<Point3>& points, const BuildOptions& options,
-  const std::vector<Id>& draw, FlowComplex& fc, const Progress& progress, const std::string& advice)
+  const std::vector<Id>& draw, FlowComplex& fc, const Progress& progress, const std::string& advice,
+  const std::vector<Arc>* unsimplifiedArcs)
 {
   struct ExactScope
   {
@@ -197,7 +198,24 @@ void DrawStableManifolds(const std::vector<Point3>& points, const BuildOptions& 
     drawPatch[f] = 1;
   }
   std::vector<char> walk(drawPatch);
-  if (!cones.empty())
+  if (!cones.empty() && unsimplifiedArcs)
+  {
+    std::vector<std::int32_t> coneOf(static_cast<std::size_t>(nCells), -1);
+    for (std::size_t k = 0; k < cones.size(); ++k)
+    {
+      coneOf[cones[k]] = static_cast<std::int32_t>(k);
+    }
+    for (const Arc& a : *unsimplifiedArcs) // grouped by lower node: facets in order
+    {
+      if (a.Lower >= base2 && a.Lower < base3 && a.Upper >= base3 && a.Upper < fc.InfinityNode &&
+        a.Multiplicity % 2 == 1 && coneOf[a.Upper - base3] >= 0)
+      {
+        boundary[coneOf[a.Upper - base3]].push_back(a.Lower - base2);
+        walk[a.Lower - base2] = 1;
+      }
+    }
+  }
+  else if (!cones.empty())
   {
     std::vector<std::int32_t> maximumOfCell(static_cast<std::size_t>(tri.NumberOfCells()), -1);
     std::vector<std::int32_t> coneOf(static_cast<std::size_t>(nCells), -1);
@@ -240,6 +258,11 @@ void DrawStableManifolds(const std::vector<Point3>& points, const BuildOptions& 
         }
       }
     }
+  }
+
+  for (std::vector<Id>& b : boundary)
+  {
+    std::sort(b.begin(), b.end()); // facet order, however the arcs came
   }
 
   // Walks in parallel chunks, merged in facet order (deterministic).

@@ -34,9 +34,12 @@ std::vector<Id> NodesWithinBudget(
 /// and only the walks of the drawn patches run. fc.Points starts with `points`.
 /// Throws InputError if the nodes do not belong to these points, or if the cells
 /// would not fit in memory (`advice` says what to do); Aborted on request.
+/// `unsimplifiedArcs`, when given, holds (at least) the 2-3 arcs of the
+/// unsimplified complex: the cones' boundaries are then read from it instead of
+/// being found again by flow-line roots.
 void DrawStableManifolds(const std::vector<Point3>& points, const BuildOptions& options,
   const std::vector<Id>& draw, FlowComplex& fc, const Progress& progress,
-  const std::string& advice);
+  const std::string& advice, const std::vector<Arc>* unsimplifiedArcs = nullptr);
 
 } // namespace flowrecon
 

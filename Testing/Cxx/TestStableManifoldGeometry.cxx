@@ -97,6 +97,10 @@ void TestCloud(const std::string& name, const std::vector<Point3>& points)
       it = (it->first % stride == 0) ? std::next(it) : expected.erase(it);
     }
     CHECK(CellsByNode(lazy) == expected);
+    // The cones' boundaries read from the arcs instead of flow-line roots.
+    FlowComplex fromArcs = hasse;
+    DrawStableManifolds(points, hasseOptions, draw, fromArcs, Progress(), "test", &hasse.Arcs);
+    CHECK(CellsByNode(fromArcs) == expected);
     // Input points keep their ids and coordinates.
     CHECK(std::equal(points.begin(), points.end(), lazy.Points.begin()));
   }
