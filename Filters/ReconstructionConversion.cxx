@@ -14,10 +14,13 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkTable.h"
+#include "vtkTypeInt32Array.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
+#include <cstdint>
+#include <limits>
 #include <array>
 #include <utility>
 
@@ -112,7 +115,7 @@ void ReconstructionToVTK(const FlowComplex& fc, const std::vector<Id>& carriers,
     cells += own + nt + nq;
     corners += own * (fc.Nodes[node].Index + 1) + 3 * nt + 4 * nq;
   }
-  RequireMemory(90.0 * static_cast<double>(cells) + 8.0 * static_cast<double>(corners) +
+  RequireMemory(50.0 * static_cast<double>(cells) + 4.0 * static_cast<double>(corners) +
       48.0 * static_cast<double>(fc.Points.size()),
     "the VTK output of " + std::to_string(cells) + " cells",
     "lower the reconstruction threshold (or MaximumThreshold)");
@@ -120,21 +123,46 @@ void ReconstructionToVTK(const FlowComplex& fc, const std::vector<Id>& carriers,
     flowrecon::EdgeMultiplicities(fc.Nodes, fc.Arcs, run, t);
 
   // Port 0: the cells, over the points they use (samples keep their input id).
-  auto offsets = vtkSmartPointer<vtkIdTypeArray>::New();
-  auto connectivity = vtkSmartPointer<vtkIdTypeArray>::New();
+  // 32-bit ids (cells, points and nodes fit: the builder refuses 2^31 nodes):
+  // a reconstructed solid has some 70 cells per sample, and 64-bit ids would be
+  // a third of its memory.
+  const bool narrow = corners < std::numeric_limits<std::int32_t>::max();
+  auto offsets = vtkSmartPointer<vtkTypeInt32Array>::New();
+  auto connectivity = vtkSmartPointer<vtkTypeInt32Array>::New();
+  auto wideOffsets = vtkSmartPointer<vtkIdTypeArray>::New();
+  auto wideConnectivity = vtkSmartPointer<vtkIdTypeArray>::New();
+  if (!narrow)
+  {
+    offsets = nullptr;
+    connectivity = nullptr;
+  }
   auto types = vtkSmartPointer<vtkUnsignedCharArray>::New();
-  offsets->SetNumberOfValues(cells + 1);
-  connectivity->SetNumberOfValues(corners);
+  if (narrow)
+  {
+    offsets->SetNumberOfValues(cells + 1);
+    connectivity->SetNumberOfValues(corners);
+  }
+  else
+  {
+    wideOffsets->SetNumberOfValues(cells + 1);
+    wideConnectivity->SetNumberOfValues(corners);
+  }
+  auto setOffset = [&](vtkIdType i, vtkIdType v) {
+    narrow ? offsets->SetValue(i, static_cast<std::int32_t>(v)) : wideOffsets->SetValue(i, v);
+  };
+  auto setCorner = [&](vtkIdType i, vtkIdType v) {
+    narrow ? connectivity->SetValue(i, static_cast<std::int32_t>(v)) : wideConnectivity->SetValue(i, v);
+  };
   types->SetNumberOfValues(cells);
-  auto step = Sized<vtkIdTypeArray>("Step", cells);
-  auto nodeId = Sized<vtkIdTypeArray>("NodeId", cells);
+  auto step = Sized<vtkIntArray>("Step", cells);
+  auto nodeId = Sized<vtkIntArray>("NodeId", cells);
   auto priority = Sized<vtkDoubleArray>("Priority", cells);
   auto extension = Sized<vtkIntArray>("Extension", cells);
-  auto sponsor = Sized<vtkIdTypeArray>("Sponsor", cells);
+  auto sponsor = Sized<vtkIntArray>("Sponsor", cells);
   auto index = Sized<vtkIntArray>("Index", cells);
   auto value = Sized<vtkDoubleArray>("CriticalValue", cells);
   auto threshold = Sized<vtkDoubleArray>("Threshold", cells);
-  auto owner = Sized<vtkIdTypeArray>("Owner", cells);
+  auto owner = Sized<vtkIntArray>("Owner", cells);
   auto mult = Sized<vtkIntArray>("Multiplicity", cells);
   std::vector<vtkIdType> pointOf(fc.Points.size(), -1);
   std::vector<Id> used; // fc point of each output point
@@ -142,7 +170,7 @@ void ReconstructionToVTK(const FlowComplex& fc, const std::vector<Id>& carriers,
   auto add = [&](int type, int n, const Id* ids, Id node) {
     const Id carrier = carriers[node];
     const flowrecon::Insertion& in = steps[carrier];
-    offsets->SetValue(c, k);
+    setOffset(c, k);
     for (int j = 0; j < n; ++j)
     {
       if (pointOf[ids[j]] < 0)
@@ -150,18 +178,18 @@ void ReconstructionToVTK(const FlowComplex& fc, const std::vector<Id>& carriers,
         pointOf[ids[j]] = static_cast<vtkIdType>(used.size());
         used.push_back(ids[j]);
       }
-      connectivity->SetValue(k++, pointOf[ids[j]]);
+      setCorner(k++, pointOf[ids[j]]);
     }
     types->SetValue(c, static_cast<unsigned char>(type));
-    step->SetValue(c, in.Step);
-    nodeId->SetValue(c, node);
+    step->SetValue(c, static_cast<int>(in.Step));
+    nodeId->SetValue(c, static_cast<int>(node));
     priority->SetValue(c, in.Priority);
     extension->SetValue(c, static_cast<int>(in.Kind));
-    sponsor->SetValue(c, in.Sponsor);
+    sponsor->SetValue(c, static_cast<int>(in.Sponsor));
     index->SetValue(c, fc.Nodes[node].Index);
     value->SetValue(c, fc.Nodes[node].Value);
     threshold->SetValue(c, in.Threshold);
-    owner->SetValue(c, carrier);
+    owner->SetValue(c, static_cast<int>(carrier));
     mult->SetValue(c, fc.Nodes[node].Index == 1 ? multiplicity[node] : 0);
     ++c;
   };
@@ -183,7 +211,7 @@ void ReconstructionToVTK(const FlowComplex& fc, const std::vector<Id>& carriers,
       add(VTK_TETRA, 4, fc.Tetrahedra[tetrahedra.List[j]].data(), node);
     }
   }
-  offsets->SetValue(c, k);
+  setOffset(c, k);
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(static_cast<vtkIdType>(used.size()));
@@ -195,7 +223,14 @@ void ReconstructionToVTK(const FlowComplex& fc, const std::vector<Id>& carriers,
       used[p] < fc.NumberOfInputPoints ? static_cast<vtkIdType>(used[p]) : -1);
   }
   vtkNew<vtkCellArray> cellArray;
-  cellArray->SetData(offsets, connectivity);
+  if (narrow)
+  {
+    cellArray->SetData(offsets, connectivity);
+  }
+  else
+  {
+    cellArray->SetData(wideOffsets, wideConnectivity);
+  }
   grid->Initialize();
   grid->SetPoints(points);
   grid->SetCells(types, cellArray);
