@@ -904,7 +904,7 @@ void ReconstructCloud(const std::string& input, double tp, double trmax,
     const bool simplify = tp >= 1; // below 1 nothing is cancelled
     if (simplify)
     {
-      s = flowrecon::Simplify(fc.Nodes, fc.Arcs, tp, stage(0.5, 0.6));
+      s = flowrecon::Simplify(fc.Nodes, std::move(fc.Arcs), tp, stage(0.5, 0.6));
       fc.Arcs = std::move(s.Arcs); // the reconstruction grows on the simplified diagram
       s.Arcs = {};
     }

@@ -227,16 +227,24 @@ private:
 SimplificationResult Simplify(const std::vector<Node>& nodes, const std::vector<Arc>& arcs,
   double persistenceThreshold, const Progress& progress)
 {
+  std::vector<Arc> copy(arcs);
+  return Simplify(nodes, std::move(copy), persistenceThreshold, progress);
+}
+
+SimplificationResult Simplify(const std::vector<Node>& nodes, std::vector<Arc>&& arcs,
+  double persistenceThreshold, const Progress& progress)
+{
   if (std::isnan(persistenceThreshold))
   {
     throw InputError("persistence threshold is not a number");
   }
   // Two 16-byte half-arcs per arc and two lists per node, plus the queue and
-  // the result's copy of the arcs.
+  // the result's copy of the arcs (the input's are freed once read).
   RequireMemory(56.0 * static_cast<double>(arcs.size()) + 80.0 * static_cast<double>(nodes.size()),
     "simplifying a Hasse diagram of " + std::to_string(arcs.size()) + " arcs",
     "use t_p 0 (no simplification) or fewer points");
   Simplifier simplifier(nodes, arcs);
+  std::vector<Arc>().swap(arcs);
   return simplifier.Run(persistenceThreshold, progress);
 }
 

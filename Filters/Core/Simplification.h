@@ -57,6 +57,11 @@ struct SimplificationResult
 SimplificationResult Simplify(const std::vector<Node>& nodes, const std::vector<Arc>& arcs,
   double persistenceThreshold, const Progress& progress);
 
+/// The same, taking the arcs over: they are freed once the diagram is built,
+/// which lowers the peak memory of large clouds (the arcs are left empty).
+SimplificationResult Simplify(const std::vector<Node>& nodes, std::vector<Arc>&& arcs,
+  double persistenceThreshold, const Progress& progress);
+
 } // namespace flowrecon
 
 #endif
