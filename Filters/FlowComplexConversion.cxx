@@ -384,8 +384,7 @@ void RequireMemoryForVTK(const FlowComplex& fc)
   RequireMemory(bytes,
     "the VTK output of the flow complex of " + std::to_string(fc.Report.InputPoints) +
       " points (" + std::to_string(fc.Arcs.size()) + " arcs)",
-    "reconstruct with flowrecon or Flow Reconstruction from the points, which keep the complex "
-    "in its compact form, or use fewer points");
+    "use 'flowrecon reconstruct', which keeps the complex in its compact form, or fewer points");
 }
 
 void ToMultiBlock(const FlowComplex& fc, vtkMultiBlockDataSet* output)
