@@ -518,8 +518,9 @@ void ReadOff(const std::string& file, std::string_view text, std::vector<double>
     Fail(file, 0, "no OFF header (the file holds no data)");
   }
   SplitLoose(line, fields, std::string_view::npos);
-  // [ST][C][N]OFF; 4OFF and nOFF are higher-dimensional.
-  std::string_view keyword = fields[0];
+  // [ST][C][N]OFF; 4OFF and nOFF are higher-dimensional. A line of separators
+  // only has no field at all.
+  std::string_view keyword = fields.empty() ? std::string_view() : fields[0];
   if (keyword.substr(0, 2) == "ST")
   {
     keyword.remove_prefix(2);
@@ -533,10 +534,11 @@ void ReadOff(const std::string& file, std::string_view text, std::vector<double>
   }
   if (keyword != "OFF")
   {
+    const std::string_view found = fields.empty() ? line : fields[0];
     Fail(file, lines.Number,
-      fields[0].find("OFF") != std::string_view::npos
-        ? "unsupported OFF variant " + Quote(fields[0]) + " (only 3D OFF files are read)"
-        : "expected the OFF header keyword, found " + Quote(fields[0]));
+      found.find("OFF") != std::string_view::npos
+        ? "unsupported OFF variant " + Quote(found) + " (only 3D OFF files are read)"
+        : "expected the OFF header keyword, found " + Quote(found));
   }
   if (std::find(fields.begin(), fields.end(), "BINARY") != fields.end())
   {
@@ -608,7 +610,7 @@ void ReadObj(const std::string& file, std::string_view text, std::vector<double>
   while (lines.NextData(line))
   {
     SplitLoose(line, fields, 4);
-    if (fields[0] != "v")
+    if (fields.empty() || fields[0] != "v") // a line of separators only has no field
     {
       continue;
     }

@@ -76,6 +76,12 @@ flowrecon_add_cli_test(OutputDirectoryMissing EXIT 1 STDERR_LINES 1
   STDERR "^flowrecon: no_such_directory/out\\.vtm: directory 'no_such_directory' does not exist"
   ARGS complex "${_d}/tetrahedron.xyz" -o no_such_directory/out.vtm)
 
+# A line of separators only (found by fuzzing: read a field that is not there).
+flowrecon_add_cli_test(CommaLineOff EXIT 1 STDERR_LINES 1
+  STDERR "comma_line\\.off:1: expected the OFF header keyword" ARGS info "${_d}/comma_line.off")
+flowrecon_add_cli_test(CommaLineObj EXIT 1 STDERR_LINES 1
+  STDERR "comma_line\\.obj: no points found" ARGS info "${_d}/comma_line.obj")
+
 # Results.
 flowrecon_add_cli_test(ComplexWritesVtm EXIT 0 STDERR_LINES 0
   STDOUT "tetrahedron\\.vtm: nodes by index 4 6 4 1, "

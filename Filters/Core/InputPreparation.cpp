@@ -53,7 +53,11 @@ PreparedInput PrepareInput(const std::vector<Point3>& points)
     }
     i = j;
   }
-  for (Id i = 0; i < n; ++i)
+  // The distinct points in coordinate order, not in input order: the Hilbert
+  // order breaks ties between equal coordinates (grids) by position, and the
+  // perturbation of degenerate input goes by position, so any other order would
+  // make the result depend on the order of the input lines.
+  for (const Id i : order)
   {
     if (in.Representative[i] == i)
     {

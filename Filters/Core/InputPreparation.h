@@ -14,7 +14,7 @@ namespace flowrecon
 
 struct PreparedInput
 {
-  std::vector<Point3> Unique;  ///< distinct points, in order of first occurrence
+  std::vector<Point3> Unique;  ///< distinct points, in coordinate (lexicographic) order
   std::vector<Id> InputId;     ///< input id of each unique point
   std::vector<Id> Representative; ///< per input point: the input id standing for it
   double Diagonal = 0;         ///< bounding-box diagonal (BuildFlowComplex rescales it with Unique)

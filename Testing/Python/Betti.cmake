@@ -20,3 +20,17 @@ if (TARGET flowrecon)
             "$<TARGET_FILE:flowrecon>" "${CMAKE_CURRENT_BINARY_DIR}/lazy_equals_eager")
   set_tests_properties(py.reconstruction.lazy_equals_eager PROPERTIES LABELS "python" TIMEOUT 300)
 endif ()
+
+# The reconstruction does not depend on the order of the input lines (cube,
+# sphere, torus, exact grid, duplicates; t_p 1.1 and 0), and 10^6 lines holding
+# 5 distinct points give a .vtu of a handful of points (issue #12).
+if (TARGET flowrecon)
+  add_test(NAME py.reconstruction.permutation
+    COMMAND "${FLOWRECON_TEST_PYTHON}" "${CMAKE_CURRENT_SOURCE_DIR}/test_permutation.py"
+            "$<TARGET_FILE:flowrecon>" "${CMAKE_CURRENT_BINARY_DIR}/permutation")
+  add_test(NAME py.reconstruction.million_duplicates
+    COMMAND "${FLOWRECON_TEST_PYTHON}" "${CMAKE_CURRENT_SOURCE_DIR}/test_permutation.py"
+            "$<TARGET_FILE:flowrecon>" "${CMAKE_CURRENT_BINARY_DIR}/million_duplicates" --duplicates)
+  set_tests_properties(py.reconstruction.permutation py.reconstruction.million_duplicates
+    PROPERTIES LABELS "python" TIMEOUT 300)
+endif ()

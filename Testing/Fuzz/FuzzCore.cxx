@@ -1,0 +1,429 @@
+// libFuzzer target: the core pipeline on a small point cloud made from the
+// input bytes, with the invariants of DESIGN.md §3 checked after each stage
+// (a violation aborts, which libFuzzer reports as a crash).
+//
+// Input layout (every byte string is a valid input):
+//   byte 0, bits 0-1  how coordinates are read from the rest:
+//                       0: 1 byte each, 0..7 (a 8x8x8 grid: duplicates, ties,
+//                          cospherical and coplanar sets, right angles)
+//                       1: 1 byte each, signed -128..127
+//                       2: 2 bytes each, 0..65535 / 65536
+//                       3: 8 bytes each, raw IEEE doubles (NaN, inf, denormals)
+//           bit 2     eager build (stable and unstable manifolds drawn with the
+//                     Hasse diagram) instead of the CLI's path (Hasse diagram
+//                     only, then the reconstruction's cells drawn on demand)
+//           bits 3-4  persistence threshold t_p: 0, 1.05, 1.1, 1.5
+//   byte 1            scale: (signed) s with |s| < 100 means 1, else
+//                     2^(sign(s) * (|s| - 99) * 40), up to 2^±1160 (overflow and
+//                     underflow to denormals and zero)
+//   bytes 2..         coordinates, at most 64 points; a trailing partial point
+//                     is dropped.
+//
+// Invariants (abort on violation):
+//   - Euler relation n0 - n1 + n2 - n3 = 1 (the maximum at infinity not counted);
+//   - critical values: 0 for samples, positive and finite otherwise, at finite
+//     locations;
+//   - arcs go up one index with multiplicity >= 1 and non-decreasing values
+//     (strictly increasing in exact arithmetic, but the doubles may tie);
+//     index-1 nodes have two arrivals, index-2 nodes two departures;
+//   - boundary of boundary = 0 mod 2 over the odd-multiplicity arcs (arcs to the
+//     maximum at infinity excluded), before and after simplification; the
+//     survivors still have Euler characteristic 1;
+//   - the reconstruction is closed under faces at t_r = infinity (every node with
+//     Step >= 0) and at t_r = 2: every arc x -> c of the (simplified) diagram
+//     into a reconstructed c has x reconstructed with Threshold(x) <=
+//     Threshold(c), as TestReconstruction checks; with t_p = 0 this is closure
+//     over the original arcs. The bookkeeping (steps, running maximum, profile)
+//     is checked too.
+//   - the eager build: every index-2 patch is bounded by its Gabriel edges,
+//     each used as often as the arc's multiplicity.
+// Closure through simplification owners (the faces of a cancelled node's cells,
+// carried by its earliest inserted owner) is not checked: parity can remove a
+// face from the owner's boundary (In(b) x Out(a) mod 2), see README.md. Set
+// FLOWRECON_FUZZ_CARRIER_REPORT=1 to print how often that happens.
+//
+// Any InputError (non-finite coordinates, fewer than 4 distinct points,
+// coplanar points, too degenerate) is an acceptable outcome.
+#include "FlowComplexBuilder.h"
+#include "Reconstruction.h"
+#include "Simplification.h"
+#include "StableManifoldGeometry.h"
+
+#include <tbb/global_control.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <map>
+#include <memory>
+#include <vector>
+
+using namespace flowrecon;
+
+namespace
+{
+
+[[noreturn]] void Fail(const char* what)
+{
+  std::fprintf(stderr, "FuzzCore: invariant violated: %s\n", what);
+  std::abort();
+}
+
+#define REQUIRE(cond)                                                                          \
+  do                                                                                           \
+  {                                                                                            \
+    if (!(cond))                                                                               \
+      Fail(#cond);                                                                             \
+  } while (0)
+
+std::vector<Point3> CloudOf(const std::uint8_t* data, std::size_t size, int& flags)
+{
+  std::vector<Point3> cloud;
+  if (size < 2)
+  {
+    return cloud;
+  }
+  flags = data[0];
+  const int mode = flags & 3;
+  const int s = static_cast<signed char>(data[1]);
+  const int exponent = std::abs(s) < 100 ? 0 : (s > 0 ? 1 : -1) * (std::abs(s) - 99) * 40;
+  const std::size_t width = mode == 3 ? 8 : mode == 2 ? 2 : 1;
+  data += 2;
+  size -= 2;
+  const std::size_t n = std::min<std::size_t>(size / (3 * width), 64);
+  cloud.resize(n);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const std::uint8_t* b = data + (3 * i + k) * width;
+      double x = 0;
+      switch (mode)
+      {
+        case 0:
+          x = b[0] & 7;
+          break;
+        case 1:
+          x = static_cast<signed char>(b[0]);
+          break;
+        case 2:
+          x = (b[0] | (b[1] << 8)) / 65536.0;
+          break;
+        default:
+          std::memcpy(&x, b, 8);
+      }
+      cloud[i][k] = std::ldexp(x, exponent);
+    }
+  }
+  return cloud;
+}
+
+/// dd = 0 mod 2 over the odd arcs whose upper node is finite.
+bool BoundaryOfBoundaryIsZero(const std::vector<Node>& nodes, const std::vector<Arc>& arcs)
+{
+  std::map<Id, std::vector<Id>> below;
+  for (const Arc& a : arcs)
+  {
+    if (a.Multiplicity % 2 == 1 && !nodes[a.Upper].IsInfinity())
+    {
+      below[a.Upper].push_back(a.Lower);
+    }
+  }
+  for (const auto& entry : below)
+  {
+    std::map<Id, int> parity;
+    for (const Id b : entry.second)
+    {
+      const auto it = below.find(b);
+      if (it != below.end())
+      {
+        for (const Id bb : it->second)
+        {
+          parity[bb] ^= 1;
+        }
+      }
+    }
+    for (const auto& p : parity)
+    {
+      if (p.second != 0)
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+void CheckComplex(const FlowComplex& fc)
+{
+  const auto n = fc.CountByIndex();
+  REQUIRE(n[0] - n[1] + n[2] - n[3] == 1);
+  REQUIRE(!fc.Nodes.empty() && fc.Nodes.back().IsInfinity() &&
+    fc.InfinityNode == static_cast<Id>(fc.Nodes.size()) - 1);
+  const Id count = static_cast<Id>(fc.Nodes.size());
+  // Critical values are distances: 0 for samples, positive and finite for the
+  // other finite nodes, at finite locations.
+  for (const Node& node : fc.Nodes)
+  {
+    if (node.IsInfinity())
+      continue;
+    REQUIRE(std::isfinite(node.Location[0]) && std::isfinite(node.Location[1]) &&
+      std::isfinite(node.Location[2]));
+    REQUIRE(node.Index == 0 ? node.Value == 0 : (node.Value > 0 && std::isfinite(node.Value)));
+  }
+  std::vector<int> down(fc.Nodes.size(), 0), up(fc.Nodes.size(), 0);
+  for (const Arc& a : fc.Arcs)
+  {
+    REQUIRE(a.Lower >= 0 && a.Lower < count && a.Upper >= 0 && a.Upper < count);
+    const Node& lower = fc.Nodes[a.Lower];
+    const Node& upper = fc.Nodes[a.Upper];
+    REQUIRE(upper.Index == lower.Index + 1);
+    REQUIRE(a.Multiplicity >= 1);
+    // Strictly increasing in exact arithmetic; the doubles may tie (the builder
+    // makes them non-decreasing), also without perturbation: a triangle within
+    // an ulp of a right angle has its circumradius equal to half its edge.
+    REQUIRE(lower.Value <= upper.Value);
+    down[a.Upper] += a.Multiplicity;
+    if (lower.Index == 2)
+      up[a.Lower] += a.Multiplicity;
+  }
+  for (std::size_t i = 0; i < fc.Nodes.size(); ++i)
+  {
+    if (fc.Nodes[i].Index == 1)
+      REQUIRE(down[i] == 2);
+    if (fc.Nodes[i].Index == 2)
+      REQUIRE(up[i] == 2 && down[i] >= 1);
+  }
+  REQUIRE(BoundaryOfBoundaryIsZero(fc.Nodes, fc.Arcs));
+}
+
+/// Patches are bounded by their Gabriel edges, used as often as the arc's
+/// multiplicity; other edges of a patch are shared by two of its triangles.
+void CheckPatches(const FlowComplex& fc)
+{
+  std::map<Id, std::map<std::pair<Id, Id>, int>> edgeUse;
+  for (std::size_t t = 0; t < fc.Triangles.size(); ++t)
+  {
+    const auto& tr = fc.Triangles[t];
+    for (int k = 0; k < 3; ++k)
+    {
+      const Id a = std::min(tr[k], tr[(k + 1) % 3]), b = std::max(tr[k], tr[(k + 1) % 3]);
+      ++edgeUse[fc.TriangleNode[t]][{ a, b }];
+    }
+  }
+  std::map<std::pair<Id, Id>, Id> gabriel;
+  for (std::size_t i = 0; i < fc.Nodes.size(); ++i)
+    if (fc.Nodes[i].Index == 1)
+      gabriel[{ fc.Nodes[i].Simplex[0], fc.Nodes[i].Simplex[1] }] = static_cast<Id>(i);
+  std::map<std::pair<Id, Id>, int> arcMultiplicity;
+  for (const Arc& a : fc.Arcs)
+    arcMultiplicity[{ a.Lower, a.Upper }] = a.Multiplicity;
+  for (const auto& patch : edgeUse)
+  {
+    for (const auto& e : patch.second)
+    {
+      if (e.first.first < fc.NumberOfInputPoints && e.first.second < fc.NumberOfInputPoints)
+      {
+        const auto g = gabriel.find(e.first);
+        REQUIRE(g != gabriel.end());
+        const int multiplicity = arcMultiplicity[std::make_pair(g->second, patch.first)];
+        REQUIRE(multiplicity == e.second);
+      }
+      else
+      {
+        REQUIRE(e.second == 2);
+      }
+    }
+  }
+  for (std::size_t i = 0; i < fc.Nodes.size(); ++i)
+    if (fc.Nodes[i].Index == 2)
+      REQUIRE(edgeUse.count(static_cast<Id>(i)) == 1);
+}
+
+void CheckSimplification(const FlowComplex& fc, const SimplificationResult& s, double tp)
+{
+  REQUIRE(s.Survives.size() == fc.Nodes.size() && s.Survives.back());
+  std::vector<bool> cancelled(fc.Nodes.size(), false);
+  double previous = 0;
+  for (const CancelledPair& p : s.Pairs)
+  {
+    REQUIRE(p.Ratio <= tp && p.Ratio >= previous);
+    previous = p.Ratio;
+    REQUIRE(fc.Nodes[p.Upper].Index == fc.Nodes[p.Lower].Index + 1);
+    REQUIRE(!cancelled[p.Lower] && !cancelled[p.Upper]);
+    cancelled[p.Lower] = cancelled[p.Upper] = true;
+  }
+  Id euler = 0;
+  for (std::size_t i = 0; i < fc.Nodes.size(); ++i)
+  {
+    REQUIRE(s.Survives[i] == !cancelled[i]);
+    if (s.Survives[i] && !fc.Nodes[i].IsInfinity())
+      euler += fc.Nodes[i].Index % 2 == 0 ? 1 : -1;
+  }
+  REQUIRE(euler == 1);
+  for (const Arc& a : s.Arcs)
+  {
+    REQUIRE(s.Survives[a.Lower] && s.Survives[a.Upper] && a.Multiplicity >= 1);
+    REQUIRE(fc.Nodes[a.Upper].Index == fc.Nodes[a.Lower].Index + 1);
+  }
+  REQUIRE(BoundaryOfBoundaryIsZero(fc.Nodes, s.Arcs));
+}
+
+void CheckReconstruction(const FlowComplex& fc, const std::vector<Arc>& arcs,
+  const SimplificationResult& s, const ReconstructionResult& r, double tp)
+{
+  const std::vector<Node>& nodes = fc.Nodes;
+  REQUIRE(r.Nodes.size() == nodes.size());
+  REQUIRE(r.Order.size() == r.Profile.size() + static_cast<std::size_t>(r.InitializationCount));
+  double running = 1;
+  for (std::size_t k = 0; k < r.Order.size(); ++k)
+  {
+    const Id node = r.Order[k];
+    REQUIRE(node >= 0 && node < static_cast<Id>(nodes.size()));
+    const Insertion& i = r.Nodes[node];
+    running = std::max(running, i.Priority);
+    REQUIRE(i.Step == static_cast<Id>(k) && i.Threshold == running && i.Priority >= 1);
+    REQUIRE(s.Survives[node] && !nodes[node].IsInfinity());
+  }
+  Id inserted = 0;
+  for (const Insertion& i : r.Nodes)
+    inserted += i.Step >= 0 ? 1 : 0;
+  REQUIRE(inserted == static_cast<Id>(r.Order.size()));
+
+  // Closure under faces at t_r = inf and at t_r = 2.
+  for (const double t : { HUGE_VAL, 2.0 })
+  {
+    for (const Arc& a : arcs)
+    {
+      const bool upperIn = std::isinf(t) ? r.Nodes[a.Upper].Step >= 0 : r.Contains(a.Upper, t);
+      if (upperIn)
+      {
+        REQUIRE(r.Nodes[a.Lower].Step >= 0);
+        REQUIRE(r.Nodes[a.Lower].Threshold <= r.Nodes[a.Upper].Threshold);
+      }
+    }
+  }
+
+  // Closure through owners: report only (see the comment at the top).
+  static const bool report = std::getenv("FLOWRECON_FUZZ_CARRIER_REPORT") != nullptr;
+  if (report)
+  {
+    const std::vector<Id> carriers = CellCarriers(r, tp >= 1 ? &s : nullptr);
+    Id never = 0, later = 0, checked = 0;
+    for (const Arc& a : fc.Arcs)
+    {
+      if (a.Multiplicity % 2 == 0 || nodes[a.Upper].IsInfinity() || carriers[a.Upper] < 0)
+        continue;
+      ++checked;
+      const Id cu = carriers[a.Upper], cl = carriers[a.Lower];
+      if (cl >= 0 && r.Nodes[cl].Threshold <= r.Nodes[cu].Threshold)
+        continue;
+      if (never + later == 0)
+      {
+        std::fprintf(stderr, "carrier closure: face %d (index %d, %s, carrier %lld) of %d (index %d, "
+          "%s, carrier %lld at threshold %.17g) is %s\n", a.Lower, nodes[a.Lower].Index,
+          s.Survives[a.Lower] ? "survives" : "cancelled", static_cast<long long>(cl), a.Upper,
+          nodes[a.Upper].Index, s.Survives[a.Upper] ? "survives" : "cancelled",
+          static_cast<long long>(cu), r.Nodes[cu].Threshold,
+          cl < 0 ? "never drawn" : "drawn later");
+      }
+      ++(cl < 0 ? never : later);
+    }
+    std::fprintf(stderr, "carrier closure: t_p %g, of %lld odd arcs into drawn cells, %lld have "
+      "their face never drawn, %lld drawn later\n", tp, static_cast<long long>(checked),
+      static_cast<long long>(never), static_cast<long long>(later));
+  }
+}
+
+} // namespace
+
+extern "C" int LLVMFuzzerInitialize(int*, char***)
+{
+  // One thread: the campaign runs beside other work, and the output does not
+  // depend on the number of threads (tested elsewhere).
+  static tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+  return 0;
+}
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
+{
+  int flags = 0;
+  const std::vector<Point3> cloud = CloudOf(data, size, flags);
+  const bool eager = (flags & 4) != 0;
+  static const double thresholds[4] = { 0.0, 1.05, 1.1, 1.5 };
+  const double tp = thresholds[(flags >> 3) & 3];
+
+  BuildOptions options;
+  options.StableManifolds = eager;
+  options.UnstableManifolds = eager;
+  FlowComplex fc;
+  try
+  {
+    fc = BuildFlowComplex(cloud, options, Progress());
+  }
+  catch (const InputError&)
+  {
+    return 0;
+  }
+  CheckComplex(fc);
+  if (eager)
+  {
+    CheckPatches(fc);
+    for (const FlowLine& line : fc.FlowLines)
+    {
+      REQUIRE(line.Node >= 0 && line.Node < static_cast<Id>(fc.Nodes.size()));
+      REQUIRE(fc.Nodes[line.Node].Index == 2);
+      REQUIRE(line.Target >= 0 && fc.Nodes[line.Target].Index == 3);
+    }
+  }
+
+  // The CLI's path (Apps/flowrecon.cxx, ReconstructCloud).
+  const SimplificationResult s = Simplify(fc.Nodes, fc.Arcs, tp, Progress());
+  CheckSimplification(fc, s, tp);
+  const std::vector<Arc>& arcs = tp >= 1 ? s.Arcs : fc.Arcs;
+  const std::vector<bool> survives = tp >= 1 ? s.Survives : std::vector<bool>(fc.Nodes.size(), true);
+  if (tp < 1)
+  {
+    REQUIRE(s.Pairs.empty());
+  }
+  const std::vector<Id> init =
+    InitializationEdges(fc.Nodes, NearestNeighboursFromDiagram(fc.Nodes, arcs));
+  const ReconstructionResult run = Reconstruct(fc.Nodes, arcs, survives, init, HUGE_VAL, Progress());
+  CheckReconstruction(fc, arcs, s, run, tp);
+  // Nestedness: the run at t_r = 2 is the Threshold < 2 prefix.
+  const ReconstructionResult at2 = Reconstruct(fc.Nodes, arcs, survives, init, 2.0, Progress());
+  for (std::size_t i = 0; i < fc.Nodes.size(); ++i)
+  {
+    REQUIRE((at2.Nodes[i].Step >= 0) == run.Contains(static_cast<Id>(i), 2.0));
+  }
+  const std::vector<Id> carriers = CellCarriers(run, tp >= 1 ? &s : nullptr);
+  if (!eager)
+  {
+    // Draw what `flowrecon reconstruct --tr 2` writes.
+    const std::vector<Id> draw = NodesToDraw(fc.Nodes, carriers, run, 2.0);
+    try
+    {
+      DrawStableManifolds(cloud, options, draw, fc, Progress(), "fuzz");
+    }
+    catch (const InputError& e)
+    {
+      std::fprintf(stderr, "FuzzCore: DrawStableManifolds refused its own complex: %s\n", e.what());
+      std::abort();
+    }
+    for (std::size_t t = 0; t < fc.Triangles.size(); ++t)
+    {
+      for (const Id p : fc.Triangles[t])
+        REQUIRE(p >= 0 && p < static_cast<Id>(fc.Points.size()));
+      REQUIRE(std::find(draw.begin(), draw.end(), fc.TriangleNode[t]) != draw.end());
+    }
+    for (std::size_t t = 0; t < fc.Tetrahedra.size(); ++t)
+    {
+      for (const Id p : fc.Tetrahedra[t])
+        REQUIRE(p >= 0 && p < static_cast<Id>(fc.Points.size()));
+    }
+  }
+  return 0;
+}

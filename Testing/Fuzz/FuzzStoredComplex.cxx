@@ -1,0 +1,281 @@
+// libFuzzer target: saved flow complexes (.vtm + pieces), read back as
+// `flowrecon reconstruct COMPLEX.vtm` and `flowrecon diagram COMPLEX.vtm` do.
+//
+// A .vtm names several files, which a fuzzer cannot mutate together, so one
+// file of a valid saved complex is substituted at a time. At start-up the
+// target computes the flow complex of 7 fixed points and writes four templates
+// into a temporary directory:
+//   0  ASCII, unsimplified, with stable and unstable manifolds
+//   1  ASCII, simplified (t_p = 1.5, so it has cancelled pairs, Owner arrays and
+//      a PersistencePairs block)
+//   2  ASCII, unsimplified, without stable manifolds (the reconstruction draws
+//      them from the stored samples, which must match the stored nodes)
+//   3  appended raw binary, LZ4 compressed: what `flowrecon complex` writes
+// Input layout: byte 0 picks the template (byte & 3) and the file of it
+// ((byte >> 2) modulo its number of files; file 0 is the .vtm, then the pieces
+// in name order); the remaining bytes replace that file. Then, as the CLI does:
+// vtkPointCloudReader checks the .vtm (it refuses corrupt sizes VTK's readers
+// would abort on); vtkXMLMultiBlockDataReader reads it; FromMultiBlock and
+// SimplificationFromMultiBlock convert it (these are fuzzed directly); the
+// persistence diagram of an unsimplified complex is computed (`diagram`); an
+// unsimplified complex is simplified at t_p = 1.1 by vtkFlowComplexSimplification
+// and vtkFlowReconstruction runs at t_r = 2 (`reconstruct`). Any outcome but a
+// crash, a sanitizer report, a hang or a huge allocation is fine.
+//
+// FLOWRECON_FUZZ_WRITE_SEEDS=DIR makes the target write one seed per file of
+// every template into DIR and exit (that is how corpus/stored_complex was made).
+#include "FlowComplexConversion.h"
+#include "Persistence.h"
+#include "Simplification.h"
+#include "vtkFlowComplex.h"
+#include "vtkFlowComplexSimplification.h"
+#include "vtkFlowReconstruction.h"
+#include "vtkPointCloudReader.h"
+
+#include "vtkCellArray.h"
+#include "vtkExecutive.h"
+#include "vtkFieldData.h"
+#include "vtkLogger.h"
+#include "vtkMultiBlockDataSet.h"
+#include "vtkNew.h"
+#include "vtkObject.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPointData.h"
+#include "vtkSmartPointer.h"
+#include "vtkXMLMultiBlockDataReader.h"
+#include "vtkXMLMultiBlockDataWriter.h"
+
+#include <tbb/global_control.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+
+namespace
+{
+struct Template
+{
+  std::string Vtm;                  ///< path of the .vtm
+  std::vector<std::string> Files;   ///< the .vtm, then its pieces in name order
+  std::vector<std::string> Content; ///< their valid bytes
+};
+
+std::string Root;
+std::vector<Template> Templates;
+
+std::string ReadAll(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+void WriteAll(const std::string& path, const char* data, std::size_t size)
+{
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out.write(data, static_cast<std::streamsize>(size));
+}
+
+Template WriteTemplate(vtkDataObject* complex, const std::string& name, bool ascii)
+{
+  Template t;
+  const fs::path dir = fs::path(Root) / name;
+  fs::create_directories(dir);
+  t.Vtm = (dir / "complex.vtm").string();
+  vtkNew<vtkXMLMultiBlockDataWriter> writer;
+  writer->SetFileName(t.Vtm.c_str());
+  writer->SetInputData(complex);
+  if (ascii)
+  {
+    writer->SetDataModeToAscii();
+  }
+  else
+  {
+    writer->SetDataModeToAppended();
+    writer->EncodeAppendedDataOff();
+    writer->SetCompressorTypeToLZ4();
+  }
+  if (!writer->Write())
+  {
+    std::fprintf(stderr, "FuzzStoredComplex: cannot write %s\n", t.Vtm.c_str());
+    std::abort();
+  }
+  std::vector<std::string> pieces;
+  for (const auto& entry : fs::recursive_directory_iterator(dir))
+  {
+    if (entry.is_regular_file() && entry.path() != fs::path(t.Vtm))
+    {
+      pieces.push_back(entry.path().string());
+    }
+  }
+  std::sort(pieces.begin(), pieces.end());
+  t.Files.push_back(t.Vtm);
+  t.Files.insert(t.Files.end(), pieces.begin(), pieces.end());
+  for (const std::string& f : t.Files)
+  {
+    t.Content.push_back(ReadAll(f));
+  }
+  return t;
+}
+
+void MakeTemplates()
+{
+  // Seven points in general position: a tetrahedron holding its circumcentre (a
+  // maximum) and three points outside; every index occurs, pairs cancel at 1.5.
+  const double xyz[7][3] = { { 1, 1.02, 0.97 }, { 1.01, -1, -0.98 }, { -0.99, 1, -1.03 },
+    { -1.02, -0.97, 1 }, { 2.5, 0.3, 0.2 }, { 0.1, 2.6, -0.3 }, { -0.2, 0.3, 2.7 } };
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  for (const auto& p : xyz)
+  {
+    points->InsertNextPoint(p);
+  }
+  vtkNew<vtkPolyData> cloud;
+  cloud->SetPoints(points);
+
+  auto complexOf = [&](bool stable) {
+    vtkNew<vtkFlowComplex> fc;
+    fc->SetInputData(cloud);
+    fc->SetComputeStableManifolds(stable);
+    fc->SetComputeUnstableManifolds(true);
+    fc->Update();
+    vtkSmartPointer<vtkMultiBlockDataSet> out = fc->GetOutput();
+    return out;
+  };
+  const vtkSmartPointer<vtkMultiBlockDataSet> plain = complexOf(true);
+  vtkNew<vtkFlowComplexSimplification> simplification;
+  simplification->SetInputData(plain);
+  simplification->SetPersistenceThreshold(1.5);
+  simplification->Update();
+  Templates.push_back(WriteTemplate(plain, "ascii", true));
+  Templates.push_back(WriteTemplate(simplification->GetOutputDataObject(0), "simplified", true));
+  Templates.push_back(WriteTemplate(complexOf(false), "nostable", true));
+  Templates.push_back(WriteTemplate(plain, "binary", false));
+}
+
+void RemoveRoot()
+{
+  std::error_code error;
+  fs::remove_all(Root, error);
+}
+
+void ReadAsTheCliDoes(const std::string& vtm)
+{
+  vtkNew<vtkPointCloudReader> check;
+  check->SetFileName(vtm.c_str());
+  if (!check->GetExecutive()->Update())
+  {
+    return; // refused with one line
+  }
+  vtkNew<vtkXMLMultiBlockDataReader> reader;
+  reader->SetFileName(vtm.c_str());
+  reader->Update();
+  vtkMultiBlockDataSet* data = vtkMultiBlockDataSet::SafeDownCast(reader->GetOutputDataObject(0));
+  vtkDataObject* criticalPoints = flowrecon::NamedBlock(data, "CriticalPoints");
+  if (!criticalPoints || !criticalPoints->GetFieldData()->GetArray("NodeCountByIndex"))
+  {
+    return; // not a flow complex: the CLI reads it as a point cloud
+  }
+  auto* points = vtkPolyData::SafeDownCast(criticalPoints);
+  const bool simplified = points && points->GetPointData()->GetArray("Cancelled");
+
+  // The conversions, directly.
+  flowrecon::FlowComplex fc;
+  std::string error;
+  if (flowrecon::FromMultiBlock(data, fc, error))
+  {
+    flowrecon::SimplificationResult s;
+    flowrecon::SimplificationFromMultiBlock(
+      data, static_cast<flowrecon::Id>(fc.Nodes.size()), s, error);
+    if (!simplified)
+    {
+      // flowrecon diagram
+      try
+      {
+        flowrecon::ComputePersistence(fc.Nodes, fc.Arcs);
+      }
+      catch (const std::exception&)
+      {
+        // an error the CLI reports; not a crash
+      }
+    }
+  }
+
+  // flowrecon reconstruct (the filters call the conversions again).
+  vtkSmartPointer<vtkDataObject> input = data;
+  vtkNew<vtkFlowComplexSimplification> simplification;
+  if (!simplified)
+  {
+    simplification->SetInputData(data);
+    simplification->SetPersistenceThreshold(1.1);
+    if (!simplification->GetExecutive()->Update())
+    {
+      return;
+    }
+    input = simplification->GetOutputDataObject(0);
+  }
+  vtkNew<vtkFlowReconstruction> reconstruction;
+  reconstruction->SetInputData(input);
+  reconstruction->SetReconstructionThreshold(2.0);
+  reconstruction->SetMaximumThreshold(2.0);
+  reconstruction->GetExecutive()->Update();
+}
+} // namespace
+
+extern "C" int LLVMFuzzerInitialize(int*, char***)
+{
+  static tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+  vtkObject::GlobalWarningDisplayOff();
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+  const char* tmp = std::getenv("TMPDIR");
+  std::string pattern = std::string(tmp && *tmp ? tmp : "/tmp") + "/fuzz-complex-XXXXXX";
+  if (!mkdtemp(&pattern[0]))
+  {
+    std::perror("mkdtemp");
+    std::abort();
+  }
+  Root = pattern;
+  std::atexit(RemoveRoot);
+  MakeTemplates();
+  if (const char* seeds = std::getenv("FLOWRECON_FUZZ_WRITE_SEEDS"))
+  {
+    fs::create_directories(seeds);
+    for (std::size_t t = 0; t < Templates.size(); ++t)
+    {
+      for (std::size_t f = 0; f < Templates[t].Files.size(); ++f)
+      {
+        const std::string name = fs::path(Templates[t].Files[f]).filename().string();
+        std::string seed(1, static_cast<char>(t | (f << 2)));
+        seed += Templates[t].Content[f];
+        const std::string path = (fs::path(seeds) / (std::to_string(t) + "-" +
+          (f == 0 ? std::string("vtm") : name))).string();
+        WriteAll(path, seed.data(), seed.size());
+      }
+    }
+    std::exit(0);
+  }
+  return 0;
+}
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
+{
+  if (size < 1)
+  {
+    return 0;
+  }
+  Template& t = Templates[data[0] & 3];
+  const std::size_t file = (data[0] >> 2) % t.Files.size();
+  WriteAll(t.Files[file], reinterpret_cast<const char*>(data + 1), size - 1);
+  ReadAsTheCliDoes(t.Vtm);
+  WriteAll(t.Files[file], t.Content[file].data(), t.Content[file].size());
+  return 0;
+}
