@@ -78,6 +78,19 @@ struct Timings
          Assembly = 0, Total = 0;
 };
 
+/// The filtration order of nodes a and b: by critical value, then index (a
+/// face before its cofaces when values tie), then id (determinism).
+inline bool FiltrationLess(const std::vector<Node>& nodes, Id a, Id b)
+{
+  const Node& x = nodes[a];
+  const Node& y = nodes[b];
+  if (x.Value != y.Value)
+  {
+    return x.Value < y.Value;
+  }
+  return x.Index != y.Index ? x.Index < y.Index : a < b;
+}
+
 struct FlowComplex
 {
   /// Vertices of all manifold geometry: the input points first (ids = input ids),

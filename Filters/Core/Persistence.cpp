@@ -57,15 +57,7 @@ std::vector<PersistencePair> ComputePersistenceByReduction(
       order.push_back(static_cast<Id>(i));
     }
   }
-  std::sort(order.begin(), order.end(), [&](Id a, Id b) {
-    const Node& x = nodes[a];
-    const Node& y = nodes[b];
-    if (x.Value != y.Value)
-    {
-      return x.Value < y.Value;
-    }
-    return x.Index != y.Index ? x.Index < y.Index : a < b;
-  });
+  std::sort(order.begin(), order.end(), [&](Id a, Id b) { return FiltrationLess(nodes, a, b); });
   std::vector<Id> position(nodes.size(), -1);
   for (std::size_t p = 0; p < order.size(); ++p)
   {

@@ -71,15 +71,7 @@ std::vector<Id> NodesWithinBudget(
       order.push_back(static_cast<Id>(i));
     }
   }
-  std::sort(order.begin(), order.end(), [&](Id a, Id b) {
-    const Node& x = nodes[a];
-    const Node& y = nodes[b];
-    if (x.Value != y.Value)
-    {
-      return x.Value < y.Value;
-    }
-    return x.Index != y.Index ? x.Index < y.Index : a < b;
-  });
+  std::sort(order.begin(), order.end(), [&](Id a, Id b) { return FiltrationLess(nodes, a, b); });
   Id used = 0;
   std::size_t k = 0;
   for (; k < order.size() && counts[order[k]] <= budget - used; ++k)
