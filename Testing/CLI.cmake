@@ -82,6 +82,11 @@ flowrecon_add_cli_test(CommaLineOff EXIT 1 STDERR_LINES 1
 flowrecon_add_cli_test(CommaLineObj EXIT 1 STDERR_LINES 1
   STDERR "comma_line\\.obj: no points found" ARGS info "${_d}/comma_line.obj")
 
+# Spacing some 1e-200 of the extent (found by fuzzing): the double constructions of
+# critical points underflow; one line instead of a silently wrong complex.
+flowrecon_add_cli_test(TinySpacing EXIT 1 STDERR_LINES 1
+  STDERR "tiny_spacing\\.xyz: points too close together" ARGS info "${_d}/tiny_spacing.xyz")
+
 # Results.
 flowrecon_add_cli_test(ComplexWritesVtm EXIT 0 STDERR_LINES 0
   STDOUT "tetrahedron\\.vtm: nodes by index 4 6 4 1, "

@@ -535,6 +535,19 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
   {
     fc.Nodes[a.Upper].Value = std::max(fc.Nodes[a.Upper].Value, fc.Nodes[a.Lower].Value);
   }
+  // The critical points are double constructions (exact combinatorics, rounded
+  // geometry): a cloud whose spacing is some 1e-20 of its extent makes them
+  // underflow or cancel (values 0 or NaN). Refuse rather than answer wrongly.
+  for (Id n = base1; n < fc.InfinityNode; ++n)
+  {
+    const Node& node = fc.Nodes[n];
+    if (!(node.Value > 0 && std::isfinite(node.Value) && std::isfinite(node.Location[0]) &&
+          std::isfinite(node.Location[1]) && std::isfinite(node.Location[2])))
+    {
+      throw InputError("points too close together for the size of the cloud (a critical value "
+                       "underflows in double precision); rescale or separate the clusters");
+    }
+  }
 
   fc.Tetrahedra.clear();
   fc.TetrahedronNode.clear();
