@@ -3,6 +3,7 @@
 #include "Progress.h"
 
 #include <algorithm>
+#include <limits>
 #include <string>
 
 namespace flowrecon
@@ -29,8 +30,13 @@ void ValidateArc(const std::vector<Node>& nodes, const Arc& a, std::size_t posit
 HasseDiagram::HasseDiagram(const std::vector<Node>& nodes, const std::vector<Arc>& arcs)
   : InLists(nodes.size())
   , OutLists(nodes.size())
+  , Removed(nodes.size(), 0)
 {
   const Id n = static_cast<Id>(nodes.size());
+  if (n > std::numeric_limits<std::int32_t>::max())
+  {
+    throw InputError("Hasse diagram: more than 2^31 nodes");
+  }
   // Reserve the lists (a flow complex has ~3 arcs per node: reallocation shows).
   std::vector<std::uint32_t> inDegree(nodes.size(), 0), outDegree(nodes.size(), 0);
   for (const Arc& a : arcs)
@@ -58,6 +64,10 @@ HasseDiagram::HasseDiagram(const std::vector<Node>& nodes, const std::vector<Arc
     if (k >= 0)
     {
       HalfArc& h = this->OutLists[a.Lower][static_cast<std::size_t>(k)];
+      if (a.Multiplicity > std::numeric_limits<std::int32_t>::max() - h.Multiplicity)
+      {
+        throw InputError("Hasse diagram: arc " + std::to_string(i) + " has too large a multiplicity");
+      }
       h.Multiplicity += a.Multiplicity;
       this->InLists[a.Upper][h.Twin].Multiplicity = h.Multiplicity;
     }
@@ -103,8 +113,10 @@ void HasseDiagram::Insert(Id lower, Id upper, int multiplicity)
 {
   std::vector<HalfArc>& out = this->OutLists[lower];
   std::vector<HalfArc>& in = this->InLists[upper];
-  out.push_back(HalfArc{ upper, multiplicity, static_cast<std::uint32_t>(in.size()) });
-  in.push_back(HalfArc{ lower, multiplicity, static_cast<std::uint32_t>(out.size() - 1) });
+  out.push_back(HalfArc{ static_cast<std::int32_t>(upper), static_cast<std::int32_t>(multiplicity),
+    static_cast<std::uint32_t>(in.size()) });
+  in.push_back(HalfArc{ static_cast<std::int32_t>(lower), static_cast<std::int32_t>(multiplicity),
+    static_cast<std::uint32_t>(out.size() - 1) });
 }
 
 void HasseDiagram::EraseOut(Id lower, std::size_t k)
@@ -112,18 +124,25 @@ void HasseDiagram::EraseOut(Id lower, std::size_t k)
   std::vector<HalfArc>& out = this->OutLists[lower];
   const Id upper = out[k].Node;
   const std::size_t j = out[k].Twin;
-  // Swap-and-pop in both lists; the moved entries' mirrors learn where they went.
+  // Swap-and-pop in both lists; the moved entries' mirrors learn where they
+  // went (a removed node has no mirror left).
   if (k + 1 != out.size())
   {
     out[k] = out.back();
-    this->InLists[out[k].Node][out[k].Twin].Twin = static_cast<std::uint32_t>(k);
+    if (!this->Removed[out[k].Node])
+    {
+      this->InLists[out[k].Node][out[k].Twin].Twin = static_cast<std::uint32_t>(k);
+    }
   }
   out.pop_back();
   std::vector<HalfArc>& in = this->InLists[upper];
   if (j + 1 != in.size())
   {
     in[j] = in.back();
-    this->OutLists[in[j].Node][in[j].Twin].Twin = static_cast<std::uint32_t>(j);
+    if (!this->Removed[in[j].Node])
+    {
+      this->OutLists[in[j].Node][in[j].Twin].Twin = static_cast<std::uint32_t>(j);
+    }
   }
   in.pop_back();
 }
@@ -147,17 +166,11 @@ int HasseDiagram::FlipParity(Id lower, Id upper)
   return 1;
 }
 
-void HasseDiagram::Isolate(Id node)
+void HasseDiagram::Remove(Id node)
 {
-  while (!this->OutLists[node].empty())
-  {
-    this->EraseOut(node, this->OutLists[node].size() - 1);
-  }
-  while (!this->InLists[node].empty())
-  {
-    const HalfArc& h = this->InLists[node].back();
-    this->EraseOut(h.Node, h.Twin);
-  }
+  this->Removed[node] = 1;
+  std::vector<HalfArc>().swap(this->InLists[node]);
+  std::vector<HalfArc>().swap(this->OutLists[node]);
 }
 
 std::vector<Arc> HasseDiagram::Arcs() const
@@ -166,7 +179,7 @@ std::vector<Arc> HasseDiagram::Arcs() const
   std::size_t count = 0;
   for (const std::vector<HalfArc>& out : this->OutLists)
   {
-    count += out.size();
+    count += out.size(); // an upper bound: entries of removed nodes are skipped
   }
   arcs.reserve(count);
   for (Id lower = 0; lower < this->NodeCount(); ++lower)
@@ -174,7 +187,10 @@ std::vector<Arc> HasseDiagram::Arcs() const
     const std::size_t first = arcs.size();
     for (const HalfArc& h : this->OutLists[lower])
     {
-      arcs.push_back(Arc{ lower, h.Node, h.Multiplicity });
+      if (!this->Removed[h.Node])
+      {
+        arcs.push_back(Arc{ lower, h.Node, h.Multiplicity });
+      }
     }
     std::sort(arcs.begin() + static_cast<std::ptrdiff_t>(first), arcs.end(),
       [](const Arc& a, const Arc& b) { return a.Upper < b.Upper; });

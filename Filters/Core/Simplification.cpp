@@ -132,7 +132,7 @@ private:
     this->Lowers.clear();
     for (const HasseDiagram::HalfArc& x : this->Diagram.In(b))
     {
-      if (x.Node != a && x.Multiplicity % 2 == 1)
+      if (x.Node != a && x.Multiplicity % 2 == 1 && !this->Diagram.IsRemoved(x.Node))
       {
         this->Lowers.push_back(x.Node);
       }
@@ -142,7 +142,7 @@ private:
     owners.clear();
     for (const HasseDiagram::HalfArc& y : this->Diagram.Out(a))
     {
-      if (y.Node == b)
+      if (y.Node == b || this->Diagram.IsRemoved(y.Node))
       {
         continue;
       }
@@ -156,8 +156,8 @@ private:
     }
     std::sort(owners.begin(), owners.end());
     this->DirectOwners[b] = owners;
-    this->Diagram.Isolate(a);
-    this->Diagram.Isolate(b);
+    this->Diagram.Remove(a);
+    this->Diagram.Remove(b);
     this->Alive[a] = false;
     this->Alive[b] = false;
     for (const Id x : this->Lowers)
@@ -238,9 +238,9 @@ SimplificationResult Simplify(const std::vector<Node>& nodes, std::vector<Arc>&&
   {
     throw InputError("persistence threshold is not a number");
   }
-  // Two 16-byte half-arcs per arc and two lists per node, plus the queue and
-  // the result's copy of the arcs (the input's are freed once read).
-  RequireMemory(56.0 * static_cast<double>(arcs.size()) + 80.0 * static_cast<double>(nodes.size()),
+  // Two 12-byte half-arcs per arc and two lists per node, plus the queue and
+  // the result's 12-byte copy of the arcs (the input's are freed once read).
+  RequireMemory(40.0 * static_cast<double>(arcs.size()) + 80.0 * static_cast<double>(nodes.size()),
     "simplifying a Hasse diagram of " + std::to_string(arcs.size()) + " arcs",
     "use t_p 0 (no simplification) or fewer points");
   Simplifier simplifier(nodes, arcs);
