@@ -1065,6 +1065,433 @@ std::string ReadWholeFile(const std::string& file, std::string_view stopAfter = 
 // ---------------------------------------------------------------------------
 // Files read by VTK readers.
 
+// The whitespace-separated tokens of a legacy file, as vtkDataReader's `>>`
+// reads them, with its way of skipping a line or binary bytes.
+class LegacyTokens
+{
+public:
+  LegacyTokens(std::string_view text, std::size_t pos)
+    : Text(text)
+    , Pos(pos)
+  {
+  }
+
+  bool Next(std::string_view& token)
+  {
+    const auto space = [](char c) { return c == ' ' || (c >= '\t' && c <= '\r'); };
+    while (this->Pos < this->Text.size() && space(this->Text[this->Pos]))
+    {
+      ++this->Pos;
+    }
+    const std::size_t start = this->Pos;
+    while (this->Pos < this->Text.size() && !space(this->Text[this->Pos]))
+    {
+      ++this->Pos;
+    }
+    token = this->Text.substr(start, this->Pos - start);
+    return !token.empty();
+  }
+
+  // To the start of the next line; false at the end of the text.
+  bool SkipLine()
+  {
+    const std::size_t end = this->Text.find('\n', this->Pos);
+    this->Pos = end == std::string_view::npos ? this->Text.size() : end + 1;
+    return end != std::string_view::npos;
+  }
+
+  bool Skip(unsigned long long bytes)
+  {
+    if (bytes > this->Left())
+    {
+      return false;
+    }
+    this->Pos += static_cast<std::size_t>(bytes);
+    return true;
+  }
+
+  // Skips the METADATA block vtkDataReader::ReadArray reads after an array's
+  // values, if one follows: lines up to an empty one.
+  void SkipMetadata()
+  {
+    std::size_t p = this->Text.find_first_not_of(" \r\n", this->Pos);
+    if (p == std::string_view::npos || ToLower(this->Text.substr(p, 8)) != "metadata")
+    {
+      return;
+    }
+    this->Pos = p;
+    while (this->SkipLine())
+    {
+      const std::size_t end = std::min(this->Text.find('\n', this->Pos), this->Text.size());
+      if (Trim(this->Text.substr(this->Pos, end - this->Pos)).empty())
+      {
+        break;
+      }
+    }
+  }
+
+  unsigned long long Left() const { return this->Text.size() - this->Pos; }
+
+  std::string_view Text;
+  std::size_t Pos;
+};
+
+// How vtkDataReader::ReadArray stores a value of a legacy type in a binary
+// file: its size in bytes, or one of these.
+
+enum LegacyValue : int
+{
+  LegacyUnknown = -1, // a type it does not read
+  LegacyBit = -2,
+  LegacyString = -3, // length-prefixed
+  LegacyText = -4    // a type and a value, as in ASCII files
+};
+
+int LegacyValueSize(std::string_view type)
+{
+  // ReadArray's tests in its order: most by prefix, char and signed_char exactly.
+  static const std::pair<const char*, int> types[] = { { "bit", LegacyBit }, { "unsigned_char", 1 },
+    { "short", 2 }, { "unsigned_short", 2 }, { "vtkidtype", 4 }, { "int", 4 },
+    { "unsigned_int", 4 }, { "long", 8 }, { "unsigned_long", 8 }, { "vtktypeint64", 8 },
+    { "vtktypeuint64", 8 }, { "float", 4 }, { "double", 8 }, { "string", LegacyString },
+    { "utf8_string", LegacyString }, { "variant", LegacyText } };
+  const std::string t = ToLower(type);
+  if (t == "char" || t == "signed_char")
+  {
+    return 1;
+  }
+  for (const auto& entry : types)
+  {
+    if (t.compare(0, std::strlen(entry.first), entry.first) == 0)
+    {
+      return entry.second;
+    }
+  }
+  return LegacyUnknown;
+}
+
+// Skips the `count` length-prefixed strings of a binary string array (the
+// two top bits of the first byte give the size of the length); false if the
+// file ends first.
+bool SkipBinaryStrings(LegacyTokens& tokens, unsigned long long count)
+{
+  for (unsigned long long i = 0; i < count; ++i)
+  {
+    if (tokens.Left() == 0)
+    {
+      return false;
+    }
+    const unsigned char first = static_cast<unsigned char>(tokens.Text[tokens.Pos]);
+    const std::size_t header = std::size_t(1) << (3 - (first >> 6)); // 1, 2, 4 or 8 bytes
+    if (tokens.Left() < header)
+    {
+      return false;
+    }
+    unsigned long long length = 0;
+    for (std::size_t k = 0; k < header; ++k)
+    {
+      length = (length << 8) | static_cast<unsigned char>(tokens.Text[tokens.Pos + k]);
+    }
+    if (header < 8)
+    {
+      length &= (1ULL << (8 * header - 2)) - 1;
+    }
+    if (!tokens.Skip(header) || !tokens.Skip(length))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+// Skips the `count` values of an array of a known type; false if the file
+// ends first.
+bool SkipLegacyValues(LegacyTokens& tokens, int size, unsigned long long count, bool binary)
+{
+  std::string_view token;
+  if (count == 0)
+  {
+    return true;
+  }
+  if (size == LegacyString)
+  {
+    // A newline, then a line (ASCII) or a length-prefixed string (binary) each.
+    tokens.SkipLine();
+    if (binary)
+    {
+      return SkipBinaryStrings(tokens, count);
+    }
+    for (unsigned long long i = 0; i < count; ++i)
+    {
+      if (!tokens.SkipLine() && i + 1 < count)
+      {
+        return false;
+      }
+    }
+    return true;
+  }
+  if (binary && size != LegacyText)
+  {
+    tokens.SkipLine();
+    return tokens.Skip(
+      size == LegacyBit ? (count + 7) / 8 : count * static_cast<unsigned long long>(size));
+  }
+  if (size == LegacyText)
+  {
+    for (unsigned long long i = 0; i < 2 * count; ++i)
+    {
+      if (!tokens.Next(token))
+      {
+        return false;
+      }
+    }
+    return true;
+  }
+  // `>>` stops at the first word that is not a number, and VTK reads on from
+  // there: stop before it too.
+  double value = 0;
+  for (unsigned long long i = 0; i < count; ++i)
+  {
+    if (!tokens.Next(token) || ParseNumber(token, value) != Number::Ok)
+    {
+      tokens.Pos = static_cast<std::size_t>(token.data() - tokens.Text.data());
+      return false;
+    }
+  }
+  return true;
+}
+
+// Walks a FIELD block (the tokens after its keyword) as
+// vtkDataReader::ReadFieldData reads it. Before POINT_DATA and CELL_DATA,
+// VTK 9.2's readers use what it returns unchecked (a null pointer when the
+// header lacks the name or the count, or an array has an unknown type), so
+// refuse whatever it would not read; each count must fit the file.
+void CheckFieldBlock(const std::string& file, LegacyTokens& tokens, bool binary)
+{
+  // Problems are reported on the line of the keyword or of the array.
+  const auto lineOf = [&tokens](std::string_view token) {
+    return 1 + static_cast<std::size_t>(std::count(tokens.Text.data(), token.data(), '\n'));
+  };
+  const std::size_t line = lineOf(tokens.Text.substr(tokens.Pos));
+  std::string_view name, token;
+  long long arrays = 0;
+  if (!tokens.Next(name) || name.size() > 255 || !tokens.Next(token) ||
+    !ParseCount(token, arrays))
+  {
+    Fail(file, line, "FIELD block without a name and an array count ('FIELD name arrays')");
+  }
+  const std::string block = "FIELD block " + Quote(name);
+  if (arrays > static_cast<long long>(tokens.Left()))
+  {
+    Fail(file, line,
+      block + " announces " + std::to_string(arrays) + " arrays, more than the file can hold");
+  }
+  for (long long a = 0; a < arrays; ++a)
+  {
+    std::string_view array;
+    if (!tokens.Next(array) || array.size() > 255)
+    {
+      Fail(file, line,
+        block + ": the file ends before array " + std::to_string(a + 1) + " of " +
+          std::to_string(arrays));
+    }
+    if (array == "NULL_ARRAY")
+    {
+      continue;
+    }
+    const std::size_t at = lineOf(array);
+    const std::string what = block + ", array " + Quote(array);
+    std::string_view fields[3];
+    long long components = 0, tuples = 0;
+    if (!tokens.Next(fields[0]) || !tokens.Next(fields[1]) || !tokens.Next(fields[2]) ||
+      !ParseCount(fields[0], components) || !ParseCount(fields[1], tuples) || components == 0)
+    {
+      Fail(file, at, what + ": expected 'name components tuples type'");
+    }
+    const int size = LegacyValueSize(fields[2]);
+    if (size == LegacyUnknown)
+    {
+      Fail(file, at, what + ": unknown type " + Quote(fields[2]));
+    }
+    // Every value takes at least a byte, or a bit.
+    const unsigned long long room = tokens.Left() * (size == LegacyBit ? 8ULL : 1ULL);
+    const auto values = static_cast<unsigned long long>(components);
+    if (values > room || static_cast<unsigned long long>(tuples) > room / values)
+    {
+      Fail(file, at,
+        what + ": " + std::to_string(components) + " x " + std::to_string(tuples) +
+          " values, more than the file can hold");
+    }
+    if (!SkipLegacyValues(tokens, size, values * static_cast<unsigned long long>(tuples), binary))
+    {
+      Fail(file, at, what + ": the file ends inside its values (truncated?)");
+    }
+    tokens.SkipMetadata();
+  }
+}
+
+// Skips the values of an array whose count `name` announced and whose type
+// follows ("POINTS n type", "X_COORDINATES n type", "OFFSETS type"...);
+// false if the file ends first or the type is unknown (VTK stops there).
+bool SkipLegacyArray(
+  LegacyTokens& tokens, unsigned long long count, unsigned long long perCount, bool binary)
+{
+  std::string_view type;
+  const int size = tokens.Next(type) ? LegacyValueSize(type) : LegacyUnknown;
+  if (size == LegacyUnknown || count > tokens.Left() || perCount * count > 8 * tokens.Left() ||
+    !SkipLegacyValues(tokens, size, perCount * count, binary))
+  {
+    return false;
+  }
+  tokens.SkipMetadata();
+  return true;
+}
+
+// Before version 5, a cell list is `size` ints, each cell its point count and
+// its points; vtkCellArray::ImportLegacyFormat trusts the counts (reads past
+// the list). Checks them where the values can be read (VTK stops at the first
+// ASCII word that is not a number).
+void CheckLegacyCells(LegacyTokens tokens, unsigned long long size, bool binary,
+  const std::string& keyword, const std::string& file)
+{
+  const char* at = tokens.Text.data() + tokens.Pos;
+  const std::size_t line = 1 + static_cast<std::size_t>(std::count(tokens.Text.data(), at, '\n'));
+  if (binary)
+  {
+    tokens.SkipLine();
+  }
+  long long left = 0; // points of the current cell still to come
+  std::string_view token;
+  for (unsigned long long i = 0; i < size; ++i)
+  {
+    long long value = 0;
+    if (binary)
+    {
+      if (tokens.Left() < 4)
+      {
+        return;
+      }
+      std::uint32_t bits = 0; // big-endian
+      for (int k = 0; k < 4; ++k)
+      {
+        bits = (bits << 8) | static_cast<unsigned char>(tokens.Text[tokens.Pos++]);
+      }
+      value = static_cast<std::int32_t>(bits);
+    }
+    else if (!tokens.Next(token) ||
+      std::from_chars(token.data(), token.data() + token.size(), value).ec != std::errc())
+    {
+      return;
+    }
+    if (left > 0)
+    {
+      --left;
+    }
+    else if (value < 0 || static_cast<unsigned long long>(value) > size - i - 1)
+    {
+      Fail(file, line,
+        Quote(keyword) + ": a cell of " + std::to_string(value) +
+          " points runs past the end of the cell list (corrupt file?)");
+    }
+    else
+    {
+      left = value;
+    }
+  }
+}
+
+// Skips the data of a geometry keyword that announces counts, as VTK's legacy
+// readers read it, so that binary values are not taken for keywords; false
+// where it stops short (bad count, unknown type, end of the file).
+bool SkipLegacyGeometry(LegacyTokens& tokens, const std::string& keyword, int majorVersion,
+  bool binary, const std::string& file)
+{
+  std::string_view token;
+  long long n = 0, size = 0;
+  if (!tokens.Next(token) || !ParseCount(token, n))
+  {
+    return false;
+  }
+  if (keyword.compare(0, 6, "points") == 0)
+  {
+    return SkipLegacyArray(tokens, static_cast<unsigned long long>(n), 3, binary);
+  }
+  if (keyword.find("_coordinates") != std::string::npos)
+  {
+    return SkipLegacyArray(tokens, static_cast<unsigned long long>(n), 1, binary);
+  }
+  if (keyword.compare(0, 10, "cell_types") == 0)
+  {
+    return SkipLegacyValues(tokens, 4, static_cast<unsigned long long>(n), binary);
+  }
+  // Cells: "KEYWORD n size", then (version 5 and later) OFFSETS and
+  // CONNECTIVITY arrays of n and size values, or (before) size ints.
+  if (!tokens.Next(token) || !ParseCount(token, size))
+  {
+    return false;
+  }
+  if (majorVersion < 5)
+  {
+    CheckLegacyCells(tokens, static_cast<unsigned long long>(size), binary, keyword, file);
+    return SkipLegacyValues(tokens, 4, static_cast<unsigned long long>(size), binary);
+  }
+  return n < 1 ||
+    (tokens.Next(token) && SkipLegacyArray(tokens, static_cast<unsigned long long>(n), 1, binary) &&
+      tokens.Next(token) &&
+      SkipLegacyArray(tokens, static_cast<unsigned long long>(size), 1, binary));
+}
+
+// Checks the FIELD blocks VTK reads before any POINT_DATA or CELL_DATA (those
+// of the data set or data object; VTK checks the others), walking the
+// geometry as VTK reads it. Keywords are matched as vtkDataReader does:
+// case-insensitive prefixes.
+void CheckLegacyFieldBlocks(const std::string& file, std::string_view text)
+{
+  // As vtkDataReader::ReadHeader: the version is "%d.%d" (0 otherwise), the
+  // file type the first word of the third line.
+  int major = 0, minor = 0;
+  const std::string first(text.substr(0, std::min<std::size_t>(text.find('\n'), 255)));
+  const char* version = first.c_str() + std::min<std::size_t>(first.size(), 22);
+  if (std::sscanf(version, "%d.%d", &major, &minor) != 2)
+  {
+    major = 0;
+  }
+  std::size_t start = text.find('\n');
+  start = start == std::string_view::npos ? text.size() : text.find('\n', start + 1);
+  LegacyTokens tokens(text, start == std::string_view::npos ? text.size() : start + 1);
+  std::string_view token;
+  const bool binary = tokens.Next(token) && ToLower(token.substr(0, 6)) == "binary";
+  static const char* const geometry[] = { "points", "x_coordinates", "y_coordinates",
+    "z_coordinates", "vertices", "lines", "polygons", "triangle_strips", "cells", "cell_types" };
+  while (tokens.Next(token))
+  {
+    const std::string keyword = ToLower(token.substr(0, 16));
+    const auto is = [&keyword](const char* k) {
+      return keyword.compare(0, std::strlen(k), k) == 0;
+    };
+    if (is("point_data") || is("cell_data"))
+    {
+      return;
+    }
+    if (is("metadata"))
+    {
+      tokens.Pos -= token.size();
+      tokens.SkipMetadata();
+    }
+    else if (ToLower(token).find("field") != std::string::npos)
+    {
+      // Also after a number: `>>` reads "1" of "1field" as a value, then the
+      // keyword "field" (the rest of the word).
+      CheckFieldBlock(file, tokens, binary);
+    }
+    else if (std::any_of(std::begin(geometry), std::end(geometry), is))
+    {
+      // VTK's readers go on after most failures, from where they stopped.
+      SkipLegacyGeometry(tokens, keyword, major, binary, file);
+    }
+  }
+}
+
 // vtkDataReader trusts the counts of a legacy file (a huge POINTS count makes
 // it fail an allocation and abort, a negative one crashes it), so check them
 // against the file size first: every value takes at least one byte. The version
@@ -1108,8 +1535,10 @@ void CheckLegacyFile(const std::string& file, std::string_view text)
     long long count = 0, tuples = 0;
     double ignored = 0;
     bool ok = true;
-    if (std::find_if(std::begin(keywords), std::end(keywords),
-          [&keyword](const char* k) { return keyword == k; }) != std::end(keywords))
+    // vtkDataReader matches keywords by prefix ("POINTSX" is POINTS).
+    if (std::find_if(std::begin(keywords), std::end(keywords), [&keyword](const char* k) {
+          return keyword.compare(0, std::strlen(k), k) == 0;
+        }) != std::end(keywords))
     {
       for (std::size_t i = 1; i < fields.size(); ++i)
       {
@@ -1118,6 +1547,12 @@ void CheckLegacyFile(const std::string& file, std::string_view text)
           ok = ok && fits(count, keyword == "points" ? 3 : 1);
         }
       }
+    }
+    else if (keyword == "data" && fields.size() > 1 && integer(fields[1], count))
+    {
+      // The length of a vector in an INFORMATION block (METADATA after an array):
+      // VTK reserves room for it.
+      ok = fits(count, 1);
     }
     else if (fields.size() == 4 && ParseNumber(fields[0], ignored) == Number::Invalid &&
       integer(fields[1], count) && integer(fields[2], tuples) &&
@@ -1132,6 +1567,7 @@ void CheckLegacyFile(const std::string& file, std::string_view text)
         "invalid count in " + Quote(Trim(line)) + " (negative, or larger than the file)");
     }
   }
+  CheckLegacyFieldBlocks(file, text);
 }
 
 // Strict base64: false on any character outside the alphabet (padding included).
@@ -1167,15 +1603,23 @@ bool DecodeBase64(std::string_view text, std::string& bytes)
 // compressors reaches: LZ4 spends at least a byte per 255 bytes of a run,
 // deflate 2 bits per 258 bytes; LZMA reaches about 7100 on zeros (measured;
 // 16384 leaves room). 1 when the file is not compressed.
+long long RatioOf(const std::string& compressor)
+{
+  return compressor.empty()                    ? 1
+    : compressor == "vtkLZ4DataCompressor"  ? 255
+    : compressor == "vtkZLibDataCompressor" ? 1032
+                                            : 16384;
+}
+
 long long MaximumRatio(std::string_view header)
 {
   const auto has = [&header](const char* name) {
     return header.find(std::string("compressor=\"") + name + '"') != std::string_view::npos;
   };
   return header.find("compressor=") == std::string_view::npos ? 1
-    : has("vtkLZ4DataCompressor")                             ? 255
-    : has("vtkZLibDataCompressor")                            ? 1032
-                                                              : 16384;
+    : has("vtkLZ4DataCompressor")                             ? RatioOf("vtkLZ4DataCompressor")
+    : has("vtkZLibDataCompressor")                            ? RatioOf("vtkZLibDataCompressor")
+                                                              : RatioOf("other");
 }
 
 // The fewest bits a value of an XML data array takes in the file before
@@ -1189,16 +1633,40 @@ int BitsPerValue(std::string_view type, std::string_view format)
                                        : std::atoi(type.data() + digits);
 }
 
+// The uncompressed size of a compression header (number of blocks, block size,
+// last block size, 0 for a full one) against the bytes of values to be read.
+std::string CheckUncompressedSize(unsigned long long blocks, unsigned long long blockSize,
+  unsigned long long lastSize, unsigned long long needed)
+{
+  if (blocks == 0)
+  {
+    return needed > 0 ? "its compression header announces no block for " +
+        std::to_string(needed) + " bytes of values"
+      : lastSize > 0
+      ? "its compression header announces no block but a last block of " +
+        std::to_string(lastSize) + " bytes"
+      : std::string();
+  }
+  // The blocks were checked against the file: no overflow.
+  const unsigned long long total = (blocks - 1) * blockSize + (lastSize > 0 ? lastSize : blockSize);
+  return total >= needed ? std::string()
+                         : "its compression header announces " + std::to_string(total) +
+      " bytes, fewer than its " + std::to_string(needed) + " bytes of values";
+}
+
 // The block header of a binary data array is its byte count or, compressed,
 // (number of blocks, block size, last block size, compressed size of each
 // block); vtkXMLDataParser allocates a table of "number of blocks" entries and
 // a buffer of "block size" bytes from it unchecked. So each size must fit in
 // the `available` bytes (base64: characters, 3 bytes per 4) that follow, and
 // each block must not expand more than `ratio` times. read(n) gives the first
-// n bytes or characters. Returns the problem, or "".
+// n bytes or characters. The blocks must also hold the `needed` bytes of
+// values that will be read: vtkXMLDataParser computes the uncompressed size
+// as (blocks - 1) x block size + last block size, which wraps around with no
+// block, and then reads a block that is not there. Returns the problem, or "".
 template <class Read>
 std::string CheckBlockHeader(const Read& read, long long available, bool base64, bool compressed,
-  std::size_t wordSize, bool bigEndian, long long ratio)
+  std::size_t wordSize, bool bigEndian, long long ratio, unsigned long long needed = 0)
 {
   std::vector<unsigned long long> words;
   const auto decode = [&](std::size_t count) {
@@ -1262,10 +1730,10 @@ std::string CheckBlockHeader(const Read& read, long long available, bool base64,
         std::to_string(packed) + " compressed bytes, which this file cannot hold";
     }
   }
-  return std::string();
+  return CheckUncompressedSize(words[0], words[1], words[2], needed);
 }
 
-void CheckCellOffsets(const std::string& file, long long limit);
+void CheckParsedXml(const std::string& file, std::string_view text, long long limit);
 
 // vtkXMLReader aborts the process when an allocation fails and loops on absurd
 // component counts, so the counts in the XML header (and in the files a .vtm or
@@ -1466,10 +1934,7 @@ void CheckXmlCounts(const std::string& file, int depth = 0)
       }
     }
   }
-  if (header.find("offsets\"") != std::string_view::npos)
-  {
-    CheckCellOffsets(file, limit);
-  }
+  CheckParsedXml(file, text, limit);
 }
 
 // Collects the messages VTK sends to its output window while installed, so a
@@ -1562,11 +2027,216 @@ bool ReadLargest(vtkXMLDataParser* parser, vtkXMLDataElement* array, vtkTypeUInt
   return read == count;
 }
 
+// What the parser needs to find the block header of an array, from the
+// attributes it parsed (quotes, entities or a '>' in an attribute value can
+// hide an array from the text scan of CheckXmlCounts).
+struct ParsedXml
+{
+  std::string File;
+  std::string_view Text; // the file up to a little after <AppendedData
+  long long Size = 0;
+  vtkTypeInt64 Appended = 0; // where the appended data starts, 0 if none
+  bool Base64Appended = true;
+  bool Compressed = false;
+  std::size_t WordSize = 4;
+  bool BigEndian = false;
+  long long Ratio = 1;
+};
+
+// `n` bytes of the file from `at` (fewer at its end).
+std::string ReadAt(const ParsedXml& xml, long long at, std::size_t n)
+{
+  if (at >= 0 && static_cast<std::size_t>(at) + n <= xml.Text.size())
+  {
+    return std::string(xml.Text.substr(static_cast<std::size_t>(at), n));
+  }
+  std::ifstream in(xml.File, std::ios::binary);
+  in.seekg(static_cast<std::streamoff>(at));
+  std::string bytes(n, '\0');
+  in.read(&bytes[0], static_cast<std::streamsize>(n));
+  bytes.resize(static_cast<std::size_t>(std::max<std::streamsize>(in.gcount(), 0)));
+  return bytes;
+}
+
+// Where the inline data of an element starts, as
+// vtkXMLDataParser::SeekInlineDataPosition finds it: after the first '>' from
+// its start tag, past white space; -1 if the file ends first.
+long long InlineDataStart(const ParsedXml& xml, vtkXMLDataElement* element)
+{
+  constexpr std::size_t chunk = 1 << 16;
+  bool tagClosed = false;
+  for (long long at = element->GetXMLByteIndex(); at >= 0 && at < xml.Size;
+       at += static_cast<long long>(chunk))
+  {
+    const std::string bytes = ReadAt(xml, at, chunk);
+    std::size_t i = 0;
+    if (!tagClosed)
+    {
+      i = bytes.find('>');
+      if (i == std::string::npos)
+      {
+        continue;
+      }
+      tagClosed = true;
+      ++i;
+    }
+    i = bytes.find_first_not_of(" \t\r\n", i);
+    if (i != std::string::npos)
+    {
+      return at + static_cast<long long>(i);
+    }
+  }
+  return -1;
+}
+
+// The problem with the block header of a binary or appended data array
+// (CheckBlockHeader), or "".
+std::string CheckParsedHeader(
+  const ParsedXml& xml, vtkXMLDataElement* array, unsigned long long needed)
+{
+  const char* format = array->GetAttribute("format");
+  const bool appended = format && std::strcmp(format, "appended") == 0;
+  long long at = -1;
+  vtkTypeInt64 offset = 0;
+  if (appended)
+  {
+    at = xml.Appended > 0 && array->GetScalarAttribute("offset", offset) && offset >= 0 &&
+        offset < xml.Size - xml.Appended
+      ? xml.Appended + offset
+      : -1;
+  }
+  else if (format && std::strcmp(format, "binary") == 0)
+  {
+    at = InlineDataStart(xml, array);
+  }
+  else
+  {
+    return std::string(); // ASCII: no header
+  }
+  if (at < 0)
+  {
+    return "no data where its header should be";
+  }
+  const auto read = [&](std::size_t n) {
+    std::string bytes = ReadAt(xml, at, n);
+    return appended ? bytes : bytes.substr(0, bytes.find('<'));
+  };
+  return CheckBlockHeader(read, xml.Size - at, !appended || xml.Base64Appended, xml.Compressed,
+    xml.WordSize, xml.BigEndian, xml.Ratio, needed);
+}
+
+// Every data array of the parsed file (DataArray, or Array in field data).
+void CheckParsedArrays(const ParsedXml& xml, vtkXMLDataElement* root)
+{
+  std::vector<vtkXMLDataElement*> stack{ root }; // no recursion: nesting may be deep
+  while (!stack.empty())
+  {
+    vtkXMLDataElement* element = stack.back();
+    stack.pop_back();
+    for (int i = 0; i < element->GetNumberOfNestedElements(); ++i)
+    {
+      stack.push_back(element->GetNestedElement(i));
+    }
+    const std::string name = element->GetName() ? element->GetName() : "";
+    const std::string problem =
+      name == "DataArray" || name == "Array" ? CheckParsedHeader(xml, element, 0) : "";
+    if (!problem.empty())
+    {
+      const char* arrayName = element->GetAttribute("Name");
+      Fail(xml.File, 0,
+        "data array " + Quote(arrayName ? arrayName : "") + ": " + problem +
+          " (corrupt or truncated file?)");
+    }
+  }
+}
+
 // VTK sizes the connectivity of a cell block by the last of its offsets (the
 // faces of polyhedra by the largest face offset), data the header checks do
 // not see: read them with VTK's own parser, which knows every encoding and
-// compressor, once CheckXmlCounts has checked the block headers it trusts.
-void CheckCellOffsets(const std::string& file, long long limit)
+// compressor, once their block headers were checked, including that they
+// hold the values read. Only DataArray elements are cell arrays to VTK.
+void CheckCellOffsets(
+  const ParsedXml& xml, vtkXMLDataParser* parser, vtkXMLDataElement* data, long long limit)
+{
+  for (int p = 0, piece = 0; p < data->GetNumberOfNestedElements(); ++p)
+  {
+    vtkXMLDataElement* ePiece = data->GetNestedElement(p);
+    if (std::strcmp(ePiece->GetName(), "Piece") != 0)
+    {
+      continue;
+    }
+    for (int b = 0; b < ePiece->GetNumberOfNestedElements(); ++b)
+    {
+      vtkXMLDataElement* block = ePiece->GetNestedElement(b);
+      long long cells = 0; // NumberOfVerts, ..., NumberOfCells
+      if (!ePiece->GetScalarAttribute(
+            (std::string("NumberOf") + block->GetName()).c_str(), cells) ||
+        cells <= 0)
+      {
+        continue;
+      }
+      const std::string where =
+        "piece " + std::to_string(piece) + ", " + block->GetName() + ": array ";
+      for (int a = 0; a < block->GetNumberOfNestedElements(); ++a)
+      {
+        vtkXMLDataElement* array = block->GetNestedElement(a);
+        const char* arrayName = array->GetAttribute("Name");
+        int type = 0;
+        if (std::strcmp(array->GetName(), "DataArray") != 0 || !arrayName ||
+          (std::strcmp(arrayName, "offsets") != 0 && std::strcmp(arrayName, "faceoffsets") != 0) ||
+          !array->GetWordTypeAttribute("type", type))
+        {
+          continue;
+        }
+        const bool faces = std::strcmp(arrayName, "faceoffsets") == 0;
+        // Both reads below end at value `cells` - 1.
+        const std::string problem = CheckParsedHeader(xml, array,
+          static_cast<unsigned long long>(cells) *
+            static_cast<unsigned long long>(vtkAbstractArray::GetDataTypeSize(type)));
+        if (!problem.empty())
+        {
+          Fail(xml.File, 0,
+            where + Quote(arrayName) + ": " + problem + " (corrupt or truncated file?)");
+        }
+        double largest = 0;
+        // Offsets increase (VTK refuses them otherwise): the last is the largest.
+        if (ReadLargest(parser, array, faces ? 0 : cells - 1, faces ? cells : 1, largest) &&
+          largest > static_cast<double>(limit))
+        {
+          char count[32];
+          std::snprintf(count, sizeof(count), "%.15g", largest);
+          Fail(xml.File, 0,
+            where + Quote(arrayName) + " announces " + count +
+              " connectivity values, more than the file can hold (corrupt or truncated file?)");
+        }
+      }
+    }
+    ++piece;
+  }
+}
+
+// The compressor named by the root element, null if none or unknown.
+vtkSmartPointer<vtkDataCompressor> Decompressor(const std::string& name)
+{
+  if (name == "vtkLZ4DataCompressor")
+  {
+    return vtkSmartPointer<vtkLZ4DataCompressor>::New();
+  }
+  if (name == "vtkZLibDataCompressor")
+  {
+    return vtkSmartPointer<vtkZLibDataCompressor>::New();
+  }
+  if (name == "vtkLZMADataCompressor")
+  {
+    return vtkSmartPointer<vtkLZMADataCompressor>::New();
+  }
+  return nullptr;
+}
+
+// Parses the file as VTK's XML readers do, then checks the block headers of
+// all its arrays and the cell offsets (`text`: the file up to a little after
+// <AppendedData, as CheckXmlCounts read it).
+void CheckParsedXml(const std::string& file, std::string_view text, long long limit)
 {
   vtksys::ifstream stream(file.c_str(), std::ios::in | std::ios::binary);
   vtkNew<vtkXMLDataParser> parser;
@@ -1580,65 +2250,30 @@ void CheckCellOffsets(const std::string& file, long long limit)
     vtkXMLDataElement* root = parser->Parse() ? parser->GetRootElement() : nullptr;
     const char* type = root ? root->GetAttribute("type") : nullptr;
     vtkXMLDataElement* data = type ? root->FindNestedElementWithName(type) : nullptr;
-    const std::string compressor =
-      root && root->GetAttribute("compressor") ? root->GetAttribute("compressor") : "";
-    vtkSmartPointer<vtkDataCompressor> decompressor;
-    if (compressor == "vtkLZ4DataCompressor")
+    const char* compressor = root ? root->GetAttribute("compressor") : nullptr;
+    vtkSmartPointer<vtkDataCompressor> decompressor =
+      Decompressor(compressor ? compressor : "");
+    if (!data || (compressor && *compressor && !decompressor))
     {
-      decompressor = vtkSmartPointer<vtkLZ4DataCompressor>::New();
+      return; // VTK's reader reports it
     }
-    else if (compressor == "vtkZLibDataCompressor")
-    {
-      decompressor = vtkSmartPointer<vtkZLibDataCompressor>::New();
-    }
-    else if (compressor == "vtkLZMADataCompressor")
-    {
-      decompressor = vtkSmartPointer<vtkLZMADataCompressor>::New();
-    }
-    if (!data || (!compressor.empty() && !decompressor))
-    {
-      return;
-    }
+    ParsedXml xml;
+    xml.File = file;
+    xml.Text = text;
+    xml.Size = static_cast<long long>(std::filesystem::file_size(file));
+    xml.Appended = parser->GetAppendedDataPosition();
+    vtkXMLDataElement* eAppended = root->FindNestedElementWithName("AppendedData");
+    const char* encoding = eAppended ? eAppended->GetAttribute("encoding") : nullptr;
+    xml.Base64Appended = !encoding || std::strcmp(encoding, "raw") != 0;
+    xml.Compressed = decompressor != nullptr;
+    const char* headerType = root->GetAttribute("header_type");
+    xml.WordSize = headerType && std::strcmp(headerType, "UInt64") == 0 ? 8 : 4;
+    const char* byteOrder = root->GetAttribute("byte_order");
+    xml.BigEndian = byteOrder && std::strcmp(byteOrder, "BigEndian") == 0;
+    xml.Ratio = RatioOf(compressor ? compressor : "");
+    CheckParsedArrays(xml, root);
     parser->SetCompressor(decompressor);
-    for (int p = 0, piece = 0; p < data->GetNumberOfNestedElements(); ++p)
-    {
-      vtkXMLDataElement* ePiece = data->GetNestedElement(p);
-      if (std::strcmp(ePiece->GetName(), "Piece") != 0)
-      {
-        continue;
-      }
-      for (int b = 0; b < ePiece->GetNumberOfNestedElements(); ++b)
-      {
-        vtkXMLDataElement* block = ePiece->GetNestedElement(b);
-        long long cells = 0; // NumberOfVerts, ..., NumberOfCells
-        if (!ePiece->GetScalarAttribute(
-              (std::string("NumberOf") + block->GetName()).c_str(), cells) ||
-          cells <= 0)
-        {
-          continue;
-        }
-        for (int a = 0; a < block->GetNumberOfNestedElements(); ++a)
-        {
-          vtkXMLDataElement* array = block->GetNestedElement(a);
-          const char* arrayName = array->GetAttribute("Name");
-          const bool faces = arrayName && std::strcmp(arrayName, "faceoffsets") == 0;
-          double largest = 0;
-          // Offsets increase (VTK refuses them otherwise): the last is the largest.
-          if ((faces || (arrayName && std::strcmp(arrayName, "offsets") == 0)) &&
-            ReadLargest(parser, array, faces ? 0 : cells - 1, faces ? cells : 1, largest) &&
-            largest > static_cast<double>(limit))
-          {
-            char count[32];
-            std::snprintf(count, sizeof(count), "%.15g", largest);
-            Fail(file, 0,
-              "piece " + std::to_string(piece) + ", " + block->GetName() + ": array '" + arrayName +
-                "' announces " + count +
-                " connectivity values, more than the file can hold (corrupt or truncated file?)");
-          }
-        }
-      }
-      ++piece;
-    }
+    CheckCellOffsets(xml, parser, data, limit);
   };
   try
   {

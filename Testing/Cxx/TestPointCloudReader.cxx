@@ -6,10 +6,12 @@
 #include "Check.h"
 #include "vtkPointCloudReader.h"
 
+#include "vtkBitArray.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkExecutive.h"
+#include "vtkFieldData.h"
 #include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
 #include "vtkImageData.h"
@@ -23,6 +25,8 @@
 #include "vtkPolyData.h"
 #include "vtkPolyDataWriter.h"
 #include "vtkSmartPointer.h"
+#include "vtkStringArray.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkXMLImageDataWriter.h"
 #include "vtkXMLMultiBlockDataWriter.h"
@@ -336,6 +340,110 @@ void Corrupt(const char* source, const char* target, const std::string& from, co
   }
 }
 
+// FIELD blocks before POINT_DATA and CELL_DATA: VTK 9.2 reads them and then
+// uses a null pointer when they are invalid, so the reader refuses them first;
+// valid ones, as VTK writes them (every type, ASCII and binary), still read.
+void TestFieldBlocks()
+{
+  const std::string head = "# vtk DataFile Version 3.0\nx\nASCII\nDATASET POLYDATA\n";
+  const std::string points = "POINTS 4 double\n0 0 0 1 0 0 0 1 0 0 0 1\n";
+  // The fuzzer's dataset_field.vtk (no version digits, empty title).
+  ExpectError(
+    Write("dataset_field.vtk", "# vtk DataFile Version 1\n\nASCII\nDATASET POLYDATA\nfield\n"), 5,
+    "FIELD block without a name and an array count");
+  ExpectError(
+    Write("field_one_line.vtk", "# vtk DataFile Version 3.0\nx\nASCII\nDATASET POLYDATA field\n"),
+    4, "FIELD block without a name and an array count");
+  // Where VTK reads on after bad points (found by fuzzing): FIELD taken for the
+  // type of the points, a value short, a number glued to the keyword.
+  ExpectError(Write("points_no_type.vtk", head + "POINTS 4\nFIELD FieldData 1\nT 1 1 bogus\n0.5\n"),
+    6, "FIELD block without a name and an array count");
+  ExpectError(Write("points_short.vtk",
+                head + "POINTS 8 double\n" + points.substr(16) + "FIELD F 1\nT 1 1 bogus\n0.5\n"),
+    8, "FIELD block 'F', array 'T': unknown type 'bogus'");
+  ExpectError(Write("points_glued.vtk", head + "POINTS 1 double\n0 0 1field\n"), 6,
+    "FIELD block without a name and an array count");
+  ExpectError(Write("field_no_count.vtk", head + "FIELD FieldData\n" + points), 5,
+    "FIELD block without a name and an array count");
+  // The fuzzer's dataset_field_bad_type.vtk.
+  ExpectError(Write("dataset_field_bad_type.vtk",
+                head + points + "FIELD FieldData 1\nTemp 1 1 bogus\n0.5\n"),
+    8, "FIELD block 'FieldData', array 'Temp': unknown type 'bogus'");
+  ExpectError(Write("field_second_type.vtk",
+                head + "FIELD FieldData 2\nA 1 4 float\n1 2 3 4\nB 1 1 bogus\n0\n" + points),
+    8, "FIELD block 'FieldData', array 'B': unknown type 'bogus'");
+  ExpectError(
+    Write("field_header.vtk", head + "FIELD FieldData 1\nTemp 1 float\n0.5\n" + points), 6,
+    "FIELD block 'FieldData', array 'Temp': expected 'name components tuples type'");
+  ExpectError(Write("field_truncated.vtk", head + points + "FIELD F 1\nA 1 4 float\n1 2\n"), 8,
+    "FIELD block 'F', array 'A': the file ends inside its values");
+  ExpectError(
+    Write("field_huge.vtk", head + "FIELD FieldData 1\nA 1 99999999999 float\n1\n" + points), 6,
+    "invalid count");
+  // Cells before version 5: point counts past the cell list (found by fuzzing:
+  // vtkCellArray::ImportLegacyFormat read past it).
+  ExpectError(Write("legacy_cells.vtk", head + points + "VERTICES 1 2\n5 0\n"), 7,
+    "'vertices': a cell of 5 points runs past the end of the cell list");
+  // Keywords are prefixes to VTK; a vector length in array metadata is a count.
+  ExpectError(
+    Write("pointsx.vtk", head + "POINTSX 999999999999 float\n1 2 3\n"), 5, "invalid count");
+  ExpectError(Write("metadata.vtk",
+                head + points +
+                  "POINT_DATA 4\nSCALARS s float 1\nLOOKUP_TABLE default\n1 2 3 4\nMETADATA\n"
+                  "INFORMATION 1\nNAME L2_NORM_RANGE LOCATION vtkDataArray\n"
+                  "DATA 2000000000 0 1\n\n"),
+    14, "invalid count");
+
+  // Written by VTK: field data of every kind, with metadata (component names).
+  const Points expected = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
+  auto cloud = Cloud(expected, "Temperature", 0);
+  vtkNew<vtkFieldData> field;
+  vtkNew<vtkDoubleArray> pairs;
+  pairs->SetName("pairs");
+  pairs->SetNumberOfComponents(2);
+  pairs->SetComponentName(0, "first");
+  pairs->SetComponentName(1, "second");
+  pairs->InsertNextTuple2(1.5, -2);
+  pairs->InsertNextTuple2(3, 4);
+  field->AddArray(pairs);
+  vtkNew<vtkStringArray> labels;
+  labels->SetName("labels");
+  for (const char* label : { "one", "two words", "", "field 7 1 bogus" })
+  {
+    labels->InsertNextValue(label);
+  }
+  field->AddArray(labels);
+  vtkNew<vtkBitArray> bits;
+  bits->SetName("bits");
+  for (int i = 0; i < 11; ++i)
+  {
+    bits->InsertNextValue(i % 3 == 0);
+  }
+  field->AddArray(bits);
+  vtkNew<vtkIdTypeArray> ids;
+  ids->SetName("ids");
+  ids->InsertNextValue(42);
+  field->AddArray(ids);
+  vtkNew<vtkUnsignedCharArray> bytes;
+  bytes->SetName("bytes");
+  bytes->InsertNextValue('\n');
+  bytes->InsertNextValue(' ');
+  field->AddArray(bytes);
+  cloud->SetFieldData(field);
+  for (const int type : { VTK_ASCII, VTK_BINARY })
+  {
+    const std::string name = type == VTK_ASCII ? "field_ascii.vtk" : "field_binary.vtk";
+    vtkNew<vtkPolyDataWriter> writer;
+    writer->SetInputData(cloud);
+    writer->SetFileType(type);
+    writer->SetFileName(PathOf(name).c_str());
+    CHECK(writer->Write() == 1);
+    ExpectPoints(PathOf(name), expected);
+  }
+  Corrupt("field_binary.vtk", "field_binary_type.vtk", "bits 1 11 bit", "bits 1 11 bogus",
+    "FIELD block 'FieldData', array 'bits': unknown type 'bogus'");
+}
+
 void TestVtkWrittenFiles()
 {
   // Values exact in float, since PLY and OBJ writers store floats.
@@ -594,6 +702,47 @@ void TestCorruptSizes()
   ExpectError(Write("count_lz4.vtp", text), LineOf(text, text.find("Name=\"Temperature\"")),
     "data array 'Temperature' makes the data larger than the file can hold");
 
+  // A compressed offsets array whose header announces no block, or blocks too
+  // small for its values: VTK's parser read a block that is not there.
+  // (4 vertices: 4 Int64 offsets in one LZ4 block.)
+  text = Slurp(WriteXml(vtkNew<vtkXMLPolyDataWriter>(), Vertices(4), "blocks.vtp",
+    vtkXMLWriter::Appended, false, vtkXMLWriterBase::LZ4));
+  const auto header = [&text, wordSize](std::size_t word, std::uint64_t value) {
+    text.replace(DataOf(text, "offsets") + word * wordSize, wordSize,
+      reinterpret_cast<const char*>(&value), wordSize); // little-endian
+  };
+  const std::string original = text;
+  header(0, 0); // as the fuzzer's zero_blocks_offsets.vtp
+  ExpectError(Write("zero_blocks_offsets.vtp", text), LineOf(text, text.find("Name=\"offsets\"")),
+    "data array 'offsets': its compression header announces no block but a last block of 32 "
+    "bytes");
+  header(2, 0);
+  ExpectError(Write("zero_blocks_empty.vtp", text), 0,
+    "piece 0, Verts: array 'offsets': its compression header announces no block for 32 bytes "
+    "of values");
+  text = original;
+  header(1, 8);
+  header(2, 0);
+  ExpectError(Write("small_blocks.vtp", text), 0,
+    "piece 0, Verts: array 'offsets': its compression header announces 8 bytes, fewer than its "
+    "32 bytes of values");
+
+  // Only DataArray elements are cell arrays (the fuzzer's misnamed_array.vtp):
+  // a misnamed offsets array with a huge block table is left to VTK, which
+  // misses the offsets, rather than read by the guard.
+  text = Slurp(PathOf("offsets_lz4.vtp"));
+  text.replace(text.find("<DataArray type=\"Int64\" Name=\"offsets\""), 10, "<Drray");
+  header(0, 0x7fffffff);
+  ExpectError(Write("misnamed_array.vtp", text), 0, "cannot read VTK XML file");
+
+  // An attribute in single quotes or with spaces around '=' escapes the text
+  // scan, not the check of the parsed file.
+  text = Slurp(PathOf("lz4.vtp"));
+  tag = text.find("Name=\"Points\"");
+  text.replace(text.find("format=\"appended\"", tag), 17, "format = 'appended'");
+  text.replace(DataOf(text, "Points"), wordSize, std::string(wordSize, '\x7f'));
+  ExpectError(Write("quoted.vtp", text), 0, "data array 'Points': corrupt compression header");
+
 #ifdef __linux__
   // A count the file could hold, for more memory than there is: VTK's failed
   // allocation becomes a one-line error instead of aborting the process.
@@ -651,6 +800,7 @@ int main(int argc, char* argv[])
 
   TestTextFormats();
   TestBadInput();
+  TestFieldBlocks();
   TestVtkWrittenFiles();
   TestCorruptSizes();
   return check::Finish("TestPointCloudReader");
