@@ -1,5 +1,8 @@
 #include "vtkPointCloudReader.h"
 
+#include "MemoryGuard.h" // core: bounds allocations the file cannot
+#include "Progress.h"    // core: InputError
+
 #include "vtkCellArray.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
@@ -1507,6 +1510,19 @@ void CheckLegacyFile(const std::string& file, std::string_view text)
   {
     Fail(file, 1, "not a legacy VTK file (the first line is not '# vtk DataFile Version x.y')");
   }
+  // After each array VTK 9.2 peeks 256 bytes to skip blanks before a possible
+  // METADATA line, and peeks the same bytes forever when all 256 are spaces or
+  // carriage returns (found by fuzzing). Its writer never writes such a run.
+  std::size_t blanks = 0;
+  for (std::size_t i = 0; i < text.size(); ++i)
+  {
+    blanks = text[i] == ' ' || text[i] == '\r' ? blanks + 1 : 0;
+    if (blanks == 256)
+    {
+      Fail(file, static_cast<std::size_t>(std::count(text.begin(), text.begin() + i, '\n')) + 1,
+        "256 blanks in a row, which VTK's legacy reader cannot get past");
+    }
+  }
   static const char* const keywords[] = { "points", "cells", "polygons", "lines", "vertices",
     "triangle_strips", "cell_types", "point_data", "cell_data", "x_coordinates", "y_coordinates",
     "z_coordinates", "dimensions", "lookup_table", "color_scalars", "texture_coordinates", "field",
@@ -2360,6 +2376,18 @@ void ExtractPoints(
   if (total > maximumPoints)
   {
     Fail(file, 0, "too many points (" + std::to_string(total) + ")");
+  }
+  // Below that bound an image of 10^9 implicit points still asks for 24 GB
+  // that no file size bounds: ask the memory guard (3 doubles a point and as
+  // much again for the point data, a generous guess).
+  try
+  {
+    flowrecon::RequireMemory(48.0 * static_cast<double>(total),
+      "reading " + std::to_string(total) + " points", "use a smaller or subsampled file");
+  }
+  catch (const flowrecon::InputError& e)
+  {
+    Fail(file, 0, e.what());
   }
   xyz.reserve(3 * static_cast<std::size_t>(total));
   pointData->CopyAllocate(arrays, total);

@@ -58,6 +58,9 @@ std::array<double, 4> CentreAndSquaredRadius(const KPoint* p, std::size_t n)
   return { { c.x(), c.y(), c.z(), CGAL::squared_distance(c, p[0]) } };
 }
 
+const char* const TooClose = "points too close together for the size of the cloud (a critical "
+                            "value underflows in double precision); rescale or separate the clusters";
+
 class Builder
 {
 public:
@@ -137,6 +140,27 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
     static_cast<Id>(tri->Dt().number_of_vertices()) != tri->NumberOfVertices())
   {
     throw Degenerate("perturbation created duplicate points");
+  }
+  // Critical points are double constructions (exact combinatorics, rounded
+  // geometry): products of a few edge lengths underflow or cancel when the
+  // spacing is some 1e-20 of the extent, and CGAL's constructions divide by
+  // zero. Refuse such clouds before any construction. Distinct doubles of the
+  // size of the extent are at least 1e-16 of it apart: only clusters near the
+  // origin get closer (no sampled shape has 20 orders of magnitude between its
+  // spacing and its size).
+  {
+    const double tiny = 1e-20 * this->In.Diagonal;
+    const Delaunay& dt = tri->Dt();
+    for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e)
+    {
+      const KPoint& a = e->first->vertex(e->second)->point();
+      const KPoint& b = e->first->vertex(e->third)->point();
+      const double dx = a.x() - b.x(), dy = a.y() - b.y(), dz = a.z() - b.z();
+      if (!(std::sqrt(dx * dx + dy * dy + dz * dz) > tiny))
+      {
+        throw InputError(TooClose);
+      }
+    }
   }
   fc.Time.Delaunay = Seconds(t0);
 
@@ -544,8 +568,7 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
     if (!(node.Value > 0 && std::isfinite(node.Value) && std::isfinite(node.Location[0]) &&
           std::isfinite(node.Location[1]) && std::isfinite(node.Location[2])))
     {
-      throw InputError("points too close together for the size of the cloud (a critical value "
-                       "underflows in double precision); rescale or separate the clusters");
+      throw InputError(TooClose);
     }
   }
 

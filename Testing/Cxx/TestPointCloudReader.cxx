@@ -4,6 +4,8 @@
 // Usage: TestPointCloudReader WORKDIR (files go to WORKDIR/PointCloudReader).
 
 #include "Check.h"
+
+#include <cstdlib>
 #include "vtkPointCloudReader.h"
 
 #include "vtkBitArray.h"
@@ -229,6 +231,21 @@ void TestTextFormats()
 void TestBadInput()
 {
   ExpectError(PathOf("missing.xyz"), 0, "no such file");
+  // An image's points are implicit: 10^9 of them fit in a few bytes (fuzzing,
+  // #12); the memory guard refuses them before anything is allocated (under a
+  // limit of 16 GB, whatever the machine has).
+  setenv("FLOWRECON_MEMORY_LIMIT", "16000000000", 1);
+  // VTK 9.2 loops forever on 256 blanks after an array (fuzzing, #12).
+  ExpectError(Write("blanks.vtk",
+                "# vtk DataFile Version 3.0\nb\nASCII\nDATASET POLYDATA\nPOINTS 1 double\n"
+                "0 0 0" + std::string(300, ' ') + "\n"),
+    6, "256 blanks in a row");
+  ExpectError(Write("implicit.vtk",
+                "# vtk DataFile Version 3.0\nimage\nASCII\nDATASET STRUCTURED_POINTS\n"
+                "DIMENSIONS 1000 1000 1000\nORIGIN 0 0 0\nSPACING 1 1 1\n" +
+                  std::string(1000, '\n')),
+    0, "reading 1000000000 points needs about");
+  unsetenv("FLOWRECON_MEMORY_LIMIT");
   std::filesystem::create_directories(PathOf("folder.xyz"));
   ExpectError(PathOf("folder.xyz"), 0, "directory");
   ExpectError(Write("unknown.foo", "1 2 3\n"), 0, "unknown file extension '.foo'");

@@ -46,6 +46,9 @@ extern "C" int LLVMFuzzerInitialize(int*, char***)
 {
   vtkObject::GlobalWarningDisplayOff();
   vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+  // The memory guard answers as on a machine of 1.5 GB: libFuzzer's limit is
+  // 2 GB (-rss_limit_mb), and a guard that passes more is a finding.
+  setenv("FLOWRECON_MEMORY_LIMIT", "1500000000", 0);
   const char* tmp = std::getenv("TMPDIR");
   std::string pattern = std::string(tmp && *tmp ? tmp : "/tmp") + "/fuzz-reader-XXXXXX";
   if (!mkdtemp(&pattern[0]))
