@@ -3,6 +3,7 @@
 //   flowrecon complex INPUT -o OUT.vtm [--no-stable] [--no-unstable] [--quiet]
 //   flowrecon info    INPUT [--no-stable] [--no-unstable] [--quiet]
 //   flowrecon reconstruct INPUT -o OUT.vtu [--tr T] [--tp P] [--profile P.csv] [--jumps K]
+//                         [--tr-max T] [--topology-profile B.csv]
 //   flowrecon diagram INPUT -o PD.csv|PD.vtu
 // Every command also takes --threads N (TBB's limit for the flow complex).
 //
@@ -331,7 +332,9 @@ const std::vector<Command>& Commands()
       "edges, triangles, tetrahedra; cell data Step, Priority, Threshold, Extension,\n"
       "Sponsor, NodeId, Index, CriticalValue, Multiplicity) to OUT.vtu. Every\n"
       "reconstruction with a smaller t_r is its part with Threshold < t_r. Only the\n"
-      "cells written are drawn, from a second Delaunay triangulation of the points.",
+      "cells written are drawn, from a second Delaunay triangulation of the points.\n"
+      "Prints 'Betti numbers: b0 b1 b2' (over Z/2) of the reconstruction at t_r: the\n"
+      "homology of the complex its cells span (field data BettiNumbers in the file).",
       "INPUT -o OUT.vtu [options]",
       { { "--output", "-o", "OUT.vtu", "the unstructured grid to write (.vtu)" },
         { "--tr", nullptr, "T", "reconstruction threshold t_r > 1, 'inf' for all steps (2)" },
@@ -339,6 +342,8 @@ const std::vector<Command>& Commands()
           "is a selection of the file; only those cells are drawn (t_r)" },
         { "--tp", nullptr, "P", "persistence threshold t_p, 0 for none (1.1)" },
         { "--profile", nullptr, "P.csv", "write the profile of the t_r = inf run as CSV" },
+        { "--topology-profile", nullptr, "B.csv", "write the Betti numbers for every t_r up to\n"
+          "--tr-max (4 when not given) as CSV: threshold,b0,b1,b2, one row per change" },
         { "--jumps", nullptr, "K", "print the K largest jumps of the profile (tracking back)" },
         { "--timings", nullptr, nullptr, "print the seconds of each phase" }, ThreadsOption,
         QuietOption },
@@ -855,9 +860,9 @@ private:
   std::chrono::steady_clock::time_point Last = std::chrono::steady_clock::now();
 };
 
-void ReconstructCloud(const std::string& input, double tp, double trmax,
+void ReconstructCloud(const std::string& input, double tp, double twrite, double tdraw,
   const FlowComplexOptions& options, vtkUnstructuredGrid* grid, vtkTable* profile,
-  std::vector<flowrecon::Node>& nodes, PhaseClock& clock)
+  vtkTable* topology, std::vector<flowrecon::Node>& nodes, PhaseClock& clock)
 {
   vtkNew<vtkPointCloudReader> reader;
   reader->SetFileName(input.c_str());
@@ -917,14 +922,36 @@ void ReconstructCloud(const std::string& input, double tp, double trmax,
     const std::vector<flowrecon::Id> carriers = flowrecon::CellCarriers(run, simplify ? &s : nullptr);
     clock("reconstruction queue");
     flowrecon::DrawStableManifolds(samples, build,
-      flowrecon::NodesToDraw(fc.Nodes, carriers, run, trmax), fc, stage(0.7, 0.95),
+      flowrecon::NodesToDraw(fc.Nodes, carriers, run, tdraw), fc, stage(0.7, 0.9),
       "lower --tr (or --tr-max)", &cones);
     clock("drawing");
+    const flowrecon::CellsByNode triangles(fc.TriangleNode, fc.Nodes.size());
+    const flowrecon::CellsByNode tetrahedra(fc.TetrahedronNode, fc.Nodes.size());
+    std::vector<flowrecon::Bar> bars;
+    std::string topologyError;
+    try
+    {
+      bars = flowrecon::CellBarcode(
+        flowrecon::ReconstructionCells(fc, carriers, run, tdraw, triangles, tetrahedra),
+        stage(0.9, 0.95));
+    }
+    catch (const flowrecon::InputError& e)
+    {
+      topologyError = e.what(); // the reconstruction is still written
+    }
+    clock("Betti numbers");
     progress(0.95, "output");
     vtkNew<vtkPolyData> arrows;
-    flowrecon::ReconstructionToVTK(fc, carriers, run, trmax,
-      flowrecon::CellsByNode(fc.TriangleNode, fc.Nodes.size()),
-      flowrecon::CellsByNode(fc.TetrahedronNode, fc.Nodes.size()), grid, profile, arrows);
+    flowrecon::ReconstructionToVTK(
+      fc, carriers, run, twrite, triangles, tetrahedra, grid, profile, arrows);
+    if (topologyError.empty())
+    {
+      flowrecon::TopologyToVTK(bars, twrite, tdraw, grid, topology);
+    }
+    else
+    {
+      std::cerr << "warning: no Betti numbers: " << topologyError << "\n";
+    }
     nodes = std::move(fc.Nodes);
     clock("VTK output");
   }
@@ -945,6 +972,54 @@ void ReconstructCloud(const std::string& input, double tp, double trmax,
       " points; lower --tr, use --tp 0, or fewer points");
   }
   line->Finish();
+}
+
+// "Betti numbers: b0 b1 b2" at t_r (scripts read this line) from the topology
+// profile, which holds for t_r in (Threshold_k, Threshold_k+1]; the profile as
+// CSV when asked.
+void ReportTopology(vtkTable* topology, double tr, const std::string& path, bool quiet)
+{
+  const vtkIdType rows = topology ? topology->GetNumberOfRows() : 0;
+  if (rows == 0)
+  {
+    return; // a warning said why
+  }
+  vtkDataArray* columns[4];
+  const char* names[4] = { "Threshold", "b0", "b1", "b2" };
+  for (int k = 0; k < 4; ++k)
+  {
+    columns[k] = vtkDataArray::SafeDownCast(topology->GetColumnByName(names[k]));
+    if (!columns[k])
+    {
+      throw Failure(std::string("topology profile without column ") + names[k]);
+    }
+  }
+  vtkIdType row = 0;
+  while (row + 1 < rows && columns[0]->GetComponent(row + 1, 0) < tr)
+  {
+    ++row;
+  }
+  if (!quiet)
+  {
+    std::cout << "Betti numbers: " << static_cast<long long>(columns[1]->GetComponent(row, 0))
+              << " " << static_cast<long long>(columns[2]->GetComponent(row, 0)) << " "
+              << static_cast<long long>(columns[3]->GetComponent(row, 0)) << "\n";
+  }
+  if (!path.empty())
+  {
+    std::ofstream csv = OpenText(path);
+    csv << "threshold,b0,b1,b2\n" << std::setprecision(17);
+    for (vtkIdType r = 0; r < rows; ++r)
+    {
+      csv << columns[0]->GetComponent(r, 0);
+      for (int k = 1; k < 4; ++k)
+      {
+        csv << "," << static_cast<long long>(columns[k]->GetComponent(r, 0));
+      }
+      csv << "\n";
+    }
+    CloseText(csv, path);
+  }
 }
 
 int RunReconstruct(const Arguments& args)
@@ -989,6 +1064,20 @@ int RunReconstruct(const Arguments& args)
   {
     throw UsageError("--tr-max must be at least the reconstruction threshold --tr", help);
   }
+  std::string topologyPath;
+  if (args.Has("--topology-profile"))
+  {
+    topologyPath = args.Values.at("--topology-profile");
+    const std::filesystem::path directory = std::filesystem::path(topologyPath).parent_path();
+    std::error_code error;
+    if (!directory.empty() && !std::filesystem::is_directory(directory, error))
+    {
+      throw Failure(topologyPath + ": directory '" + directory.string() + "' does not exist");
+    }
+  }
+  // The file holds the cells below `trmax`; the Betti numbers of every t_r up
+  // to `tdraw` come from one barcode of the family drawn below it.
+  const double tdraw = !topologyPath.empty() && !args.Has("--tr-max") ? std::max(tr, 4.0) : trmax;
   FlowComplexOptions options = CommonOptions(args, "reconstruct");
   // The reconstruction draws the cells it writes by itself: the complex needs
   // only its Hasse diagram (DESIGN.md, "Cost follows the output").
@@ -998,6 +1087,7 @@ int RunReconstruct(const Arguments& args)
   vtkSmartPointer<vtkMultiBlockDataSet> simplified = complex;
   vtkSmartPointer<vtkUnstructuredGrid> grid;
   vtkSmartPointer<vtkTable> profile;
+  vtkSmartPointer<vtkTable> topology;
   std::vector<flowrecon::Node> nodes; // for --jumps
   PhaseTimes times;
   PhaseClock clock(times);
@@ -1005,7 +1095,8 @@ int RunReconstruct(const Arguments& args)
   {
     grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
     profile = vtkSmartPointer<vtkTable>::New();
-    ReconstructCloud(input, tp, trmax, options, grid, profile, nodes, clock);
+    topology = vtkSmartPointer<vtkTable>::New();
+    ReconstructCloud(input, tp, trmax, tdraw, options, grid, profile, topology, nodes, clock);
   }
   else
   {
@@ -1027,10 +1118,11 @@ int RunReconstruct(const Arguments& args)
     vtkNew<vtkFlowReconstruction> reconstruction;
     reconstruction->SetInputData(simplified);
     reconstruction->SetReconstructionThreshold(trmax);
-    reconstruction->SetMaximumThreshold(trmax);
+    reconstruction->SetMaximumThreshold(tdraw);
     RunFilter(reconstruction, input, options, "reconstruction");
     grid = vtkUnstructuredGrid::SafeDownCast(reconstruction->GetOutputDataObject(0));
     profile = vtkTable::SafeDownCast(reconstruction->GetOutputDataObject(1));
+    topology = vtkTable::SafeDownCast(reconstruction->GetOutputDataObject(3));
     clock("flow complex file, simplification, reconstruction");
     std::string error;
     flowrecon::FlowComplex stored;
@@ -1082,6 +1174,7 @@ int RunReconstruct(const Arguments& args)
     std::cout << output << ": " << grid->GetNumberOfCells() << " cells, " << kept << " of "
               << steps << " steps at t_r " << tr << "\n";
   }
+  ReportTopology(topology, tr, topologyPath, options.Quiet);
   if (jumps > 0)
   {
     // Paper §5.2: a jump of the profile is a step whose priority exceeds all

@@ -7,6 +7,7 @@
 #include "vtkCellData.h"
 #include "vtkCellType.h"
 #include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
 #include "vtkIdTypeArray.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
@@ -66,6 +67,51 @@ vtkSmartPointer<A> Sized(const char* name, vtkIdType n)
   return a;
 }
 
+/// Nodes whose cells are in the reconstruction at t, by insertion step of
+/// their carrier: the order of the output cells.
+std::vector<Id> SelectedNodes(const FlowComplex& fc, const std::vector<Id>& carriers,
+  const ReconstructionResult& run, double t)
+{
+  std::vector<std::pair<Id, Id>> selected; // (step of the carrier, node)
+  for (std::size_t i = 0; i < fc.Nodes.size(); ++i)
+  {
+    const Id carrier = carriers[i];
+    if (carrier >= 0 && run.Contains(carrier, t))
+    {
+      selected.emplace_back(run.Nodes[carrier].Step, static_cast<Id>(i));
+    }
+  }
+  std::sort(selected.begin(), selected.end());
+  std::vector<Id> nodes(selected.size());
+  for (std::size_t k = 0; k < selected.size(); ++k)
+  {
+    nodes[k] = selected[k].second;
+  }
+  return nodes;
+}
+
+/// Calls f(vtkCellType, count, point ids, node) for each cell of `node`: its
+/// vertex or Gabriel edge, its triangles, its tetrahedra (fc's point ids).
+template <class F>
+void ForEachCell(const FlowComplex& fc, Id node, const CellsByNode& triangles,
+  const CellsByNode& tetrahedra, F&& f)
+{
+  const flowrecon::Node& n = fc.Nodes[node];
+  if (n.Index <= 1)
+  {
+    const Id v[2] = { n.Simplex[0], n.Simplex[1] };
+    f(n.Index == 0 ? VTK_VERTEX : VTK_LINE, n.Index + 1, v, node);
+  }
+  for (Id j = triangles.Offsets[node]; j < triangles.Offsets[node + 1]; ++j)
+  {
+    f(VTK_TRIANGLE, 3, fc.Triangles[triangles.List[j]].data(), node);
+  }
+  for (Id j = tetrahedra.Offsets[node]; j < tetrahedra.Offsets[node + 1]; ++j)
+  {
+    f(VTK_TETRA, 4, fc.Tetrahedra[tetrahedra.List[j]].data(), node);
+  }
+}
+
 } // namespace
 
 CellsByNode::CellsByNode(const std::vector<Id>& cellNode, std::size_t nodes)
@@ -92,23 +138,12 @@ void ReconstructionToVTK(const FlowComplex& fc, const std::vector<Id>& carriers,
   const CellsByNode& tetrahedra, vtkUnstructuredGrid* grid, vtkTable* profile, vtkPolyData* arrows)
 {
   const auto& steps = run.Nodes;
-  // Nodes whose cells are in the reconstruction at t, in insertion order.
-  std::vector<std::pair<Id, Id>> selected; // (step of the carrier, node)
-  for (std::size_t i = 0; i < fc.Nodes.size(); ++i)
-  {
-    const Id carrier = carriers[i];
-    if (carrier >= 0 && run.Contains(carrier, t))
-    {
-      selected.emplace_back(steps[carrier].Step, static_cast<Id>(i));
-    }
-  }
-  std::sort(selected.begin(), selected.end());
+  const std::vector<Id> selected = SelectedNodes(fc, carriers, run, t);
   // Sizes first: VTK aborts the process when an array cannot be allocated, so
   // check that they fit, and fill preallocated arrays (millions of cells).
   vtkIdType cells = 0, corners = 0;
-  for (const auto& entry : selected)
+  for (const Id node : selected)
   {
-    const Id node = entry.second;
     const int own = fc.Nodes[node].Index <= 1 ? 1 : 0; // vertex or edge
     const Id nt = triangles.Offsets[node + 1] - triangles.Offsets[node];
     const Id nq = tetrahedra.Offsets[node + 1] - tetrahedra.Offsets[node];
@@ -193,23 +228,9 @@ void ReconstructionToVTK(const FlowComplex& fc, const std::vector<Id>& carriers,
     mult->SetValue(c, fc.Nodes[node].Index == 1 ? multiplicity[node] : 0);
     ++c;
   };
-  for (const auto& entry : selected)
+  for (const Id node : selected)
   {
-    const Id node = entry.second;
-    const flowrecon::Node& n = fc.Nodes[node];
-    if (n.Index <= 1)
-    {
-      const Id v[2] = { n.Simplex[0], n.Simplex[1] };
-      add(n.Index == 0 ? VTK_VERTEX : VTK_LINE, n.Index + 1, v, node);
-    }
-    for (Id j = triangles.Offsets[node]; j < triangles.Offsets[node + 1]; ++j)
-    {
-      add(VTK_TRIANGLE, 3, fc.Triangles[triangles.List[j]].data(), node);
-    }
-    for (Id j = tetrahedra.Offsets[node]; j < tetrahedra.Offsets[node + 1]; ++j)
-    {
-      add(VTK_TETRA, 4, fc.Tetrahedra[tetrahedra.List[j]].data(), node);
-    }
+    ForEachCell(fc, node, triangles, tetrahedra, add);
   }
   setOffset(c, k);
   vtkNew<vtkPoints> points;
@@ -287,6 +308,50 @@ void ReconstructionToVTK(const FlowComplex& fc, const std::vector<Id>& carriers,
     arrows->GetCellData()->AddArray(a);
   }
   arrows->GetCellData()->SetActiveScalars("Priority");
+}
+
+FilteredCells ReconstructionCells(const FlowComplex& fc, const std::vector<Id>& carriers,
+  const ReconstructionResult& run, double t, const CellsByNode& triangles,
+  const CellsByNode& tetrahedra)
+{
+  FilteredCells cells;
+  for (const Id node : SelectedNodes(fc, carriers, run, t))
+  {
+    const double threshold = run.Nodes[carriers[node]].Threshold;
+    ForEachCell(fc, node, triangles, tetrahedra,
+      [&](int, int n, const Id* ids, Id) { cells.Add(ids, n, threshold); });
+  }
+  return cells;
+}
+
+void TopologyToVTK(const std::vector<Bar>& bars, double t, double limit,
+  vtkUnstructuredGrid* grid, vtkTable* table)
+{
+  const std::array<Id, 4> betti = BettiNumbersBelow(bars, t);
+  auto field = NamedArray<vtkIdTypeArray>("BettiNumbers");
+  for (int d = 0; d < 3; ++d)
+  {
+    field->InsertNextValue(static_cast<vtkIdType>(betti[d]));
+  }
+  grid->GetFieldData()->AddArray(field);
+
+  table->Initialize();
+  auto threshold = NamedArray<vtkDoubleArray>("Threshold");
+  vtkSmartPointer<vtkIdTypeArray> b[3] = { NamedArray<vtkIdTypeArray>("b0"),
+    NamedArray<vtkIdTypeArray>("b1"), NamedArray<vtkIdTypeArray>("b2") };
+  for (const TopologyStep& step : TopologyProfile(bars, 1, limit))
+  {
+    threshold->InsertNextValue(step.Threshold);
+    for (int d = 0; d < 3; ++d)
+    {
+      b[d]->InsertNextValue(static_cast<vtkIdType>(step.Betti[d]));
+    }
+  }
+  table->AddColumn(threshold);
+  for (auto& column : b)
+  {
+    table->AddColumn(column);
+  }
 }
 
 } // namespace flowrecon

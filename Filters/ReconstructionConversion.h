@@ -4,6 +4,7 @@
 #ifndef ReconstructionConversion_h
 #define ReconstructionConversion_h
 
+#include "CellHomology.h"   // core data structure
 #include "FlowComplex.h"    // core data structure
 #include "Reconstruction.h" // core data structure
 
@@ -33,6 +34,19 @@ struct CellsByNode
 void ReconstructionToVTK(const FlowComplex& fc, const std::vector<Id>& carriers,
   const ReconstructionResult& run, double t, const CellsByNode& triangles,
   const CellsByNode& tetrahedra, vtkUnstructuredGrid* grid, vtkTable* profile, vtkPolyData* arrows);
+
+/// The cells ReconstructionToVTK writes at `t` (fc's point ids), each with the
+/// Threshold of its carrier: the filtration of the nested family below t.
+FilteredCells ReconstructionCells(const FlowComplex& fc, const std::vector<Id>& carriers,
+  const ReconstructionResult& run, double t, const CellsByNode& triangles,
+  const CellsByNode& tetrahedra);
+
+/// Field data `BettiNumbers` (b0, b1, b2 of the cells below t) on `grid`, and
+/// the topology profile in `table`: columns `Threshold`, `b0`, `b1`, `b2`, one
+/// row per change, each holding for t_r in (Threshold, next row's Threshold]
+/// (the last up to `limit`).
+void TopologyToVTK(const std::vector<Bar>& bars, double t, double limit,
+  vtkUnstructuredGrid* grid, vtkTable* table);
 
 } // namespace flowrecon
 

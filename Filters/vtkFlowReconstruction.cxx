@@ -47,6 +47,10 @@ struct vtkFlowReconstruction::Cache
   double GeometryThreshold = -1;
   /// Triangles and tetrahedra of each node (compressed rows of cell positions).
   flowrecon::CellsByNode TriangleGroups, TetraGroups;
+  /// Persistent homology of the drawn family (below GeometryThreshold); empty
+  /// with TopologyError set when it could not be computed.
+  std::vector<flowrecon::Bar> Bars;
+  std::string TopologyError;
 };
 
 
@@ -55,7 +59,7 @@ vtkStandardNewMacro(vtkFlowReconstruction);
 //------------------------------------------------------------------------------
 vtkFlowReconstruction::vtkFlowReconstruction()
 {
-  this->SetNumberOfOutputPorts(3);
+  this->SetNumberOfOutputPorts(4);
 }
 
 //------------------------------------------------------------------------------
@@ -71,8 +75,8 @@ int vtkFlowReconstruction::FillInputPortInformation(int, vtkInformation* info)
 //------------------------------------------------------------------------------
 int vtkFlowReconstruction::FillOutputPortInformation(int port, vtkInformation* info)
 {
-  const char* types[3] = { "vtkUnstructuredGrid", "vtkTable", "vtkPolyData" };
-  if (port < 0 || port > 2)
+  const char* types[4] = { "vtkUnstructuredGrid", "vtkTable", "vtkPolyData", "vtkTable" };
+  if (port < 0 || port > 3)
   {
     return 0;
   }
@@ -88,7 +92,8 @@ int vtkFlowReconstruction::RequestData(
   auto* grid = vtkUnstructuredGrid::GetData(outputVector, RECONSTRUCTION);
   auto* profile = vtkTable::GetData(outputVector, PROFILE);
   auto* arrows = vtkPolyData::GetData(outputVector, SPONSOR_ARROWS);
-  if (!input || !grid || !profile || !arrows)
+  auto* topology = vtkTable::GetData(outputVector, TOPOLOGY_PROFILE);
+  if (!input || !grid || !profile || !arrows || !topology)
   {
     vtkErrorMacro("Missing input or output.");
     return 0;
@@ -101,6 +106,7 @@ int vtkFlowReconstruction::RequestData(
     grid->Initialize();
     profile->Initialize();
     arrows->Initialize();
+    topology->Initialize();
     return 1;
   }
   // The queue runs only for a new input; a new threshold only re-selects.
@@ -155,6 +161,7 @@ int vtkFlowReconstruction::RequestData(
     grid->Initialize();
     profile->Initialize();
     arrows->Initialize();
+    topology->Initialize();
     return this->GetAbortExecute() ? 1 : 0;
   }
 
@@ -173,6 +180,15 @@ int vtkFlowReconstruction::RequestData(
 
   flowrecon::ReconstructionToVTK(fc, c.Carrier, c.Run, t, c.TriangleGroups, c.TetraGroups,
     grid, profile, arrows);
+  if (c.TopologyError.empty())
+  {
+    flowrecon::TopologyToVTK(c.Bars, t, tmax, grid, topology);
+  }
+  else
+  {
+    topology->Initialize();
+    vtkWarningMacro(<< "no Betti numbers: " << c.TopologyError);
+  }
 
   this->SetProgressText(nullptr);
   this->UpdateProgress(1.0);
@@ -229,6 +245,24 @@ bool vtkFlowReconstruction::DrawGeometry(double tmax)
   }
   cache.TriangleGroups = flowrecon::CellsByNode(fc.TriangleNode, fc.Nodes.size());
   cache.TetraGroups = flowrecon::CellsByNode(fc.TetrahedronNode, fc.Nodes.size());
+  // The Betti numbers of every t_r <= T_max at once: one barcode of the family.
+  cache.Bars.clear();
+  cache.TopologyError.clear();
+  try
+  {
+    this->SetProgressText("Betti numbers");
+    this->UpdateProgress(0.9);
+    cache.Bars = flowrecon::CellBarcode(flowrecon::ReconstructionCells(fc, cache.Carrier,
+      cache.Run, tmax, cache.TriangleGroups, cache.TetraGroups));
+  }
+  catch (const flowrecon::InputError& e)
+  {
+    cache.TopologyError = e.what(); // the reconstruction itself is still shown
+  }
+  catch (const std::bad_alloc&)
+  {
+    cache.TopologyError = "out of memory";
+  }
   cache.GeometryThreshold = tmax;
   return true;
 }

@@ -38,6 +38,14 @@
  * one line from the sponsor's critical point to the node's critical point for
  * each node inserted by an extension, cell data `Extension`, `Priority`,
  * `Step`, `NodeId`, `Sponsor`.
+ *
+ * Betti numbers (over Z/2) of the simplicial complex the output cells span
+ * (cells glued where they share points, with all their faces), from one
+ * persistent-homology computation over the drawn family filtered by
+ * `Threshold` (flowrecon::CellBarcode): port 0 has field data `BettiNumbers`
+ * (b0, b1, b2 at the current t_r), and output port 3 (vtkTable) is the
+ * topology profile: columns `Threshold`, `b0`, `b1`, `b2`, one row per change,
+ * each holding for t_r in (Threshold, next Threshold] up to MaximumThreshold.
  */
 #ifndef vtkFlowReconstruction_h
 #define vtkFlowReconstruction_h
@@ -84,7 +92,8 @@ public:
   {
     RECONSTRUCTION = 0,
     PROFILE = 1,
-    SPONSOR_ARROWS = 2
+    SPONSOR_ARROWS = 2,
+    TOPOLOGY_PROFILE = 3
   };
 
 protected:

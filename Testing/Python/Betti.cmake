@@ -21,6 +21,16 @@ if (TARGET flowrecon)
   set_tests_properties(py.reconstruction.lazy_equals_eager PROPERTIES LABELS "python" TIMEOUT 300)
 endif ()
 
+# Betti numbers of reconstructions (issue #9): the printed line, the field data
+# and the topology profile equal GUDHI's persistence over the written cells
+# filtered by Threshold, from a cloud and from a saved flow complex.
+if (TARGET flowrecon)
+  add_test(NAME py.reconstruction.topology_profile
+    COMMAND "${FLOWRECON_TEST_PYTHON}" "${CMAKE_CURRENT_SOURCE_DIR}/test_topology_profile.py"
+            "$<TARGET_FILE:flowrecon>" "${CMAKE_CURRENT_BINARY_DIR}/topology_profile")
+  set_tests_properties(py.reconstruction.topology_profile PROPERTIES LABELS "python" TIMEOUT 300)
+endif ()
+
 # The reconstruction does not depend on the order of the input lines (cube,
 # sphere, torus, exact grid, duplicates; t_p 1.1 and 0), and 10^6 lines holding
 # 5 distinct points give a .vtu of a handful of points (issue #12).

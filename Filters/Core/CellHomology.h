@@ -1,0 +1,58 @@
+// Betti numbers of a reconstruction and of its whole nested family: persistent
+// homology over Z/2 of the simplicial complex the drawn cells span, filtered by
+// the cells' Threshold (issue #9). The complex is the one a mesh tool sees in
+// the written file: cells glued where they share point ids, every face of a
+// cell present with it.
+#ifndef flowrecon_CellHomology_h
+#define flowrecon_CellHomology_h
+
+#include "FlowComplex.h"
+#include "Progress.h"
+
+#include <array>
+#include <vector>
+
+namespace flowrecon
+{
+
+/// Cells of 1 to 4 points (vertex, segment, triangle, tetrahedron), in
+/// compressed rows, each with the value from which it is present.
+struct FilteredCells
+{
+  std::vector<Id> Offsets{ 0 }; ///< cell c holds Points[Offsets[c] .. Offsets[c+1])
+  std::vector<Id> Points;
+  std::vector<double> Values;
+
+  void Add(const Id* points, int count, double value);
+  Id Size() const { return static_cast<Id>(this->Values.size()); }
+};
+
+struct Bar
+{
+  int Dimension = 0;
+  double Birth = 0;
+  double Death = 0; ///< +inf for a class that never dies
+};
+
+/// The bars of positive length of the filtration: a simplex is present from the
+/// least value of the cells it is a face of. Throws InputError for a cell of no
+/// point or more than 4, a negative point id or a NaN value.
+std::vector<Bar> CellBarcode(const FilteredCells& cells, const Progress& progress = Progress());
+
+/// b0..b3 of the cells with value < t (the reconstruction at t_r = t).
+std::array<Id, 4> BettiNumbersBelow(const std::vector<Bar>& bars, double t);
+
+/// Where the Betti numbers change: row k holds for every t in
+/// (Threshold[k], Threshold[k+1]] (the last row up to `limit`). The first row
+/// starts at the least bar end (or at `start` when that is smaller).
+struct TopologyStep
+{
+  double Threshold = 0;
+  std::array<Id, 4> Betti{ { 0, 0, 0, 0 } };
+};
+std::vector<TopologyStep> TopologyProfile(
+  const std::vector<Bar>& bars, double start, double limit);
+
+} // namespace flowrecon
+
+#endif
