@@ -69,6 +69,8 @@ private:
   void Insert(Id lower, Id upper, int multiplicity);
   /// Removes the arc at position `k` of Out(lower).
   void EraseOut(Id lower, std::size_t k);
+  /// Merges arcs given more than once (adding their multiplicities).
+  void MergeRepeatedArcs();
 
   std::vector<std::vector<HalfArc>> InLists, OutLists;
   std::vector<char> Removed;
