@@ -627,10 +627,12 @@ int RunComplex(const Arguments& args)
   {
     vtkFieldData* fd = CriticalPointsBlock(complex)->GetFieldData();
     vtkDataArray* counts = fd->GetArray("NodeCountByIndex");
-    std::cout << output << ": nodes by index " << counts->GetComponent(0, 0) << " "
-              << counts->GetComponent(0, 1) << " " << counts->GetComponent(0, 2) << " "
-              << counts->GetComponent(0, 3) << ", "
-              << (fd->GetArray("ArcCount") ? fd->GetArray("ArcCount")->GetComponent(0, 0) : 0)
+    std::cout << output << ": nodes by index " << static_cast<long long>(counts->GetComponent(0, 0))
+              << " " << static_cast<long long>(counts->GetComponent(0, 1)) << " "
+              << static_cast<long long>(counts->GetComponent(0, 2)) << " "
+              << static_cast<long long>(counts->GetComponent(0, 3)) << ", "
+              << static_cast<long long>(
+                   fd->GetArray("ArcCount") ? fd->GetArray("ArcCount")->GetComponent(0, 0) : 0)
               << " arcs\n";
   }
   return 0;
@@ -646,11 +648,19 @@ std::string Field(vtkFieldData* fd, const char* name, int component = 0, int dec
     return "unknown";
   }
   std::ostringstream os;
+  const double value = array->GetComponent(0, component);
   if (decimals >= 0)
   {
-    os << std::fixed << std::setprecision(decimals);
+    os << std::fixed << std::setprecision(decimals) << value;
   }
-  os << array->GetComponent(0, component);
+  else if (value == std::floor(value) && std::fabs(value) < 1e15)
+  {
+    os << static_cast<long long>(value); // counts: 1000000, not 1e+06
+  }
+  else
+  {
+    os << value;
+  }
   return os.str();
 }
 
