@@ -74,6 +74,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <unistd.h> // isatty, _exit
@@ -334,7 +335,9 @@ const std::vector<Command>& Commands()
       "reconstruction with a smaller t_r is its part with Threshold < t_r. Only the\n"
       "cells written are drawn, from a second Delaunay triangulation of the points.\n"
       "Prints 'Betti numbers: b0 b1 b2' (over Z/2) of the reconstruction at t_r: the\n"
-      "homology of the complex its cells span (field data BettiNumbers in the file).",
+      "homology of the complex its cells span (field data BettiNumbers in the file),\n"
+      "and one 'warning: under-sampled near (x, y, z): ...' line for each place where\n"
+      "they change for a t_r just above the chosen one (see --warn-window).",
       "INPUT -o OUT.vtu [options]",
       { { "--output", "-o", "OUT.vtu", "the unstructured grid to write (.vtu)" },
         { "--tr", nullptr, "T", "reconstruction threshold t_r > 1, 'inf' for all steps (2)" },
@@ -344,6 +347,8 @@ const std::vector<Command>& Commands()
         { "--profile", nullptr, "P.csv", "write the profile of the t_r = inf run as CSV" },
         { "--topology-profile", nullptr, "B.csv", "write the Betti numbers for every t_r up to\n"
           "--tr-max (4 when not given) as CSV: threshold,b0,b1,b2, one row per change" },
+        { "--warn-window", nullptr, "F", "warn where the Betti numbers change for a t_r in\n"
+          "[t_r, F t_r): an under-sampled region (1.1; 1 for none)" },
         { "--jumps", nullptr, "K", "print the K largest jumps of the profile (tracking back)" },
         { "--timings", nullptr, nullptr, "print the seconds of each phase" }, ThreadsOption,
         QuietOption },
@@ -870,9 +875,10 @@ private:
   std::chrono::steady_clock::time_point Last = std::chrono::steady_clock::now();
 };
 
-void ReconstructCloud(const std::string& input, double tp, double twrite, double tdraw,
-  const FlowComplexOptions& options, vtkUnstructuredGrid* grid, vtkTable* profile,
-  vtkTable* topology, std::vector<flowrecon::Node>& nodes, PhaseClock& clock)
+void ReconstructCloud(const std::string& input, double tp, double tr, double twrite, double tdraw,
+  double window, const FlowComplexOptions& options, vtkUnstructuredGrid* grid, vtkTable* profile,
+  vtkTable* topology, vtkPolyData* undersampling, std::vector<flowrecon::Node>& nodes,
+  PhaseClock& clock)
 {
   vtkNew<vtkPointCloudReader> reader;
   reader->SetFileName(input.c_str());
@@ -938,11 +944,12 @@ void ReconstructCloud(const std::string& input, double tp, double twrite, double
     const flowrecon::CellsByNode triangles(fc.TriangleNode, fc.Nodes.size());
     const flowrecon::CellsByNode tetrahedra(fc.TetrahedronNode, fc.Nodes.size());
     std::vector<flowrecon::Bar> bars;
+    std::vector<flowrecon::Id> cellNodes;
     std::string topologyError;
     try
     {
-      bars = flowrecon::CellBarcode(
-        flowrecon::ReconstructionCells(fc, carriers, run, tdraw, triangles, tetrahedra),
+      bars = flowrecon::CellBarcode(flowrecon::ReconstructionCells(
+                                      fc, carriers, run, tdraw, triangles, tetrahedra, &cellNodes),
         stage(0.9, 0.95));
     }
     catch (const flowrecon::InputError& e)
@@ -957,6 +964,9 @@ void ReconstructCloud(const std::string& input, double tp, double twrite, double
     if (topologyError.empty())
     {
       flowrecon::TopologyToVTK(bars, twrite, tdraw, grid, topology);
+      flowrecon::UnderSamplingToVTK(
+        flowrecon::TopologyChangesAbove(bars, tr, std::max(1.0, std::min(window, tdraw / tr))),
+        cellNodes, fc, undersampling);
     }
     else
     {
@@ -1032,6 +1042,73 @@ void ReportTopology(vtkTable* topology, double tr, const std::string& path, bool
   }
 }
 
+// One line per place of the under-sampling warnings (vtkFlowReconstruction's
+// port 4): changes of the same node, t_r and kind make one line ("2 holes
+// close"); the nearest t_r first, at most 10 lines.
+void ReportUnderSampling(vtkPolyData* warnings)
+{
+  const vtkIdType n = warnings ? warnings->GetNumberOfPoints() : 0;
+  auto* pd = n > 0 ? warnings->GetPointData() : nullptr;
+  vtkDataArray* threshold = pd ? pd->GetArray("Threshold") : nullptr;
+  vtkDataArray* dimension = pd ? pd->GetArray("Dimension") : nullptr;
+  vtkDataArray* change = pd ? pd->GetArray("Change") : nullptr;
+  vtkDataArray* spacing = pd ? pd->GetArray("Spacing") : nullptr;
+  vtkDataArray* node = pd ? pd->GetArray("NodeId") : nullptr;
+  if (!threshold || !dimension || !change || !spacing || !node)
+  {
+    return;
+  }
+  // (t_r, node, dimension, change) -> first point and count, in point order.
+  std::map<std::tuple<double, long long, int, int>, std::size_t> seen;
+  std::vector<std::pair<vtkIdType, int>> lines;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const auto key = std::make_tuple(threshold->GetComponent(i, 0),
+      static_cast<long long>(node->GetComponent(i, 0)),
+      static_cast<int>(dimension->GetComponent(i, 0)), change->GetComponent(i, 0) > 0 ? 1 : 0);
+    const auto it = seen.find(key);
+    if (it == seen.end())
+    {
+      seen.emplace(key, lines.size());
+      lines.emplace_back(i, 1);
+    }
+    else
+    {
+      ++lines[it->second].second;
+    }
+  }
+  const char* what[2][4] = { { "parts join", "hole closes", "void fills", "cavity fills" },
+    { "part appears", "hole opens", "void closes in", "cavity closes in" } };
+  const char* many[2][4] = { { "parts join", "holes close", "voids fill", "cavities fill" },
+    { "parts appear", "holes open", "voids close in", "cavities close in" } };
+  const std::size_t shown = std::min<std::size_t>(lines.size(), 10);
+  for (std::size_t k = 0; k < shown; ++k)
+  {
+    const vtkIdType i = lines[k].first;
+    const int count = lines[k].second;
+    double x[3];
+    warnings->GetPoint(i, x);
+    const int d = std::max(0, std::min(3, static_cast<int>(dimension->GetComponent(i, 0))));
+    const int up = change->GetComponent(i, 0) > 0 ? 1 : 0;
+    std::cerr << "warning: under-sampled near (" << x[0] << ", " << x[1] << ", " << x[2]
+              << "): spacing " << spacing->GetComponent(i, 0) << "; at t_r "
+              << threshold->GetComponent(i, 0) << " ";
+    if (count == 1)
+    {
+      std::cerr << (d == 0 && up == 0 ? "" : "a ") << what[up][d] << "\n";
+    }
+    else
+    {
+      std::cerr << count << " " << many[up][d] << "\n";
+    }
+  }
+  if (lines.size() > shown)
+  {
+    std::cerr << "warning: and " << (lines.size() - shown)
+              << " more places where the topology changes just above t_r\n";
+  }
+}
+
 int RunReconstruct(const Arguments& args)
 {
   const char* help = "flowrecon reconstruct --help";
@@ -1087,7 +1164,18 @@ int RunReconstruct(const Arguments& args)
   }
   // The file holds the cells below `trmax`; the Betti numbers of every t_r up
   // to `tdraw` come from one barcode of the family drawn below it.
-  const double tdraw = !topologyPath.empty() && !args.Has("--tr-max") ? std::max(tr, 4.0) : trmax;
+  double window = 1.1;
+  if (args.Has("--warn-window"))
+  {
+    window = NumberOption(args, "--warn-window", 1.1, "reconstruct");
+    if (!(window >= 1) || std::isinf(window))
+    {
+      throw UsageError("--warn-window must be a finite number >= 1", help);
+    }
+  }
+  // Drawn: what is written, what the profile shows, and the warnings' window.
+  double tdraw = !topologyPath.empty() && !args.Has("--tr-max") ? std::max(tr, 4.0) : trmax;
+  tdraw = std::max(tdraw, tr * window);
   FlowComplexOptions options = CommonOptions(args, "reconstruct");
   // The reconstruction draws the cells it writes by itself: the complex needs
   // only its Hasse diagram (DESIGN.md, "Cost follows the output").
@@ -1098,6 +1186,7 @@ int RunReconstruct(const Arguments& args)
   vtkSmartPointer<vtkUnstructuredGrid> grid;
   vtkSmartPointer<vtkTable> profile;
   vtkSmartPointer<vtkTable> topology;
+  vtkSmartPointer<vtkPolyData> undersampling;
   std::vector<flowrecon::Node> nodes; // for --jumps
   PhaseTimes times;
   PhaseClock clock(times);
@@ -1106,7 +1195,9 @@ int RunReconstruct(const Arguments& args)
     grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
     profile = vtkSmartPointer<vtkTable>::New();
     topology = vtkSmartPointer<vtkTable>::New();
-    ReconstructCloud(input, tp, trmax, tdraw, options, grid, profile, topology, nodes, clock);
+    undersampling = vtkSmartPointer<vtkPolyData>::New();
+    ReconstructCloud(input, tp, tr, trmax, tdraw, window, options, grid, profile, topology,
+      undersampling, nodes, clock);
   }
   else
   {
@@ -1127,9 +1218,23 @@ int RunReconstruct(const Arguments& args)
     }
     vtkNew<vtkFlowReconstruction> reconstruction;
     reconstruction->SetInputData(simplified);
-    reconstruction->SetReconstructionThreshold(trmax);
     reconstruction->SetMaximumThreshold(tdraw);
+    reconstruction->SetUnderSamplingWindow(window);
+    if (trmax != tr)
+    {
+      // The warnings at t_r; then the file's family below T (a selection: the
+      // queue and the drawing are cached).
+      reconstruction->SetReconstructionThreshold(tr);
+      RunFilter(reconstruction, input, options, "reconstruction");
+      undersampling = vtkSmartPointer<vtkPolyData>::New();
+      undersampling->DeepCopy(reconstruction->GetOutputDataObject(4));
+    }
+    reconstruction->SetReconstructionThreshold(trmax);
     RunFilter(reconstruction, input, options, "reconstruction");
+    if (trmax == tr)
+    {
+      undersampling = vtkPolyData::SafeDownCast(reconstruction->GetOutputDataObject(4));
+    }
     grid = vtkUnstructuredGrid::SafeDownCast(reconstruction->GetOutputDataObject(0));
     profile = vtkTable::SafeDownCast(reconstruction->GetOutputDataObject(1));
     topology = vtkTable::SafeDownCast(reconstruction->GetOutputDataObject(3));
@@ -1185,6 +1290,10 @@ int RunReconstruct(const Arguments& args)
               << steps << " steps at t_r " << tr << "\n";
   }
   ReportTopology(topology, tr, topologyPath, options.Quiet);
+  if (!options.Quiet)
+  {
+    ReportUnderSampling(undersampling);
+  }
   if (jumps > 0)
   {
     // Paper §5.2: a jump of the profile is a step whose priority exceeds all

@@ -312,16 +312,65 @@ void ReconstructionToVTK(const FlowComplex& fc, const std::vector<Id>& carriers,
 
 FilteredCells ReconstructionCells(const FlowComplex& fc, const std::vector<Id>& carriers,
   const ReconstructionResult& run, double t, const CellsByNode& triangles,
-  const CellsByNode& tetrahedra)
+  const CellsByNode& tetrahedra, std::vector<Id>* cellNodes)
 {
   FilteredCells cells;
+  if (cellNodes)
+  {
+    cellNodes->clear();
+  }
   for (const Id node : SelectedNodes(fc, carriers, run, t))
   {
     const double threshold = run.Nodes[carriers[node]].Threshold;
-    ForEachCell(fc, node, triangles, tetrahedra,
-      [&](int, int n, const Id* ids, Id) { cells.Add(ids, n, threshold); });
+    ForEachCell(fc, node, triangles, tetrahedra, [&](int, int n, const Id* ids, Id) {
+      cells.Add(ids, n, threshold);
+      if (cellNodes)
+      {
+        cellNodes->push_back(node);
+      }
+    });
   }
   return cells;
+}
+
+void UnderSamplingToVTK(const std::vector<TopologyChange>& changes,
+  const std::vector<Id>& cellNodes, const FlowComplex& fc, vtkPolyData* output)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkCellArray> vertices;
+  auto threshold = NamedArray<vtkDoubleArray>("Threshold");
+  auto dimension = NamedArray<vtkIntArray>("Dimension");
+  auto change = NamedArray<vtkIntArray>("Change");
+  auto spacing = NamedArray<vtkDoubleArray>("Spacing");
+  auto nodeId = NamedArray<vtkIdTypeArray>("NodeId");
+  for (const TopologyChange& c : changes)
+  {
+    const Id node = c.Cell >= 0 && c.Cell < static_cast<Id>(cellNodes.size()) ? cellNodes[c.Cell] : -1;
+    if (node < 0)
+    {
+      continue;
+    }
+    const vtkIdType id = points->InsertNextPoint(fc.Nodes[node].Location.data());
+    vertices->InsertNextCell(1, &id);
+    threshold->InsertNextValue(c.Threshold);
+    dimension->InsertNextValue(c.Dimension);
+    change->InsertNextValue(c.Change);
+    // The diameter of the empty ball at the node's critical point: the gap in
+    // the sampling there (a sample's node has value 0: its nearest Gabriel edge
+    // would do, but a sample brings no change above t_r > 1).
+    spacing->InsertNextValue(2 * fc.Nodes[node].Value);
+    nodeId->InsertNextValue(node);
+  }
+  output->Initialize();
+  output->SetPoints(points);
+  output->SetVerts(vertices);
+  for (vtkDataArray* a : std::initializer_list<vtkDataArray*>{ threshold, dimension, change,
+         spacing, nodeId })
+  {
+    output->GetPointData()->AddArray(a);
+  }
+  output->GetPointData()->SetActiveScalars("Threshold");
 }
 
 void TopologyToVTK(const std::vector<Bar>& bars, double t, double limit,

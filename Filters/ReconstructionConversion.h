@@ -39,7 +39,16 @@ void ReconstructionToVTK(const FlowComplex& fc, const std::vector<Id>& carriers,
 /// Threshold of its carrier: the filtration of the nested family below t.
 FilteredCells ReconstructionCells(const FlowComplex& fc, const std::vector<Id>& carriers,
   const ReconstructionResult& run, double t, const CellsByNode& triangles,
-  const CellsByNode& tetrahedra);
+  const CellsByNode& tetrahedra, std::vector<Id>* cellNodes = nullptr);
+
+/// The under-sampling warnings as points (vtkPolyData with vertices): one per
+/// change, at the critical point of the node whose cell brings it
+/// (`cellNodes`: the node of each cell of ReconstructionCells), point data
+/// `Threshold` (the t_r above which it happens), `Dimension`, `Change` (+1 a
+/// class appears, -1 one goes), `Spacing` (twice the node's critical value: the
+/// diameter of the empty ball there) and `NodeId`.
+void UnderSamplingToVTK(const std::vector<TopologyChange>& changes,
+  const std::vector<Id>& cellNodes, const FlowComplex& fc, vtkPolyData* output);
 
 /// Field data `BettiNumbers` (b0, b1, b2 of the cells below t) on `grid`, and
 /// the topology profile in `table`: columns `Threshold`, `b0`, `b1`, `b2`, one

@@ -50,6 +50,7 @@ struct vtkFlowReconstruction::Cache
   /// Persistent homology of the drawn family (below GeometryThreshold); empty
   /// with TopologyError set when it could not be computed.
   std::vector<flowrecon::Bar> Bars;
+  std::vector<Id> CellNodes; ///< node of each cell the bars refer to
   std::string TopologyError;
 };
 
@@ -59,7 +60,7 @@ vtkStandardNewMacro(vtkFlowReconstruction);
 //------------------------------------------------------------------------------
 vtkFlowReconstruction::vtkFlowReconstruction()
 {
-  this->SetNumberOfOutputPorts(4);
+  this->SetNumberOfOutputPorts(5);
 }
 
 //------------------------------------------------------------------------------
@@ -75,8 +76,9 @@ int vtkFlowReconstruction::FillInputPortInformation(int, vtkInformation* info)
 //------------------------------------------------------------------------------
 int vtkFlowReconstruction::FillOutputPortInformation(int port, vtkInformation* info)
 {
-  const char* types[4] = { "vtkUnstructuredGrid", "vtkTable", "vtkPolyData", "vtkTable" };
-  if (port < 0 || port > 3)
+  const char* types[5] = { "vtkUnstructuredGrid", "vtkTable", "vtkPolyData", "vtkTable",
+    "vtkPolyData" };
+  if (port < 0 || port > 4)
   {
     return 0;
   }
@@ -93,7 +95,8 @@ int vtkFlowReconstruction::RequestData(
   auto* profile = vtkTable::GetData(outputVector, PROFILE);
   auto* arrows = vtkPolyData::GetData(outputVector, SPONSOR_ARROWS);
   auto* topology = vtkTable::GetData(outputVector, TOPOLOGY_PROFILE);
-  if (!input || !grid || !profile || !arrows || !topology)
+  auto* undersampling = vtkPolyData::GetData(outputVector, UNDER_SAMPLING);
+  if (!input || !grid || !profile || !arrows || !topology || !undersampling)
   {
     vtkErrorMacro("Missing input or output.");
     return 0;
@@ -107,6 +110,7 @@ int vtkFlowReconstruction::RequestData(
     profile->Initialize();
     arrows->Initialize();
     topology->Initialize();
+    undersampling->Initialize();
     return 1;
   }
   // The queue runs only for a new input; a new threshold only re-selects.
@@ -162,6 +166,7 @@ int vtkFlowReconstruction::RequestData(
     profile->Initialize();
     arrows->Initialize();
     topology->Initialize();
+    undersampling->Initialize();
     return this->GetAbortExecute() ? 1 : 0;
   }
 
@@ -183,10 +188,15 @@ int vtkFlowReconstruction::RequestData(
   if (c.TopologyError.empty())
   {
     flowrecon::TopologyToVTK(c.Bars, t, tmax, grid, topology);
+    // Changes beyond T_max are not known: the window stops there.
+    const double window = std::min(this->UnderSamplingWindow, tmax / t);
+    flowrecon::UnderSamplingToVTK(
+      flowrecon::TopologyChangesAbove(c.Bars, t, std::max(1.0, window)), c.CellNodes, fc, undersampling);
   }
   else
   {
     topology->Initialize();
+    undersampling->Initialize();
     vtkWarningMacro(<< "no Betti numbers: " << c.TopologyError);
   }
 
@@ -253,7 +263,7 @@ bool vtkFlowReconstruction::DrawGeometry(double tmax)
     this->SetProgressText("Betti numbers");
     this->UpdateProgress(0.9);
     cache.Bars = flowrecon::CellBarcode(flowrecon::ReconstructionCells(fc, cache.Carrier,
-      cache.Run, tmax, cache.TriangleGroups, cache.TetraGroups));
+      cache.Run, tmax, cache.TriangleGroups, cache.TetraGroups, &cache.CellNodes));
   }
   catch (const flowrecon::InputError& e)
   {
@@ -273,5 +283,6 @@ void vtkFlowReconstruction::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "ReconstructionThreshold: " << this->ReconstructionThreshold << "\n";
   os << indent << "MaximumThreshold: " << this->MaximumThreshold << "\n";
+  os << indent << "UnderSamplingWindow: " << this->UnderSamplingWindow << "\n";
   os << indent << "NumberOfQueueRuns: " << this->NumberOfQueueRuns << "\n";
 }

@@ -58,7 +58,16 @@ flowrecon_add_cli_test(ReconstructTetrahedron EXIT 0 STDERR_LINES 0
 flowrecon_add_cli_test(ReconstructTetrahedronEdges EXIT 0 STDERR_LINES 0
   STDOUT "tet_edges\\.vtu: 10 cells, 10 of 15 steps at t_r 1\\.1\n"
   FIXTURES_REQUIRED flowrecon_cli_vtm
-  ARGS reconstruct "${_w}/tetrahedron.vtm" -o "${_w}/tet_edges.vtu" --tp 0 --tr 1.1)
+  ARGS reconstruct "${_w}/tetrahedron.vtm" -o "${_w}/tet_edges.vtu" --tp 0 --tr 1.1
+       --warn-window 1)
+# The regular tetrahedron (edge 2 sqrt 2) at t_r 1.1 is its 6 edges (b1 = 3);
+# its faces (circumradius 2 sqrt(2/3)) close the 3 holes at t_r = 2/sqrt 3 =
+# 1.1547, within the default window 1.1: warned, at a face's centre (spacing
+# twice the circumradius, 3.26599) and at the centre (the cone's apex).
+flowrecon_add_cli_test(ReconstructTetrahedronWarnings EXIT 0 STDERR_LINES 2
+  STDERR "warning: under-sampled near \\(-?0\\.333333, -?0\\.333333, -?0\\.333333\\): spacing 3\\.26599; at t_r 1\\.1547 a hole closes"
+  FIXTURES_REQUIRED flowrecon_cli_vtm
+  ARGS reconstruct "${_w}/tetrahedron.vtm" -o "${_w}/tet_warn.vtu" --tp 0 --tr 1.1)
 flowrecon_add_cli_test(ReconstructProfile EXIT 0 STDERR_LINES 0
   STDOUT "largest jumps of the profile.*\n  step [0-9]+: [0-9.]+ -> [0-9.]+, node [0-9]+, index [0-3], value [0-9.]+, at \\("
   VTM "${_w}/small_profile.csv"

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numeric>
 #include <string>
+#include <tuple>
 #include <type_traits>
 
 namespace flowrecon
@@ -31,6 +32,7 @@ struct Layer
   {
     Key V;
     double Value;
+    Id Cell; ///< the cell that brings it at Value (the first such cell)
   };
   std::vector<Simplex> S; ///< sorted by key once Finish() ran
   std::vector<Id> Rank;   ///< by position in S
@@ -55,12 +57,12 @@ struct Layer
     }
     return v;
   }
-  void Add(const Id* v, double value) { this->S.push_back({ Pack(v), value }); }
+  void Add(const Id* v, double value, Id cell) { this->S.push_back({ Pack(v), value, cell }); }
 
   void Finish()
   {
     std::sort(this->S.begin(), this->S.end(), [](const Simplex& a, const Simplex& b) {
-      return a.V < b.V || (a.V == b.V && a.Value < b.Value);
+      return a.V < b.V || (a.V == b.V && (a.Value < b.Value || (a.Value == b.Value && a.Cell < b.Cell)));
     });
     // Equal keys are one simplex, present from its least value (the first).
     this->S.erase(std::unique(this->S.begin(), this->S.end(),
@@ -89,6 +91,7 @@ struct Layer
   }
   const Simplex& OfRank(Id r) const { return this->S[this->Order[r]]; }
   double ValueOfRank(Id r) const { return this->OfRank(r).Value; }
+  Id CellOfRank(Id r) const { return this->OfRank(r).Cell; }
 };
 
 /// Adds to `lower` the faces of every simplex of `upper` (each with its value).
@@ -109,16 +112,17 @@ void AddFaces(const Layer<K>& upper, Layer<K - 1>& lower)
           f[k++] = v[i];
         }
       }
-      lower.Add(f.data(), s.Value);
+      lower.Add(f.data(), s.Value, s.Cell);
     }
   }
 }
 
-void Push(std::vector<Bar>& bars, int dimension, double birth, double death)
+void Push(std::vector<Bar>& bars, int dimension, double birth, double death, Id birthCell,
+  Id deathCell)
 {
   if (birth < death)
   {
-    bars.push_back(Bar{ dimension, birth, death });
+    bars.push_back(Bar{ dimension, birth, death, birthCell, deathCell });
   }
 }
 
@@ -233,12 +237,13 @@ void CohomologyPass(const Layer<K>& upper, const Layer<K - 1>& lower,
     const Id pivot = reducer.Reduce(column);
     if (pivot < 0)
     {
-      Push(bars, K - 2, lower.ValueOfRank(r), HUGE_VAL);
+      Push(bars, K - 2, lower.ValueOfRank(r), HUGE_VAL, lower.CellOfRank(r), -1);
     }
     else
     {
       deaths[pivot] = 1;
-      Push(bars, K - 2, lower.ValueOfRank(r), upper.ValueOfRank(pivot));
+      Push(bars, K - 2, lower.ValueOfRank(r), upper.ValueOfRank(pivot), lower.CellOfRank(r),
+        upper.CellOfRank(pivot));
     }
   }
 }
@@ -297,10 +302,10 @@ std::vector<Bar> CellBarcode(const FilteredCells& cells, const Progress& progres
     }
     switch (n)
     {
-      case 1: l0.Add(p.data(), value); break;
-      case 2: l1.Add(p.data(), value); break;
-      case 3: l2.Add(p.data(), value); break;
-      default: l3.Add(p.data(), value); break;
+      case 1: l0.Add(p.data(), value, c); break;
+      case 2: l1.Add(p.data(), value, c); break;
+      case 3: l2.Add(p.data(), value, c); break;
+      default: l3.Add(p.data(), value, c); break;
     }
   }
   // Down one dimension at a time: the faces of the distinct simplices only.
@@ -332,14 +337,14 @@ std::vector<Bar> CellBarcode(const FilteredCells& cells, const Progress& progres
     {
       std::swap(a, b); // b is the elder (smaller rank): it survives
     }
-    Push(bars, 0, l0.ValueOfRank(a), e.Value);
+    Push(bars, 0, l0.ValueOfRank(a), e.Value, l0.CellOfRank(a), e.Cell);
     parent[a] = b;
   }
   for (Id v = 0; v < static_cast<Id>(parent.size()); ++v)
   {
     if (Find(parent, v) == v)
     {
-      Push(bars, 0, l0.ValueOfRank(v), HUGE_VAL);
+      Push(bars, 0, l0.ValueOfRank(v), HUGE_VAL, l0.CellOfRank(v), -1);
     }
   }
   progress(0.4, "Betti numbers");
@@ -358,7 +363,7 @@ std::vector<Bar> CellBarcode(const FilteredCells& cells, const Progress& progres
   {
     if (!deathTetrahedra[r])
     {
-      Push(bars, 3, l3.ValueOfRank(r), HUGE_VAL);
+      Push(bars, 3, l3.ValueOfRank(r), HUGE_VAL, l3.CellOfRank(r), -1);
     }
   }
   std::sort(bars.begin(), bars.end(), [](const Bar& a, const Bar& b) {
@@ -426,6 +431,29 @@ std::vector<TopologyStep> TopologyProfile(
     }
   }
   return steps;
+}
+
+std::vector<TopologyChange> TopologyChangesAbove(
+  const std::vector<Bar>& bars, double t, double factor)
+{
+  std::vector<TopologyChange> changes;
+  const double limit = t * factor;
+  for (const Bar& b : bars)
+  {
+    if (b.Birth >= t && b.Birth < limit)
+    {
+      changes.push_back(TopologyChange{ b.Dimension, b.Birth, +1, b.BirthCell });
+    }
+    if (b.Death >= t && b.Death < limit)
+    {
+      changes.push_back(TopologyChange{ b.Dimension, b.Death, -1, b.DeathCell });
+    }
+  }
+  std::sort(changes.begin(), changes.end(), [](const TopologyChange& a, const TopologyChange& b) {
+    return std::tie(a.Threshold, a.Dimension, a.Change, a.Cell) <
+      std::tie(b.Threshold, b.Dimension, b.Change, b.Cell);
+  });
+  return changes;
 }
 
 } // namespace flowrecon

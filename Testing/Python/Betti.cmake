@@ -31,6 +31,15 @@ if (TARGET flowrecon)
   set_tests_properties(py.reconstruction.topology_profile PROPERTIES LABELS "python" TIMEOUT 300)
 endif ()
 
+# Under-sampling warnings (issue #9): none on clean quasi-uniform samples, and
+# inside the thinned region of thinned ones.
+if (TARGET flowrecon)
+  add_test(NAME py.reconstruction.undersampling
+    COMMAND "${FLOWRECON_TEST_PYTHON}" "${CMAKE_CURRENT_SOURCE_DIR}/test_undersampling.py"
+            "$<TARGET_FILE:flowrecon>" "${CMAKE_CURRENT_BINARY_DIR}/undersampling")
+  set_tests_properties(py.reconstruction.undersampling PROPERTIES LABELS "python" TIMEOUT 300)
+endif ()
+
 # The reconstruction does not depend on the order of the input lines (cube,
 # sphere, torus, exact grid, duplicates; t_p 1.1 and 0), and 10^6 lines holding
 # 5 distinct points give a .vtu of a handful of points (issue #12).

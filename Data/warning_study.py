@@ -1,0 +1,53 @@
+#!/usr/bin/python3
+"""The under-sampling warnings against the truth, on every shape of
+generate_clouds.py (two seeds each) at the defaults (t_p 1.1, t_r 2): for each
+window F, how many answers are right and unflagged, right but flagged (a false
+alarm), wrong and flagged, wrong and silent. A cloud is flagged when the Betti
+numbers change for some t_r in [2, 2F) (what `flowrecon reconstruct
+--warn-window F` warns about); the 'both sides' rows count changes in [2/F, 2F)
+instead. Prints a Markdown table (Data/EXPERIMENTS.md, "Under-sampling
+warnings").
+
+  /usr/bin/python3 Data/warning_study.py build/bin/flowrecon WORKDIR
+"""
+import csv
+import os
+import subprocess
+import sys
+
+import numpy as np
+
+import generate_clouds as gc
+
+FLOWRECON, WORK = sys.argv[1], sys.argv[2]
+WINDOWS = (1.03, 1.05, 1.1, 1.2)
+os.makedirs(WORK, exist_ok=True)
+runs = []
+for name in gc.SHAPES:
+    for seed in (0, 1):
+        base = os.path.join(WORK, "%s_%d" % (name, seed))
+        np.savetxt(base + ".xyz", gc.make(name, seed_offset=seed), fmt="%.17g")
+        out = subprocess.run([FLOWRECON, "reconstruct", base + ".xyz", "-o", base + ".vtu",
+                              "--topology-profile", base + ".csv", "--warn-window", "1"],
+                             capture_output=True, text=True, check=True).stdout
+        line = [l for l in out.splitlines() if l.startswith("Betti numbers: ")][0]
+        betti = tuple(int(x) for x in line.split()[2:])
+        with open(base + ".csv") as f:
+            changes = [float(r["threshold"]) for r in csv.DictReader(f)][1:]
+        right = betti == gc.betti(name)
+        print("%-24s seed %d: %s %s, nearest change above 2: %s" % (
+            name, seed, betti, "right" if right else "WRONG (truth %s)" % (gc.betti(name),),
+            min([t for t in changes if t >= 2], default="none")), file=sys.stderr)
+        runs.append((right, changes))
+
+print("| window | changes counted | right, no warning | right, warned (false alarm) "
+      "| wrong, warned | wrong, silent |")
+print("|---|---|---:|---:|---:|---:|")
+for both in (False, True):
+    for f in WINDOWS:
+        low = 2 / f if both else 2
+        flagged = [any(low <= t < 2 * f for t in changes) for _, changes in runs]
+        count = lambda r, w: sum(1 for (right, _), fl in zip(runs, flagged) if right == r and fl == w)
+        print("| %g | %s | %d | %d | %d | %d |" % (
+            f, "[2/F, 2F)" if both else "[2, 2F)", count(True, False), count(True, True),
+            count(False, True), count(False, False)))

@@ -1,0 +1,62 @@
+"""Under-sampling warnings (issue #9): `flowrecon reconstruct` at its defaults
+prints 'warning: under-sampled near (x, y, z): ...' where the Betti numbers
+change for a t_r just above the chosen one. Clean quasi-uniform samples of a
+sphere, a torus and a genus-2 surface (Data/generate_clouds.py): the right
+Betti numbers and no warning. The same sphere and torus with a known region
+thinned (a polar cap, the top of the tube: half or more of its points removed):
+a wrong answer, at least one warning, and every warning inside the thinned
+region. Usage: test_undersampling.py FLOWRECON WORKDIR
+"""
+import os
+import re
+import subprocess
+import sys
+
+import numpy as np
+
+FLOWRECON, WORK = sys.argv[1], sys.argv[2]
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Data"))
+import generate_clouds as gc  # noqa: E402
+
+failures = []
+
+
+def reconstruct(name, points):
+    path = os.path.join(WORK, name + ".xyz")
+    np.savetxt(path, points, fmt="%.17g")
+    p = subprocess.run([FLOWRECON, "reconstruct", path, "-o", os.path.join(WORK, name + ".vtu")],
+                       capture_output=True, text=True)
+    if p.returncode != 0:
+        raise SystemExit("flowrecon failed on %s: %s" % (name, p.stderr))
+    betti = tuple(int(x) for x in re.search(r"Betti numbers: (\d+) (\d+) (\d+)", p.stdout).groups())
+    places = [tuple(float(v) for v in m.group(1).split(","))
+              for m in re.finditer(r"warning: under-sampled near \(([^)]*)\)", p.stderr)]
+    return betti, places
+
+
+os.makedirs(WORK, exist_ok=True)
+for name, size, truth in (("sphere_qu", 3000, (1, 0, 1)), ("torus_qu", 3000, (1, 2, 1)),
+                          ("genus2_qu", 3000, (1, 4, 1))):
+    betti, places = reconstruct(name, gc.make(name, size=size))
+    ok = betti == truth and not places
+    print("%s (clean): Betti %s, %d warnings" % (name, betti, len(places)), "OK" if ok else "WRONG")
+    if not ok:
+        failures.append(name)
+
+# Thinned: a polar cap of the sphere (z > 0.7), the top of the torus' tube (z > 0.25).
+for name, top, removed in (("sphere_qu", 0.7, 0.5), ("sphere_qu", 0.7, 0.7), ("torus_qu", 0.25, 0.5)):
+    base = gc.make(name, size=3000)
+    rng = np.random.default_rng(3)
+    keep = (base[:, 2] <= top) | (rng.uniform(size=len(base)) > removed)
+    betti, places = reconstruct("%s_thinned_%g" % (name, removed), base[keep])
+    # Inside the region, up to a sample spacing (about 0.05 here) below its edge.
+    outside = [p for p in places if p[2] < top - 0.1]
+    ok = betti != gc.betti(name) and places and not outside
+    print("%s, %d%% of z > %g removed: Betti %s, warnings at z = %s" % (
+        name, 100 * removed, top, betti, ", ".join("%.2f" % p[2] for p in places)),
+        "OK" if ok else "WRONG")
+    if not ok:
+        failures.append("%s thinned %g" % (name, removed))
+if failures:
+    raise SystemExit("under-sampling warnings wrong on: " + ", ".join(failures))
+print("no warning on clean samples, a warning inside every thinned region")
