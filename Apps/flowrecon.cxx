@@ -349,6 +349,8 @@ const std::vector<Command>& Commands()
           "--tr-max (4 when not given) as CSV: threshold,b0,b1,b2, one row per change" },
         { "--warn-window", nullptr, "F", "warn where the Betti numbers change for a t_r in\n"
           "[t_r, F t_r): an under-sampled region (1.1; 1 for none)" },
+        { "--no-betti", nullptr, nullptr, "skip the Betti numbers, the topology profile and the\n"
+          "warnings (on solids of millions of tetrahedra they cost about as much as the rest)" },
         { "--jumps", nullptr, "K", "print the K largest jumps of the profile (tracking back)" },
         { "--timings", nullptr, nullptr, "print the seconds of each phase" }, ThreadsOption,
         QuietOption },
@@ -876,7 +878,7 @@ private:
 };
 
 void ReconstructCloud(const std::string& input, double tp, double tr, double twrite, double tdraw,
-  double window, const FlowComplexOptions& options, vtkUnstructuredGrid* grid, vtkTable* profile,
+  double window, bool betti, const FlowComplexOptions& options, vtkUnstructuredGrid* grid, vtkTable* profile,
   vtkTable* topology, vtkPolyData* undersampling, std::vector<flowrecon::Node>& nodes,
   PhaseClock& clock)
 {
@@ -948,6 +950,10 @@ void ReconstructCloud(const std::string& input, double tp, double tr, double twr
     std::string topologyError;
     try
     {
+      if (!betti)
+      {
+        throw flowrecon::InputError("not asked for");
+      }
       bars = flowrecon::CellBarcode(flowrecon::ReconstructionCells(
                                       fc, carriers, run, tdraw, triangles, tetrahedra, &cellNodes),
         stage(0.9, 0.95));
@@ -968,7 +974,7 @@ void ReconstructCloud(const std::string& input, double tp, double tr, double twr
         flowrecon::TopologyChangesAbove(bars, tr, std::max(1.0, std::min(window, tdraw / tr))),
         cellNodes, fc, undersampling);
     }
-    else
+    else if (betti)
     {
       std::cerr << "warning: no Betti numbers: " << topologyError << "\n";
     }
@@ -1173,6 +1179,15 @@ int RunReconstruct(const Arguments& args)
       throw UsageError("--warn-window must be a finite number >= 1", help);
     }
   }
+  const bool betti = !args.Has("--no-betti");
+  if (!betti && (args.Has("--topology-profile") || args.Has("--warn-window")))
+  {
+    throw UsageError("--no-betti excludes --topology-profile and --warn-window", help);
+  }
+  if (!betti)
+  {
+    window = 1;
+  }
   // Drawn: what is written, what the profile shows, and the warnings' window.
   double tdraw = !topologyPath.empty() && !args.Has("--tr-max") ? std::max(tr, 4.0) : trmax;
   tdraw = std::max(tdraw, tr * window);
@@ -1196,7 +1211,7 @@ int RunReconstruct(const Arguments& args)
     profile = vtkSmartPointer<vtkTable>::New();
     topology = vtkSmartPointer<vtkTable>::New();
     undersampling = vtkSmartPointer<vtkPolyData>::New();
-    ReconstructCloud(input, tp, tr, trmax, tdraw, window, options, grid, profile, topology,
+    ReconstructCloud(input, tp, tr, trmax, tdraw, window, betti, options, grid, profile, topology,
       undersampling, nodes, clock);
   }
   else
@@ -1220,6 +1235,7 @@ int RunReconstruct(const Arguments& args)
     reconstruction->SetInputData(simplified);
     reconstruction->SetMaximumThreshold(tdraw);
     reconstruction->SetUnderSamplingWindow(window);
+    reconstruction->SetComputeTopology(betti);
     if (trmax != tr)
     {
       // The warnings at t_r; then the file's family below T (a selection: the

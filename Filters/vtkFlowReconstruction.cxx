@@ -185,7 +185,12 @@ int vtkFlowReconstruction::RequestData(
 
   flowrecon::ReconstructionToVTK(fc, c.Carrier, c.Run, t, c.TriangleGroups, c.TetraGroups,
     grid, profile, arrows);
-  if (c.TopologyError.empty())
+  if (!this->ComputeTopology)
+  {
+    topology->Initialize();
+    undersampling->Initialize();
+  }
+  else if (c.TopologyError.empty())
   {
     flowrecon::TopologyToVTK(c.Bars, t, tmax, grid, topology);
     // Changes beyond T_max are not known: the window stops there.
@@ -260,6 +265,10 @@ bool vtkFlowReconstruction::DrawGeometry(double tmax)
   cache.TopologyError.clear();
   try
   {
+    if (!this->ComputeTopology)
+    {
+      throw flowrecon::InputError("not asked for"); // recomputed with the next drawing
+    }
     this->SetProgressText("Betti numbers");
     this->UpdateProgress(0.9);
     cache.Bars = flowrecon::CellBarcode(flowrecon::ReconstructionCells(fc, cache.Carrier,
@@ -284,5 +293,6 @@ void vtkFlowReconstruction::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ReconstructionThreshold: " << this->ReconstructionThreshold << "\n";
   os << indent << "MaximumThreshold: " << this->MaximumThreshold << "\n";
   os << indent << "UnderSamplingWindow: " << this->UnderSamplingWindow << "\n";
+  os << indent << "ComputeTopology: " << (this->ComputeTopology ? "on" : "off") << "\n";
   os << indent << "NumberOfQueueRuns: " << this->NumberOfQueueRuns << "\n";
 }

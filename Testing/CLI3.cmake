@@ -64,6 +64,11 @@ flowrecon_add_cli_test(ReconstructTetrahedronEdges EXIT 0 STDERR_LINES 0
 # its faces (circumradius 2 sqrt(2/3)) close the 3 holes at t_r = 2/sqrt 3 =
 # 1.1547, within the default window 1.1: warned, at a face's centre (spacing
 # twice the circumradius, 3.26599) and at the centre (the cone's apex).
+# --no-betti: neither the Betti numbers nor the warnings (only the summary line).
+flowrecon_add_cli_test(ReconstructNoBetti EXIT 0 STDERR_LINES 0
+  STDOUT "^[^\n]*tet_nb\\.vtu: 10 cells, 10 of 15 steps at t_r 1\\.1\n$"
+  FIXTURES_REQUIRED flowrecon_cli_vtm
+  ARGS reconstruct "${_w}/tetrahedron.vtm" -o "${_w}/tet_nb.vtu" --tp 0 --tr 1.1 --no-betti)
 flowrecon_add_cli_test(ReconstructTetrahedronWarnings EXIT 0 STDERR_LINES 2
   STDERR "warning: under-sampled near \\(-?0\\.333333, -?0\\.333333, -?0\\.333333\\): spacing 3\\.26599; at t_r 1\\.1547 a hole closes"
   FIXTURES_REQUIRED flowrecon_cli_vtm

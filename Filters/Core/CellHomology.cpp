@@ -33,10 +33,14 @@ struct Layer
     Key V;
     double Value;
     Id Cell; ///< the cell that brings it at Value (the first such cell)
+    Id From; ///< while listing: K' x position + slot in the layer above, -1 for a cell
   };
   std::vector<Simplex> S; ///< sorted by key once Finish() ran
   std::vector<Id> Rank;   ///< by position in S
   std::vector<Id> Order;  ///< position in S of the simplex of each rank
+  /// The ranks of the K faces of each simplex (by position), once the layer
+  /// below has finished: found while sorting, not searched for.
+  std::vector<Id> Faces;
 
   static Key Pack(const Id* v)
   {
@@ -57,50 +61,81 @@ struct Layer
     }
     return v;
   }
-  void Add(const Id* v, double value, Id cell) { this->S.push_back({ Pack(v), value, cell }); }
+  void Add(const Id* v, double value, Id cell, Id from = -1)
+  {
+    this->S.push_back({ Pack(v), value, cell, from });
+  }
 
-  void Finish()
+  /// Sorts and merges the listed simplices; `above` (the layer whose faces were
+  /// listed here, or null) learns the rank of each of its faces.
+  void Finish(std::vector<Id>* above)
   {
     std::sort(this->S.begin(), this->S.end(), [](const Simplex& a, const Simplex& b) {
       return a.V < b.V || (a.V == b.V && (a.Value < b.Value || (a.Value == b.Value && a.Cell < b.Cell)));
     });
     // Equal keys are one simplex, present from its least value (the first).
-    this->S.erase(std::unique(this->S.begin(), this->S.end(),
-                    [](const Simplex& a, const Simplex& b) { return a.V == b.V; }),
-      this->S.end());
-    this->S.shrink_to_fit();
-    this->Order.resize(this->S.size());
-    std::iota(this->Order.begin(), this->Order.end(), Id(0));
-    std::sort(this->Order.begin(), this->Order.end(), [this](Id a, Id b) {
-      const Simplex &x = this->S[a], &y = this->S[b];
-      return x.Value < y.Value || (x.Value == y.Value && x.V < y.V);
-    });
-    this->Rank.resize(this->S.size());
-    for (std::size_t r = 0; r < this->Order.size(); ++r)
+    std::size_t unique = 0;
+    for (std::size_t i = 0; i < this->S.size(); ++i)
     {
-      this->Rank[this->Order[r]] = static_cast<Id>(r);
+      if (i > 0 && this->S[i].V == this->S[unique - 1].V)
+      {
+        if (above && this->S[i].From >= 0)
+        {
+          (*above)[this->S[i].From] = static_cast<Id>(unique - 1);
+        }
+        continue;
+      }
+      if (above && this->S[i].From >= 0)
+      {
+        (*above)[this->S[i].From] = static_cast<Id>(unique);
+      }
+      this->S[unique++] = this->S[i];
+    }
+    this->S.resize(unique);
+    this->S.shrink_to_fit();
+    // Filtration order: by value, then key (= position): sorted directly.
+    std::vector<std::pair<double, Id>> order(this->S.size());
+    for (std::size_t i = 0; i < this->S.size(); ++i)
+    {
+      order[i] = { this->S[i].Value, static_cast<Id>(i) };
+    }
+    std::sort(order.begin(), order.end());
+    this->Order.resize(this->S.size());
+    this->Rank.resize(this->S.size());
+    for (std::size_t r = 0; r < order.size(); ++r)
+    {
+      this->Order[r] = order[r].second;
+      this->Rank[order[r].second] = static_cast<Id>(r);
+    }
+    if (above)
+    {
+      for (Id& f : *above)
+      {
+        f = this->Rank[f];
+      }
     }
   }
 
-  Id RankOf(const Id* v) const
-  {
-    const Key key = Pack(v);
-    const auto it = std::lower_bound(this->S.begin(), this->S.end(), key,
-      [](const Simplex& s, Key k) { return s.V < k; });
-    return this->Rank[it - this->S.begin()];
-  }
   const Simplex& OfRank(Id r) const { return this->S[this->Order[r]]; }
   double ValueOfRank(Id r) const { return this->OfRank(r).Value; }
   Id CellOfRank(Id r) const { return this->OfRank(r).Cell; }
+  /// The ranks below of the faces of the simplex of rank r.
+  const Id* FacesOfRank(Id r) const { return this->Faces.data() + K * this->Order[r]; }
 };
 
-/// Adds to `lower` the faces of every simplex of `upper` (each with its value).
+/// Adds to `lower` the faces of every simplex of `upper` (each with its value),
+/// remembering where each comes from (see Layer::Finish).
 template <int K>
-void AddFaces(const Layer<K>& upper, Layer<K - 1>& lower)
+void AddFaces(Layer<K>& upper, Layer<K - 1>& lower)
 {
-  lower.S.reserve(lower.S.size() + K * upper.S.size());
-  for (const auto& s : upper.S)
+  if (lower.S.capacity() < lower.S.size() + K * upper.S.size())
   {
+    lower.S.reserve(lower.S.size() + K * upper.S.size());
+  }
+  upper.Faces.assign(K * upper.S.size(), -1);
+  for (std::size_t p = 0; p < upper.S.size(); ++p)
+  {
+    const auto& s = upper.S[p];
     const std::array<Id, K> v = Layer<K>::Unpack(s.V);
     for (int skip = 0; skip < K; ++skip)
     {
@@ -112,7 +147,7 @@ void AddFaces(const Layer<K>& upper, Layer<K - 1>& lower)
           f[k++] = v[i];
         }
       }
-      lower.Add(f.data(), s.Value, s.Cell);
+      lower.Add(f.data(), s.Value, s.Cell, static_cast<Id>(K * p + skip));
     }
   }
 }
@@ -126,16 +161,16 @@ void Push(std::vector<Bar>& bars, int dimension, double birth, double death, Id 
   }
 }
 
-/// Z/2 reduction of coboundary columns (persistent cohomology, de Silva,
-/// Morozov and Vejdemo-Johansson): columns are sorted coface ranks, the pivot is
-/// the least one. Why cohomology: the boundary columns of cone tetrahedra fill
-/// in (measured: 1.2 M entries added for 2·10^5 tetrahedra), while a triangle
-/// has at most a few cofaces and its columns stay short.
+/// Z/2 column reduction with a pivot table. Columns are sorted row ranks; the
+/// pivot is the greatest row (homology) or the least (cohomology, where the
+/// columns are coboundaries). Reduced columns are kept in one pool: millions
+/// of two- and three-entry columns would otherwise be as many allocations.
 class Reducer
 {
 public:
-  explicit Reducer(std::size_t rows)
+  Reducer(std::size_t rows, bool cohomology)
     : PivotColumn(rows, -1)
+    , Cohomology(cohomology)
   {
   }
 
@@ -145,28 +180,32 @@ public:
   {
     while (!column.empty())
     {
-      const Id low = column.front();
+      const Id low = this->Cohomology ? column.front() : column.back();
       const Id other = this->PivotColumn[low];
       if (other < 0)
       {
-        this->PivotColumn[low] = static_cast<Id>(this->Columns.size());
-        this->Columns.push_back(std::move(column));
-        column.clear();
+        this->Begin.push_back(static_cast<Id>(this->Pool.size()));
+        this->Pool.insert(this->Pool.end(), column.begin(), column.end());
+        this->Begin.push_back(static_cast<Id>(this->Pool.size()));
+        this->PivotColumn[low] = static_cast<Id>(this->Begin.size() - 2);
         return low;
       }
-      const std::vector<Id>& add = this->Columns[other];
+      const Id* add = this->Pool.data() + this->Begin[other];
+      const Id* addEnd = this->Pool.data() + this->Begin[other + 1];
       this->Sum.clear();
       std::set_symmetric_difference(
-        column.begin(), column.end(), add.begin(), add.end(), std::back_inserter(this->Sum));
+        column.begin(), column.end(), add, addEnd, std::back_inserter(this->Sum));
       column.swap(this->Sum);
     }
     return -1;
   }
 
 private:
-  std::vector<Id> PivotColumn;
-  std::vector<std::vector<Id>> Columns;
+  std::vector<Id> PivotColumn; ///< position in Begin of the column with that pivot
+  std::vector<Id> Begin;       ///< each stored column: its begin and end in Pool
+  std::vector<Id> Pool;
   std::vector<Id> Sum;
+  bool Cohomology;
 };
 
 /// Cofaces by rank as compressed rows: for each simplex of `lower` (by rank),
@@ -179,18 +218,10 @@ void Cofaces(const Layer<K>& upper, const Layer<K - 1>& lower, std::vector<Id>& 
   pairs.reserve(K * upper.S.size());
   for (Id r = 0; r < static_cast<Id>(upper.Order.size()); ++r)
   {
-    const std::array<Id, K> v = Layer<K>::Unpack(upper.OfRank(r).V);
-    for (int skip = 0; skip < K; ++skip)
+    const Id* faces = upper.FacesOfRank(r);
+    for (int k = 0; k < K; ++k)
     {
-      std::array<Id, K - 1> f{};
-      for (int i = 0, k = 0; i < K; ++i)
-      {
-        if (i != skip)
-        {
-          f[k++] = v[i];
-        }
-      }
-      pairs.emplace_back(lower.RankOf(f.data()), r);
+      pairs.emplace_back(faces[k], r);
     }
   }
   std::sort(pairs.begin(), pairs.end());
@@ -207,43 +238,80 @@ void Cofaces(const Layer<K>& upper, const Layer<K - 1>& lower, std::vector<Id>& 
   }
 }
 
-/// One dimension of persistent cohomology: the simplices of `lower` from the
-/// youngest to the eldest, skipping the `cleared` ones (deaths of the dimension
-/// below); a pivot pairs the simplex (birth) with that coface (death). Marks the
-/// deaths in `deaths` (for the next dimension) and pushes essential classes.
-template <int K>
-void CohomologyPass(const Layer<K>& upper, const Layer<K - 1>& lower,
-  const std::vector<char>& cleared, std::vector<char>& deaths, std::vector<Bar>& bars,
-  const Progress& progress, double from, double to)
+/// The (triangle, tetrahedron) pairs by persistent cohomology: the triangles
+/// from the youngest to the eldest, each column its cofaces; a pivot pairs the
+/// triangle (birth of an H2 class) with that tetrahedron (its death). Why
+/// cohomology: the boundary columns of cone tetrahedra fill in (measured: 1.2 M
+/// entries added for 2·10^5 tetrahedra), while a triangle has few cofaces. No
+/// clearing (the triangles that kill H1 classes are not known yet): their
+/// columns reduce to zero, so zero columns say nothing here.
+void TrianglePairs(const Layer<4>& tets, const Layer<3>& triangles, std::vector<char>& born,
+  std::vector<char>& killer, std::vector<Bar>& bars, const Progress& progress)
 {
   std::vector<Id> offsets, list;
-  Cofaces(upper, lower, offsets, list);
-  Reducer reducer(upper.S.size());
-  deaths.assign(upper.S.size(), 0);
+  Cofaces(tets, triangles, offsets, list);
+  Reducer reducer(tets.S.size(), true);
+  born.assign(triangles.S.size(), 0);
+  killer.assign(tets.S.size(), 0);
   std::vector<Id> column;
-  const Id n = static_cast<Id>(lower.Order.size());
+  const Id n = static_cast<Id>(triangles.Order.size());
   for (Id r = n - 1; r >= 0; --r)
   {
     if ((r & 0xFFFF) == 0)
     {
-      progress(from + (to - from) * static_cast<double>(n - r) / static_cast<double>(n),
-        "Betti numbers");
+      progress(0.4 + 0.3 * static_cast<double>(n - r) / static_cast<double>(n), "Betti numbers");
     }
-    if (cleared[r])
+    if (offsets[r] == offsets[r + 1])
     {
       continue;
     }
     column.assign(list.begin() + offsets[r], list.begin() + offsets[r + 1]);
     const Id pivot = reducer.Reduce(column);
+    if (pivot >= 0)
+    {
+      born[r] = 1;
+      killer[pivot] = 1;
+      Push(bars, 2, triangles.ValueOfRank(r), tets.ValueOfRank(pivot), triangles.CellOfRank(r),
+        tets.CellOfRank(pivot));
+    }
+  }
+}
+
+/// The (edge, triangle) pairs by homology with clearing: the boundary columns
+/// of the triangles, in filtration order, skipping those that create an H2
+/// class that dies (`born`: their columns would reduce to zero). A triangle
+/// whose column reduces to zero and that no tetrahedron pairs creates an H2
+/// class that never dies.
+void EdgePairs(const Layer<3>& triangles, const Layer<2>& edges, const std::vector<char>& born,
+  std::vector<char>& killed, std::vector<Bar>& bars, const Progress& progress)
+{
+  Reducer reducer(edges.S.size(), false);
+  killed.assign(edges.S.size(), 0);
+  std::vector<Id> column;
+  const Id n = static_cast<Id>(triangles.Order.size());
+  for (Id r = 0; r < n; ++r)
+  {
+    if ((r & 0xFFFF) == 0)
+    {
+      progress(0.7 + 0.25 * static_cast<double>(r) / static_cast<double>(n), "Betti numbers");
+    }
+    if (born[r])
+    {
+      continue;
+    }
+    const Id* e = triangles.FacesOfRank(r);
+    column.assign(e, e + 3);
+    std::sort(column.begin(), column.end());
+    const Id pivot = reducer.Reduce(column);
     if (pivot < 0)
     {
-      Push(bars, K - 2, lower.ValueOfRank(r), HUGE_VAL, lower.CellOfRank(r), -1);
+      Push(bars, 2, triangles.ValueOfRank(r), HUGE_VAL, triangles.CellOfRank(r), -1);
     }
     else
     {
-      deaths[pivot] = 1;
-      Push(bars, K - 2, lower.ValueOfRank(r), upper.ValueOfRank(pivot), lower.CellOfRank(r),
-        upper.CellOfRank(pivot));
+      killed[pivot] = 1;
+      Push(bars, 1, edges.ValueOfRank(pivot), triangles.ValueOfRank(r), edges.CellOfRank(pivot),
+        triangles.CellOfRank(r));
     }
   }
 }
@@ -281,6 +349,19 @@ std::vector<Bar> CellBarcode(const FilteredCells& cells, const Progress& progres
   Layer<3> l2;
   Layer<4> l3;
   progress(0, "Betti numbers");
+  // Reserved once: growing lists of tens of millions by doubling copied them
+  // and faulted their pages in again (a third of the time on solids).
+  {
+    std::array<std::size_t, 5> count{};
+    for (Id c = 0; c < cells.Size(); ++c)
+    {
+      ++count[static_cast<std::size_t>(std::min<Id>(4, std::max<Id>(0, cells.Offsets[c + 1] - cells.Offsets[c])))];
+    }
+    l3.S.reserve(count[4]);
+    l2.S.reserve(count[3] + 4 * count[4]);
+    l1.S.reserve(count[2] + 3 * count[3] + 6 * count[4]);
+    l0.S.reserve(count[1] + 2 * count[2] + 3 * count[3] + 4 * count[4]);
+  }
   for (Id c = 0; c < cells.Size(); ++c)
   {
     const Id first = cells.Offsets[c], last = cells.Offsets[c + 1];
@@ -309,13 +390,13 @@ std::vector<Bar> CellBarcode(const FilteredCells& cells, const Progress& progres
     }
   }
   // Down one dimension at a time: the faces of the distinct simplices only.
-  l3.Finish();
+  l3.Finish(nullptr);
   AddFaces(l3, l2);
-  l2.Finish();
+  l2.Finish(&l3.Faces);
   AddFaces(l2, l1);
-  l1.Finish();
+  l1.Finish(&l2.Faces);
   AddFaces(l1, l0);
-  l0.Finish();
+  l0.Finish(&l1.Faces);
   progress(0.2, "Betti numbers");
   std::vector<Bar> bars;
 
@@ -326,8 +407,8 @@ std::vector<Bar> CellBarcode(const FilteredCells& cells, const Progress& progres
   for (Id r = 0; r < static_cast<Id>(l1.Order.size()); ++r)
   {
     const auto& e = l1.OfRank(r);
-    const std::array<Id, 2> ends = Layer<2>::Unpack(e.V);
-    Id a = Find(parent, l0.RankOf(&ends[0])), b = Find(parent, l0.RankOf(&ends[1]));
+    const Id* ends = l1.FacesOfRank(r);
+    Id a = Find(parent, ends[0]), b = Find(parent, ends[1]);
     if (a == b)
     {
       positiveEdge[r] = 1;
@@ -349,19 +430,21 @@ std::vector<Bar> CellBarcode(const FilteredCells& cells, const Progress& progres
   }
   progress(0.4, "Betti numbers");
 
-  // Cohomology upward with clearing: an edge that joined two components is no
-  // birth of H1, a triangle that killed an H1 class no birth of H2.
-  std::vector<char> deathEdges(l1.S.size(), 0), deathTriangles, deathTetrahedra;
+  // H2 pairs by cohomology, then H1 pairs by homology with clearing.
+  std::vector<char> bornTriangles, killerTetrahedra, killedEdges;
+  TrianglePairs(l3, l2, bornTriangles, killerTetrahedra, bars, progress);
+  EdgePairs(l2, l1, bornTriangles, killedEdges, bars, progress);
   for (Id r = 0; r < static_cast<Id>(l1.S.size()); ++r)
   {
-    deathEdges[r] = positiveEdge[r] ? 0 : 1;
+    if (positiveEdge[r] && !killedEdges[r])
+    {
+      Push(bars, 1, l1.ValueOfRank(r), HUGE_VAL, l1.CellOfRank(r), -1);
+    }
   }
-  CohomologyPass(l2, l1, deathEdges, deathTriangles, bars, progress, 0.4, 0.7);
-  CohomologyPass(l3, l2, deathTriangles, deathTetrahedra, bars, progress, 0.7, 0.95);
   // No 4-simplices: a tetrahedron that killed no H2 class creates an H3 class.
   for (Id r = 0; r < static_cast<Id>(l3.S.size()); ++r)
   {
-    if (!deathTetrahedra[r])
+    if (!killerTetrahedra[r])
     {
       Push(bars, 3, l3.ValueOfRank(r), HUGE_VAL, l3.CellOfRank(r), -1);
     }
