@@ -1115,6 +1115,24 @@ void ReportUnderSampling(vtkPolyData* warnings)
   }
 }
 
+// The path given to a CSV option ("" when absent), refused before the long
+// computation when its directory does not exist.
+std::string CsvOption(const Arguments& args, const char* option)
+{
+  if (!args.Has(option))
+  {
+    return std::string();
+  }
+  const std::string path = args.Values.at(option);
+  const std::filesystem::path directory = std::filesystem::path(path).parent_path();
+  std::error_code error;
+  if (!directory.empty() && !std::filesystem::is_directory(directory, error))
+  {
+    throw Failure(path + ": directory '" + directory.string() + "' does not exist");
+  }
+  return path;
+}
+
 int RunReconstruct(const Arguments& args)
 {
   const char* help = "flowrecon reconstruct --help";
@@ -1140,34 +1158,14 @@ int RunReconstruct(const Arguments& args)
     }
     jumps = static_cast<long>(k);
   }
-  std::string profilePath;
-  if (args.Has("--profile"))
-  {
-    profilePath = args.Values.at("--profile");
-    const std::filesystem::path directory = std::filesystem::path(profilePath).parent_path();
-    std::error_code error;
-    if (!directory.empty() && !std::filesystem::is_directory(directory, error))
-    {
-      throw Failure(profilePath + ": directory '" + directory.string() + "' does not exist");
-    }
-  }
+  const std::string profilePath = CsvOption(args, "--profile");
 
   const double trmax = args.Has("--tr-max") ? NumberOption(args, "--tr-max", tr, "reconstruct") : tr;
   if (!(trmax >= tr))
   {
     throw UsageError("--tr-max must be at least the reconstruction threshold --tr", help);
   }
-  std::string topologyPath;
-  if (args.Has("--topology-profile"))
-  {
-    topologyPath = args.Values.at("--topology-profile");
-    const std::filesystem::path directory = std::filesystem::path(topologyPath).parent_path();
-    std::error_code error;
-    if (!directory.empty() && !std::filesystem::is_directory(directory, error))
-    {
-      throw Failure(topologyPath + ": directory '" + directory.string() + "' does not exist");
-    }
-  }
+  const std::string topologyPath = CsvOption(args, "--topology-profile");
   // The file holds the cells below `trmax`; the Betti numbers of every t_r up
   // to `tdraw` come from one barcode of the family drawn below it.
   double window = 1.1;
