@@ -1411,17 +1411,56 @@ bool SkipLegacyGeometry(LegacyTokens& tokens, const std::string& keyword, int ma
 {
   std::string_view token;
   long long n = 0, size = 0;
-  if (!tokens.Next(token) || !ParseCount(token, n))
+  const bool coordinates =
+    keyword.compare(0, 6, "points") == 0 || keyword.find("_coordinates") != std::string::npos;
+  if (!tokens.Next(token))
   {
     return false;
   }
-  if (keyword.compare(0, 6, "points") == 0)
+  // VTK reads the count with >>, which stops at the first letter: "12utf8_string"
+  // is the count 12 and the type utf8_string (found by fuzzing).
+  std::string_view glued;
+  if (coordinates && !ParseCount(token, n))
   {
-    return SkipLegacyArray(tokens, static_cast<unsigned long long>(n), 3, binary);
+    const std::size_t digits = token.find_first_not_of("0123456789");
+    if (digits > 0 && digits != std::string_view::npos)
+    {
+      glued = token.substr(digits);
+    }
   }
-  if (keyword.find("_coordinates") != std::string::npos)
+  if (!glued.empty())
   {
-    return SkipLegacyArray(tokens, static_cast<unsigned long long>(n), 1, binary);
+    // falls through to the type check below with the glued type
+  }
+  else if (!ParseCount(token, n))
+  {
+    return false;
+  }
+  if (coordinates)
+  {
+    // VTK reads coordinates as a vtkDataArray: a string or variant array is
+    // read, then dropped without being freed (a leak found by fuzzing).
+    LegacyTokens peek = tokens;
+    std::string_view type = glued;
+    if (!type.empty() || peek.Next(type))
+    {
+      std::string lower(type);
+      std::transform(lower.begin(), lower.end(), lower.begin(),
+        [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+      if (lower.compare(0, 6, "string") == 0 || lower.compare(0, 11, "utf8_string") == 0 ||
+        lower.compare(0, 7, "variant") == 0)
+      {
+        const char* at = tokens.Text.data() + tokens.Pos;
+        Fail(file, 1 + static_cast<std::size_t>(std::count(tokens.Text.data(), at, '\n')),
+          "coordinates of type '" + std::string(type) + "': coordinates are numbers");
+      }
+    }
+    if (!glued.empty())
+    {
+      return false; // a count VTK reads differently from here: stop the walk
+    }
+    return SkipLegacyArray(
+      tokens, static_cast<unsigned long long>(n), keyword.compare(0, 6, "points") == 0 ? 3 : 1, binary);
   }
   if (keyword.compare(0, 10, "cell_types") == 0)
   {

@@ -145,9 +145,20 @@ Point3 SuccessorForest::Circumcentre(Id cell)
   if (!this->HasCentre[cell])
   {
     const std::array<Id, 4> v = this->Tri.SortedVertices(this->Tri.Cell(cell));
-    const KPoint o = CGAL::circumcenter(
-      this->Tri.KCoord(v[0]), this->Tri.KCoord(v[1]), this->Tri.KCoord(v[2]), this->Tri.KCoord(v[3]));
-    this->Centres[cell] = { { o.x(), o.y(), o.z() } };
+    // In doubles, for drawing only (the flow lines' targets are exact). A flat
+    // cell can cancel the denominator to 0 (found by fuzzing: CGAL's own
+    // construction asserts then): its point is left out of the polyline, as
+    // non-finite points are (see the builder).
+    const KPoint& p = this->Tri.KCoord(v[0]);
+    const Kernel::Vector_3 a = this->Tri.KCoord(v[1]) - p, b = this->Tri.KCoord(v[2]) - p,
+                           c = this->Tri.KCoord(v[3]) - p;
+    const double den = 2 * CGAL::determinant(a, b, c);
+    const Kernel::Vector_3 num = a.squared_length() * CGAL::cross_product(b, c) +
+      b.squared_length() * CGAL::cross_product(c, a) + c.squared_length() * CGAL::cross_product(a, b);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    this->Centres[cell] = den != 0 && std::isfinite(den)
+      ? Point3{ { p.x() + num.x() / den, p.y() + num.y() / den, p.z() + num.z() / den } }
+      : Point3{ { nan, nan, nan } };
     this->HasCentre[cell] = true;
   }
   return this->Centres[cell];

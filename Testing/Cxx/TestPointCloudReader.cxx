@@ -235,6 +235,15 @@ void TestBadInput()
   // #12); the memory guard refuses them before anything is allocated (under a
   // limit of 16 GB, whatever the machine has).
   setenv("FLOWRECON_MEMORY_LIMIT", "16000000000", 1);
+  // String coordinates: VTK reads them, then leaks them (fuzzing, #12).
+  ExpectError(Write("string_points.vtk",
+                "# vtk DataFile Version 5.1\ns\nASCII\nDATASET POLYDATA\nPOINTS 1 utf8_string\n"
+                "a\nb\nc\n"),
+    5, "coordinates of type 'utf8_string': coordinates are numbers");
+  ExpectError(Write("glued_points.vtk",
+                "# vtk DataFile Version 5.1\ns\nASCII\nDATASET POLYDATA\nPOINTS  12string\n"
+                "a\nb\nc\n"),
+    5, "coordinates of type 'string': coordinates are numbers");
   // VTK 9.2 loops forever on 256 blanks after an array (fuzzing, #12).
   ExpectError(Write("blanks.vtk",
                 "# vtk DataFile Version 3.0\nb\nASCII\nDATASET POLYDATA\nPOINTS 1 double\n"
