@@ -349,6 +349,8 @@ const std::vector<Command>& Commands()
           "--tr-max (4 when not given) as CSV: threshold,b0,b1,b2, one row per change" },
         { "--warn-window", nullptr, "F", "warn where the Betti numbers change for a t_r in\n"
           "[t_r, F t_r): an under-sampled region (1.1; 1 for none)" },
+        { "--betti-max-cells", nullptr, "N", "skip the Betti numbers (with a warning) when the\n"
+          "cells below the drawn t_r are more than N (4e6, about 20 s; 'inf' for no limit)" },
         { "--no-betti", nullptr, nullptr, "skip the Betti numbers, the topology profile and the\n"
           "warnings (on solids of millions of tetrahedra they cost about as much as the rest)" },
         { "--jumps", nullptr, "K", "print the K largest jumps of the profile (tracking back)" },
@@ -878,7 +880,7 @@ private:
 };
 
 void ReconstructCloud(const std::string& input, double tp, double tr, double twrite, double tdraw,
-  double window, bool betti, const FlowComplexOptions& options, vtkUnstructuredGrid* grid, vtkTable* profile,
+  double window, bool betti, flowrecon::Id bettiCells, const FlowComplexOptions& options, vtkUnstructuredGrid* grid, vtkTable* profile,
   vtkTable* topology, vtkPolyData* undersampling, std::vector<flowrecon::Node>& nodes,
   PhaseClock& clock)
 {
@@ -956,7 +958,7 @@ void ReconstructCloud(const std::string& input, double tp, double tr, double twr
       }
       bars = flowrecon::CellBarcode(flowrecon::ReconstructionCells(
                                       fc, carriers, run, tdraw, triangles, tetrahedra, &cellNodes),
-        stage(0.9, 0.95));
+        stage(0.9, 0.95), bettiCells);
     }
     catch (const flowrecon::InputError& e)
     {
@@ -1178,6 +1180,18 @@ int RunReconstruct(const Arguments& args)
     }
   }
   const bool betti = !args.Has("--no-betti");
+  // The homology of millions of tetrahedra costs about twice the rest: a
+  // budget, above which the Betti numbers are skipped with a warning.
+  flowrecon::Id bettiCells = 4000000;
+  if (args.Has("--betti-max-cells"))
+  {
+    const double k = NumberOption(args, "--betti-max-cells", 4e6, "reconstruct");
+    if (!(k >= 0) || (k != std::floor(k) && !std::isinf(k)))
+    {
+      throw UsageError("option '--betti-max-cells' needs a count >= 0 or 'inf'", help);
+    }
+    bettiCells = std::isinf(k) ? -1 : static_cast<flowrecon::Id>(k);
+  }
   if (!betti && (args.Has("--topology-profile") || args.Has("--warn-window")))
   {
     throw UsageError("--no-betti excludes --topology-profile and --warn-window", help);
@@ -1209,7 +1223,7 @@ int RunReconstruct(const Arguments& args)
     profile = vtkSmartPointer<vtkTable>::New();
     topology = vtkSmartPointer<vtkTable>::New();
     undersampling = vtkSmartPointer<vtkPolyData>::New();
-    ReconstructCloud(input, tp, tr, trmax, tdraw, window, betti, options, grid, profile, topology,
+    ReconstructCloud(input, tp, tr, trmax, tdraw, window, betti, bettiCells, options, grid, profile, topology,
       undersampling, nodes, clock);
   }
   else
@@ -1234,6 +1248,7 @@ int RunReconstruct(const Arguments& args)
     reconstruction->SetMaximumThreshold(tdraw);
     reconstruction->SetUnderSamplingWindow(window);
     reconstruction->SetComputeTopology(betti);
+    reconstruction->SetMaximumTopologyCells(bettiCells);
     if (trmax != tr)
     {
       // The warnings at t_r; then the file's family below T (a selection: the

@@ -114,6 +114,16 @@ public:
   vtkBooleanMacro(ComputeTopology, bool);
   ///@}
 
+  ///@{
+  /**
+   * The most cells (of the family below MaximumThreshold) whose Betti numbers
+   * are computed; above it they are skipped with a warning. -1 for no limit.
+   * Default 4e6 (about 20 s).
+   */
+  vtkSetClampMacro(MaximumTopologyCells, vtkIdType, -1, VTK_ID_MAX);
+  vtkGetMacro(MaximumTopologyCells, vtkIdType);
+  ///@}
+
   /// How many times the priority queue has run (once per new input).
   vtkGetMacro(NumberOfQueueRuns, int);
 
@@ -138,6 +148,7 @@ protected:
   double MaximumThreshold = 4.0;
   double UnderSamplingWindow = 1.1;
   bool ComputeTopology = true;
+  vtkIdType MaximumTopologyCells = 4000000;
   int NumberOfQueueRuns = 0;
 
 private:

@@ -39,7 +39,11 @@ struct Bar
 /// The bars of positive length of the filtration: a simplex is present from the
 /// least value of the cells it is a face of. Throws InputError for a cell of no
 /// point or more than 4, a negative point id or a NaN value.
-std::vector<Bar> CellBarcode(const FilteredCells& cells, const Progress& progress = Progress());
+/// `maximumCells` (>= 0) refuses larger inputs with an InputError saying so: the
+/// homology of millions of tetrahedra costs about twice the rest of a
+/// reconstruction (cost follows the output, but the caller chooses how much).
+std::vector<Bar> CellBarcode(const FilteredCells& cells, const Progress& progress = Progress(),
+  Id maximumCells = -1);
 
 /// b0..b3 of the cells with value < t (the reconstruction at t_r = t).
 std::array<Id, 4> BettiNumbersBelow(const std::vector<Bar>& bars, double t);
