@@ -13,7 +13,7 @@ import os
 import subprocess
 import sys
 
-from paraview.simple import Connect, LoadPlugin
+from paraview.simple import Connect, Disconnect, LoadPlugin
 from paraview import servermanager
 
 
@@ -60,6 +60,9 @@ def main():
     assert cells == expected_cells > 0, (cells, expected_cells)
     assert counts == expected_counts and counts[0] > 0, (counts, expected_counts)
     print("PASS")
+    sys.stdout.flush()
+    if remote:
+        Disconnect()  # lets the server end its session before the client exits
 
 
 main()
