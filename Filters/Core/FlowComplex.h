@@ -115,7 +115,7 @@ struct FlowComplex
   /// (Simplex[0], Simplex[1]). Index 2: triangles over Points, grouped by node.
   std::vector<std::array<Id, 3>> Triangles;
   std::vector<Id> TriangleNode;
-  /// Index 3: tetrahedra (cone from the maximum over its odd-multiplicity boundary patches).
+  /// Index 3: tetrahedra (cone from the maximum over its boundary patches, fins once).
   std::vector<std::array<Id, 4>> Tetrahedra;
   std::vector<Id> TetrahedronNode;
 

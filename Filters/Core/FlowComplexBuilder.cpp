@@ -7,6 +7,7 @@
 #include "MemoryGuard.h"
 #include "ParallelSlices.h"
 #include "StableManifold.h"
+#include "StableManifoldCone.h"
 #include "StableManifoldGeometry.h"
 #include "SuccessorForest.h"
 #include "Triangulation.h"
@@ -24,6 +25,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <numeric>
 #include <string>
 
 namespace flowrecon
@@ -572,6 +574,9 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
     }
   }
 
+  this->ScaleBack();
+  // After scaling back: the cones' added points are then computed from the
+  // same coordinates as DrawStableManifolds's.
   fc.Tetrahedra.clear();
   fc.TetrahedronNode.clear();
   if (this->Options.StableManifolds)
@@ -582,23 +587,42 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
       fc.NodePoint[node] = static_cast<Id>(fc.Points.size());
       fc.Points.push_back(fc.Nodes[node].Location);
     }
+    // The boundary patches of each maximum, in facet order (arcs are grouped by
+    // lower node); fins (both flow lines here) too: see DrawStableManifolds.
+    std::vector<Id> boundaryBegin(cs.Cells.size() + 1, 0), boundary;
     for (const Arc& arc : fc.Arcs)
     {
-      if (arc.Lower < base2 || arc.Lower >= base3 || arc.Upper == fc.InfinityNode ||
-        arc.Multiplicity % 2 == 0)
+      if (arc.Lower >= base2 && arc.Lower < base3 && arc.Upper != fc.InfinityNode)
       {
-        continue;
-      }
-      const std::size_t f = static_cast<std::size_t>(arc.Lower - base2);
-      for (Id k = triangleBegin[f]; k < triangleBegin[f + 1]; ++k)
-      {
-        const auto& tr = fc.Triangles[k];
-        fc.Tetrahedra.push_back({ { fc.NodePoint[arc.Upper], tr[0], tr[1], tr[2] } });
-        fc.TetrahedronNode.push_back(arc.Upper);
+        ++boundaryBegin[arc.Upper - base3 + 1];
       }
     }
+    std::partial_sum(boundaryBegin.begin(), boundaryBegin.end(), boundaryBegin.begin());
+    boundary.resize(static_cast<std::size_t>(boundaryBegin.back()));
+    std::vector<Id> fill(boundaryBegin.begin(), boundaryBegin.end() - 1);
+    for (const Arc& arc : fc.Arcs)
+    {
+      if (arc.Lower >= base2 && arc.Lower < base3 && arc.Upper != fc.InfinityNode)
+      {
+        boundary[fill[arc.Upper - base3]++] = arc.Lower - base2;
+      }
+    }
+    std::vector<std::array<Id, 3>> coneBoundary;
+    for (std::size_t i = 0; i < cs.Cells.size(); ++i)
+    {
+      const Id node = base3 + static_cast<Id>(i);
+      coneBoundary.clear();
+      for (Id b = boundaryBegin[i]; b < boundaryBegin[i + 1]; ++b)
+      {
+        const std::size_t f = static_cast<std::size_t>(boundary[b]);
+        coneBoundary.insert(coneBoundary.end(), fc.Triangles.begin() + triangleBegin[f],
+          fc.Triangles.begin() + triangleBegin[f + 1]);
+      }
+      fc.TetrahedronNode.insert(fc.TetrahedronNode.end(),
+        static_cast<std::size_t>(AppendCone(fc.NodePoint[node], coneBoundary, fc.Points, fc.Tetrahedra)),
+        node);
+    }
   }
-  this->ScaleBack();
   fc.Time.Assembly = Seconds(t);
 }
 

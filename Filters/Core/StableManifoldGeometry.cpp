@@ -6,6 +6,7 @@
 #include "MemoryGuard.h"
 #include "ParallelSlices.h"
 #include "StableManifold.h"
+#include "StableManifoldCone.h"
 #include "SuccessorForest.h"
 #include "Triangulation.h"
 
@@ -52,7 +53,7 @@ std::vector<Id> StableManifoldCellCounts(const std::vector<Node>& nodes, const s
   }
   for (const Arc& a : arcs)
   {
-    if (nodes[a.Lower].Index == 2 && !nodes[a.Upper].IsInfinity() && a.Multiplicity % 2 == 1)
+    if (nodes[a.Lower].Index == 2 && !nodes[a.Upper].IsInfinity())
     {
       counts[a.Upper] += counts[a.Lower];
     }
@@ -180,9 +181,11 @@ void DrawStableManifolds(const std::vector<Point3>& points, const BuildOptions& 
     return p;
   };
 
-  // The boundary of a cone: the index-2 points with exactly one of their two
-  // flow lines ending at its maximum (the odd 2-3 arcs of the unsimplified
-  // complex, which a simplified input no longer holds).
+  // The boundary of a cone: the index-2 points with a flow line ending at its
+  // maximum (the 2-3 arcs of the unsimplified complex, which a simplified input
+  // no longer holds). A patch with both lines there is a fin inside the cell:
+  // left out, it would be a disc glued to the contractible cone along its rim,
+  // a void that the flow complex does not have.
   std::vector<std::vector<Id>> boundary(cones.size());
   std::vector<char> drawPatch(static_cast<std::size_t>(nFacets), 0);
   for (const Id f : patches)
@@ -200,7 +203,7 @@ void DrawStableManifolds(const std::vector<Point3>& points, const BuildOptions& 
     for (const Arc& a : *unsimplifiedArcs) // grouped by lower node: facets in order
     {
       if (a.Lower >= base2 && a.Lower < base3 && a.Upper >= base3 && a.Upper < fc.InfinityNode &&
-        a.Multiplicity % 2 == 1 && coneOf[a.Upper - base3] >= 0)
+        coneOf[a.Upper - base3] >= 0)
       {
         boundary[coneOf[a.Upper - base3]].push_back(a.Lower - base2);
         walk[a.Lower - base2] = 1;
@@ -237,12 +240,13 @@ void DrawStableManifolds(const std::vector<Point3>& points, const BuildOptions& 
       });
     for (Id i = 0; i < nFacets; ++i)
     {
-      if (ends[i][0] == ends[i][1])
+      for (int s = 0; s < 2; ++s)
       {
-        continue; // multiplicity 2: not on the boundary mod 2
-      }
-      for (const std::int32_t e : ends[i])
-      {
+        const std::int32_t e = ends[i][s];
+        if (s == 1 && e == ends[i][0])
+        {
+          break; // a fin: once in the cone
+        }
         if (e != fc.InfinityNode && coneOf[e - base3] >= 0)
         {
           boundary[coneOf[e - base3]].push_back(i);
@@ -331,6 +335,7 @@ void DrawStableManifolds(const std::vector<Point3>& points, const BuildOptions& 
   fc.Report.ExactFallbacks += fallbacks;
 
   progress(0.95, "index-3 cones");
+  std::vector<std::array<Id, 3>> coneBoundary;
   for (std::size_t k = 0; k < cones.size(); ++k)
   {
     const Id node = base3 + cones[k];
@@ -343,14 +348,14 @@ void DrawStableManifolds(const std::vector<Point3>& points, const BuildOptions& 
     const Id apex = static_cast<Id>(fc.Points.size());
     fc.NodePoint[node] = apex;
     fc.Points.push_back(fc.Nodes[node].Location);
+    coneBoundary.clear();
     for (const Id f : boundary[k])
     {
-      for (Id t = patchBegin[f]; t < patchEnd[f]; ++t)
-      {
-        fc.Tetrahedra.push_back({ { apex, walked[t][0], walked[t][1], walked[t][2] } });
-        fc.TetrahedronNode.push_back(node);
-      }
+      coneBoundary.insert(coneBoundary.end(), walked.begin() + patchBegin[f],
+        walked.begin() + patchEnd[f]);
     }
+    fc.TetrahedronNode.insert(fc.TetrahedronNode.end(),
+      static_cast<std::size_t>(AppendCone(apex, coneBoundary, fc.Points, fc.Tetrahedra)), node);
   }
   progress(1.0, "stable manifolds");
 }

@@ -15,7 +15,9 @@ namespace flowrecon
 /// without drawing anything: a descending walk starts with 3 branches and each
 /// exit adds 2 branches and 2 triangles, each arrival 1 triangle, so A arrivals
 /// (the sum of the node's 1-2 multiplicities) make 3A - 6 triangles. An index-3
-/// cone has one tetrahedron per triangle of its odd-multiplicity boundary patches.
+/// cone has one tetrahedron per triangle of its boundary patches (fins once), and
+/// one more per triangle at a point where the boundary meets itself (rare: these
+/// counts are then a little low; see StableManifoldCone.h).
 /// 0 for index 0 and 1 and for the maximum at infinity.
 std::vector<Id> StableManifoldCellCounts(const std::vector<Node>& nodes, const std::vector<Arc>& arcs);
 

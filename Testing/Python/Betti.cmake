@@ -53,3 +53,14 @@ if (TARGET flowrecon)
   set_tests_properties(py.reconstruction.permutation py.reconstruction.million_duplicates
     PROPERTIES LABELS "python" TIMEOUT 300)
 endif ()
+
+# Without simplification the reconstruction at t_r = inf is contractible (the
+# complement of an open cell): the written cones of index-3 cells must not
+# enclose voids where a cell meets itself.
+if (TARGET flowrecon)
+  add_test(NAME py.reconstruction.contractible
+    COMMAND "${FLOWRECON_TEST_PYTHON}" "${CMAKE_CURRENT_SOURCE_DIR}/test_contractible.py"
+            "$<TARGET_FILE:flowrecon>" "${CMAKE_CURRENT_BINARY_DIR}/contractible")
+  set_tests_properties(py.reconstruction.contractible PROPERTIES LABELS "python" TIMEOUT 300
+    PASS_REGULAR_EXPRESSION "PASS")
+endif ()
