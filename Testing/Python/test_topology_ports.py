@@ -1,0 +1,96 @@
+"""ParaView shows what the CLI prints (issue #9): in pvpython, Flow Complex ->
+Simplification -> Reconstruction (defaults, Maximum Threshold 4) on a sphere
+sample with a thinned polar cap and on the clean sample. The filter's field
+data BettiNumbers equals the CLI's 'Betti numbers:' line, its Topology Profile
+port equals `--topology-profile` row by row, and its Under Sampling port holds
+a point at every place the CLI warns about, all inside the thinned cap (z > 0.7,
+up to a sample spacing), and none for the clean sample.
+Usage: pvpython test_topology_ports.py PLUGIN FLOWRECON WORKDIR
+"""
+import csv
+import os
+import re
+import subprocess
+import sys
+
+import numpy as np
+
+PLUGIN, FLOWRECON, WORK = sys.argv[1:4]
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Data"))
+import generate_clouds as gc  # noqa: E402
+
+from paraview import servermanager  # noqa: E402
+from paraview.simple import LoadPlugin, OpenDataFile  # noqa: E402
+from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
+
+LoadPlugin(PLUGIN, remote=False, ns=globals())
+os.makedirs(WORK, exist_ok=True)
+failures = []
+
+
+def cli(path):
+    p = subprocess.run([FLOWRECON, "reconstruct", path, "-o", path + ".vtu", "--tr-max", "4",
+                        "--topology-profile", path + ".csv"], capture_output=True, text=True)
+    assert p.returncode == 0, p.stderr
+    betti = tuple(int(x) for x in re.search(r"Betti numbers: (\d+) (\d+) (\d+)", p.stdout).groups())
+    places = [np.array([float(v) for v in m.group(1).split(",")])
+              for m in re.finditer(r"warning: under-sampled near \(([^)]*)\)", p.stderr)]
+    with open(path + ".csv") as f:
+        rows = [(float(r["threshold"]), int(r["b0"]), int(r["b1"]), int(r["b2"]))
+                for r in csv.DictReader(f)]
+    return betti, places, rows
+
+
+def paraview(path):
+    reader = OpenDataFile(path)
+    fc = FlowComplex(Input=reader)  # noqa: F821 (defined by LoadPlugin)
+    simplified = FlowComplexSimplification(Input=fc)  # noqa: F821
+    recon = FlowReconstruction(Input=simplified, MaximumThreshold=4.0)  # noqa: F821
+    recon.UpdatePipeline()
+    grid = servermanager.Fetch(recon, idx=0)
+    b = grid.GetFieldData().GetArray("BettiNumbers")
+    betti = tuple(int(b.GetValue(k)) for k in range(3))
+    table = servermanager.Fetch(recon, idx=3)
+    col = {table.GetColumnName(k): vtk_to_numpy(table.GetColumn(k))
+           for k in range(table.GetNumberOfColumns())}
+    rows = [(float(col["Threshold"][i]), int(col["b0"][i]), int(col["b1"][i]), int(col["b2"][i]))
+            for i in range(table.GetNumberOfRows())]
+    under = servermanager.Fetch(recon, idx=4)
+    pts = vtk_to_numpy(under.GetPoints().GetData()) if under.GetNumberOfPoints() else np.zeros((0, 3))
+    for name in ("Threshold", "Dimension", "Change", "Spacing", "NodeId"):
+        if under.GetNumberOfPoints() and under.GetPointData().GetArray(name) is None:
+            failures.append("%s: Under Sampling has no %s array" % (path, name))
+    return betti, pts, rows
+
+
+base = gc.make("sphere_qu", size=3000)
+rng = np.random.default_rng(3)
+thinned = base[(base[:, 2] <= 0.7) | (rng.uniform(size=len(base)) > 0.6)]
+for name, points in (("clean", base), ("thinned", thinned)):
+    path = os.path.join(WORK, name + ".xyz")
+    np.savetxt(path, points, fmt="%.17g")
+    cb, cplaces, crows = cli(path)
+    pb, ppts, prows = paraview(path)
+    print("%s: CLI Betti %s, %d warnings, %d profile rows; ParaView Betti %s, %d under-sampled "
+          "points, %d profile rows" % (name, cb, len(cplaces), len(crows), pb, len(ppts), len(prows)))
+    if cb != pb:
+        failures.append("%s: Betti numbers CLI %s, ParaView %s" % (name, cb, pb))
+    if len(crows) != len(prows) or any(
+            c[1:] != p[1:] or abs(c[0] - p[0]) > 1e-9 * max(1.0, abs(c[0]))
+            for c, p in zip(crows, prows)):
+        failures.append("%s: topology profiles differ:\n CLI %s\n PV  %s" % (name, crows, prows))
+    for q in cplaces:
+        if not len(ppts) or np.min(np.linalg.norm(ppts - q, axis=1)) > 1e-4:
+            failures.append("%s: CLI warning at %s has no Under Sampling point" % (name, q))
+    if name == "clean" and (len(ppts) or cplaces or cb != (1, 0, 1)):
+        failures.append("clean: expected Betti (1, 0, 1) and no warning")
+    if name == "thinned":
+        if not len(ppts) or cb == (1, 0, 1):
+            failures.append("thinned: expected a wrong answer and warnings")
+        elif np.any(ppts[:, 2] < 0.6):
+            failures.append("thinned: Under Sampling points outside the cap: z = %s" % ppts[:, 2])
+
+if failures:
+    print("FAIL\n" + "\n".join(failures))
+    sys.exit(1)
+print("PASS")
