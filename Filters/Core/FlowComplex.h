@@ -53,7 +53,7 @@ struct FlowLine
 {
   Id Node = -1;              ///< the index-2 node it leaves
   Id Target = -1;            ///< the maximum (possibly the maximum at infinity)
-  std::vector<Point3> Points; ///< polyline; ends with a finite stub when Target is infinity
+  std::vector<Point3> Points; ///< polyline; toward infinity: ends on a stub, cut at the DrawingBox
 };
 
 /// What was done about degenerate input (§2.6 of flow-complex-algorithm.md).

@@ -2,6 +2,7 @@
 
 #include "Arithmetic.h"
 #include "CriticalSimplices.h"
+#include "DrawingBox.h"
 #include "HugePages.h"
 #include "InputPreparation.h"
 #include "MemoryGuard.h"
@@ -575,6 +576,14 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
   }
 
   this->ScaleBack();
+  const DrawingBox box = BoxAround(fc.Points, fc.NumberOfInputPoints, 0.25);
+  for (FlowLine& line : fc.FlowLines)
+  {
+    if (line.Target == fc.InfinityNode)
+    {
+      ClipPolyline(line.Points, box);
+    }
+  }
   // After scaling back: the cones' added points are then computed from the
   // same coordinates as DrawStableManifolds's.
   fc.Tetrahedra.clear();
