@@ -174,10 +174,16 @@ int vtkFlowReconstruction::RequestData(
   const flowrecon::FlowComplex& fc = c.FC;
   double t =
     this->ReconstructionThreshold >= VTK_DOUBLE_MAX ? HUGE_VAL : this->ReconstructionThreshold;
-  if (t > tmax)
+  if (this->EveryStep)
   {
-    vtkWarningMacro(<< "ReconstructionThreshold " << t << " is above MaximumThreshold " << tmax
-                    << ": showing the reconstruction at " << tmax);
+    t = tmax;
+  }
+  else if (t > tmax)
+  {
+    // The GUI's labels, which also name the Python properties once spaces go.
+    vtkWarningMacro(<< "Reconstruction Threshold (t_r) " << t << " is above Maximum Threshold "
+                    << "(T_max) " << tmax << ": showing the reconstruction at " << tmax
+                    << "; raise Maximum Threshold to see more");
     t = tmax;
   }
   this->SetProgressText("output");
@@ -292,6 +298,7 @@ void vtkFlowReconstruction::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "ReconstructionThreshold: " << this->ReconstructionThreshold << "\n";
+  os << indent << "EveryStep: " << this->EveryStep << "\n";
   os << indent << "MaximumThreshold: " << this->MaximumThreshold << "\n";
   os << indent << "UnderSamplingWindow: " << this->UnderSamplingWindow << "\n";
   os << indent << "ComputeTopology: " << (this->ComputeTopology ? "on" : "off") << "\n";

@@ -79,6 +79,16 @@ public:
 
   ///@{
   /**
+   * Show every step up to MaximumThreshold, whatever ReconstructionThreshold
+   * says (ParaView's "Every Step" box beside the t_r slider). Default off.
+   */
+  vtkSetMacro(EveryStep, bool);
+  vtkGetMacro(EveryStep, bool);
+  vtkBooleanMacro(EveryStep, bool);
+  ///@}
+
+  ///@{
+  /**
    * T_max, the largest t_r the output can show: the stable manifolds of the
    * nodes with Threshold < T_max are drawn once (when the input or T_max
    * changes), so any ReconstructionThreshold <= T_max is a selection; a larger
@@ -145,6 +155,7 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   double ReconstructionThreshold = 2.0;
+  bool EveryStep = false;
   double MaximumThreshold = 4.0;
   double UnderSamplingWindow = 1.1;
   bool ComputeTopology = true;

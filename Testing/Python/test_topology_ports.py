@@ -4,7 +4,9 @@ sample with a thinned polar cap and on the clean sample. The filter's field
 data BettiNumbers equals the CLI's 'Betti numbers:' line, its Topology Profile
 port equals `--topology-profile` row by row, and its Under Sampling port holds
 a point at every place the CLI warns about, all inside the thinned cap (z > 0.7,
-up to a sample spacing), and none for the clean sample.
+up to a sample spacing), and none for the clean sample. The t_r and t_p
+sliders span their useful ranges, and Every Step shows the reconstruction at
+Maximum Threshold whatever t_r says.
 Usage: pvpython test_topology_ports.py PLUGIN FLOWRECON WORKDIR
 """
 import csv
@@ -60,7 +62,12 @@ def paraview(path):
     for name in ("Threshold", "Dimension", "Change", "Spacing", "NodeId"):
         if under.GetNumberOfPoints() and under.GetPointData().GetArray(name) is None:
             failures.append("%s: Under Sampling has no %s array" % (path, name))
-    return betti, pts, rows
+    return betti, pts, rows, recon, simplified
+
+
+def slider(proxy, name):
+    d = proxy.GetProperty(name).SMProperty.FindDomain("vtkSMDoubleRangeDomain")
+    return d.GetMinimum(0), d.GetMaximum(0)
 
 
 base = gc.make("sphere_qu", size=3000)
@@ -70,7 +77,7 @@ for name, points in (("clean", base), ("thinned", thinned)):
     path = os.path.join(WORK, name + ".xyz")
     np.savetxt(path, points, fmt="%.17g")
     cb, cplaces, crows = cli(path)
-    pb, ppts, prows = paraview(path)
+    pb, ppts, prows, recon, simplified = paraview(path)
     print("%s: CLI Betti %s, %d warnings, %d profile rows; ParaView Betti %s, %d under-sampled "
           "points, %d profile rows" % (name, cb, len(cplaces), len(crows), pb, len(ppts), len(prows)))
     if cb != pb:
@@ -89,6 +96,22 @@ for name, points in (("clean", base), ("thinned", thinned)):
             failures.append("thinned: expected a wrong answer and warnings")
         elif np.any(ppts[:, 2] < 0.6):
             failures.append("thinned: Under Sampling points outside the cap: z = %s" % ppts[:, 2])
+
+# Sliders and Every Step, on the thinned sample (its family changes between 2 and 4).
+if slider(recon, "ReconstructionThreshold") != (1.0, 4.0):
+    failures.append("t_r slider spans %s" % (slider(recon, "ReconstructionThreshold"),))
+if slider(simplified, "PersistenceThreshold") != (1.0, 1.5):
+    failures.append("t_p slider spans %s" % (slider(simplified, "PersistenceThreshold"),))
+counts = {}
+for every, tr in ((0, 2.0), (0, 4.0), (1, 2.0)):
+    recon.EveryStep = every
+    recon.ReconstructionThreshold = tr
+    recon.UpdatePipeline()
+    counts[(every, tr)] = recon.GetDataInformation().GetNumberOfCells()
+print("cells: t_r 2 %d, t_r 4 %d, Every Step (t_r 2) %d" % (
+    counts[(0, 2.0)], counts[(0, 4.0)], counts[(1, 2.0)]))
+if not (counts[(1, 2.0)] == counts[(0, 4.0)] > counts[(0, 2.0)]):
+    failures.append("Every Step does not show the reconstruction at Maximum Threshold")
 
 if failures:
     print("FAIL\n" + "\n".join(failures))
