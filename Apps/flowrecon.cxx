@@ -152,8 +152,17 @@ public:
       this->FirstError = MessageText(text);
     }
   }
-  void DisplayWarningText(const char*) override {}
-  void DisplayGenericWarningText(const char*) override {}
+  // Kept for the commands that run the filters (a saved complex): a filter's
+  // warning is then the only place that says, e.g., why there are no Betti numbers.
+  void DisplayWarningText(const char* text) override
+  {
+    const std::string t = MessageText(text);
+    if (!t.empty() && std::find(this->Warnings.begin(), this->Warnings.end(), t) == this->Warnings.end())
+    {
+      this->Warnings.push_back(t);
+    }
+  }
+  void DisplayGenericWarningText(const char* text) override { this->DisplayWarningText(text); }
   void DisplayDebugText(const char*) override {}
 
   // "ERROR: In file.cxx, line 12\nvtkClass (0x...): text\n\n" -> "text".
@@ -181,6 +190,7 @@ public:
   }
 
   std::string FirstError;
+  std::vector<std::string> Warnings;
 };
 vtkStandardNewMacro(CapturingOutputWindow);
 
@@ -1268,6 +1278,10 @@ int RunReconstruct(const Arguments& args)
     profile = vtkTable::SafeDownCast(reconstruction->GetOutputDataObject(1));
     topology = vtkTable::SafeDownCast(reconstruction->GetOutputDataObject(3));
     clock("flow complex file, simplification, reconstruction");
+    for (const std::string& w : Messages ? Messages->Warnings : std::vector<std::string>())
+    {
+      std::cerr << "warning: " << w << "\n";
+    }
     std::string error;
     flowrecon::FlowComplex stored;
     if (jumps > 0 && flowrecon::FromMultiBlock(simplified, stored, error))

@@ -76,6 +76,13 @@ flowrecon_add_cli_test(ReconstructBettiBudget EXIT 0 STDERR_LINES 1
   FIXTURES_REQUIRED flowrecon_cli_vtm
   ARGS reconstruct "${_d}/tetrahedron.xyz" -o "${_w}/tet_budget.vtu" --tp 0 --tr 1.1
        --betti-max-cells 5)
+# The same from a saved complex, where the filter's warning is the message.
+flowrecon_add_cli_test(ReconstructBettiBudgetSaved EXIT 0 STDERR_LINES 1
+  STDERR "warning: no Betti numbers: skipped for [0-9]+ cells, more than 5 "
+  STDOUT "^[^\n]*tet_budget_saved\\.vtu: 10 cells, 10 of 15 steps at t_r 1\\.1\n$"
+  FIXTURES_REQUIRED flowrecon_cli_vtm
+  ARGS reconstruct "${_w}/tetrahedron.vtm" -o "${_w}/tet_budget_saved.vtu" --tp 0 --tr 1.1
+       --betti-max-cells 5)
 flowrecon_add_cli_test(ReconstructTetrahedronWarnings EXIT 0 STDERR_LINES 2
   STDERR "warning: under-sampled near \\(-?0\\.333333, -?0\\.333333, -?0\\.333333\\): spacing 3\\.26599; at t_r 1\\.1547 a hole closes"
   FIXTURES_REQUIRED flowrecon_cli_vtm
