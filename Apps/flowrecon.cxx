@@ -14,6 +14,7 @@
 // are captured, never printed.
 
 #include "FlowComplexConversion.h"
+#include "FlowReconNames.h"
 #include "FlowComplexBuilder.h" // flowrecon diagram calls the core directly
 #include "Persistence.h"
 #include "Reconstruction.h"
@@ -508,7 +509,7 @@ vtkDataObject* CriticalPointsBlock(vtkDataObject* data)
 {
   vtkDataObject* block = flowrecon::NamedBlock(vtkMultiBlockDataSet::SafeDownCast(data),
     vtkFlowComplex::BlockName(vtkFlowComplex::CRITICAL_POINTS));
-  return block && block->GetFieldData()->GetArray("NodeCountByIndex") ? block : nullptr;
+  return block && block->GetFieldData()->GetArray(flowrecon::names::NodeCountByIndex) ? block : nullptr;
 }
 
 // A .vtm written by 'complex', or nullptr when `file` is a point cloud. The
@@ -645,7 +646,7 @@ int RunComplex(const Arguments& args)
   if (!options.Quiet)
   {
     vtkFieldData* fd = CriticalPointsBlock(complex)->GetFieldData();
-    vtkDataArray* counts = fd->GetArray("NodeCountByIndex");
+    vtkDataArray* counts = fd->GetArray(flowrecon::names::NodeCountByIndex);
     std::cout << output << ": nodes by index " << static_cast<long long>(counts->GetComponent(0, 0))
               << " " << static_cast<long long>(counts->GetComponent(0, 1)) << " "
               << static_cast<long long>(counts->GetComponent(0, 2)) << " "
@@ -706,9 +707,9 @@ int RunInfo(const Arguments& args)
                           : "yes (" + attempts + " attempts, magnitude " +
                Field(fd, "PerturbationMagnitude") + ")")
       << "\n"
-      << "nodes by index:        " << Field(fd, "NodeCountByIndex", 0) << " "
-      << Field(fd, "NodeCountByIndex", 1) << " " << Field(fd, "NodeCountByIndex", 2) << " "
-      << Field(fd, "NodeCountByIndex", 3)
+      << "nodes by index:        " << Field(fd, flowrecon::names::NodeCountByIndex, 0) << " "
+      << Field(fd, flowrecon::names::NodeCountByIndex, 1) << " " << Field(fd, flowrecon::names::NodeCountByIndex, 2) << " "
+      << Field(fd, flowrecon::names::NodeCountByIndex, 3)
       << " (n0 n1 n2 n3; finite nodes, the maximum at infinity is not counted)\n"
       << "Euler characteristic:  " << Field(fd, "EulerCharacteristic") << " (n0 - n1 + n2 - n3)\n"
       << "arcs:                  " << Field(fd, "ArcCount") << "\n"
@@ -716,8 +717,8 @@ int RunInfo(const Arguments& args)
       << Field(fd, "ApexOnSphereCount") << " apex on sphere, " << Field(fd, "WalkTieCount")
       << " walk ties, " << Field(fd, "ExactFallbackCount") << " exact fallbacks\n"
       << "timings (s):          ";
-  static const char* const phases[6] = { "Delaunay", "CriticalPoints", "StableManifolds",
-    "UnstableManifolds", "Assembly", "Total" };
+  static const char* const phases[6] = { "Delaunay", flowrecon::names::CriticalPoints, flowrecon::names::StableManifolds,
+    flowrecon::names::UnstableManifolds, "Assembly", "Total" };
   for (int k = 0; k < 6; ++k)
   {
     out << " " << phases[k] << " " << Field(fd, "Timings", k, 6);
@@ -801,8 +802,8 @@ vtkSmartPointer<vtkMultiBlockDataSet> FlowComplexOf(
 
 bool IsSimplified(vtkMultiBlockDataSet* complex)
 {
-  auto* points = vtkPolyData::SafeDownCast(flowrecon::NamedBlock(complex, "CriticalPoints"));
-  return points && points->GetPointData()->GetArray("Cancelled");
+  auto* points = vtkPolyData::SafeDownCast(flowrecon::NamedBlock(complex, flowrecon::names::CriticalPoints));
+  return points && points->GetPointData()->GetArray(flowrecon::names::Cancelled);
 }
 
 // "PATH: cannot write (why)". VTK's writers report a full disk like any failed
@@ -1023,7 +1024,7 @@ void ReportTopology(vtkTable* topology, double tr, const std::string& path, bool
     return; // a warning said why
   }
   vtkDataArray* columns[4];
-  const char* names[4] = { "Threshold", "b0", "b1", "b2" };
+  const char* names[4] = { flowrecon::names::Threshold, "b0", "b1", "b2" };
   for (int k = 0; k < 4; ++k)
   {
     columns[k] = vtkDataArray::SafeDownCast(topology->GetColumnByName(names[k]));
@@ -1067,11 +1068,11 @@ void ReportUnderSampling(vtkPolyData* warnings)
 {
   const vtkIdType n = warnings ? warnings->GetNumberOfPoints() : 0;
   auto* pd = n > 0 ? warnings->GetPointData() : nullptr;
-  vtkDataArray* threshold = pd ? pd->GetArray("Threshold") : nullptr;
-  vtkDataArray* dimension = pd ? pd->GetArray("Dimension") : nullptr;
-  vtkDataArray* change = pd ? pd->GetArray("Change") : nullptr;
-  vtkDataArray* spacing = pd ? pd->GetArray("Spacing") : nullptr;
-  vtkDataArray* node = pd ? pd->GetArray("NodeId") : nullptr;
+  vtkDataArray* threshold = pd ? pd->GetArray(flowrecon::names::Threshold) : nullptr;
+  vtkDataArray* dimension = pd ? pd->GetArray(flowrecon::names::Dimension) : nullptr;
+  vtkDataArray* change = pd ? pd->GetArray(flowrecon::names::Change) : nullptr;
+  vtkDataArray* spacing = pd ? pd->GetArray(flowrecon::names::Spacing) : nullptr;
+  vtkDataArray* node = pd ? pd->GetArray(flowrecon::names::NodeId) : nullptr;
   if (!threshold || !dimension || !change || !spacing || !node)
   {
     return;
@@ -1302,7 +1303,7 @@ int RunReconstruct(const Arguments& args)
     std::cout << std::defaultfloat << "\n";
   }
 
-  const char* columns[5] = { "Step", "NodeId", "Index", "Priority", "Threshold" };
+  const char* columns[5] = { flowrecon::names::Step, flowrecon::names::NodeId, flowrecon::names::Index, flowrecon::names::Priority, flowrecon::names::Threshold };
   vtkDataArray* column[5];
   for (int k = 0; k < 5; ++k)
   {
@@ -1384,11 +1385,11 @@ vtkSmartPointer<vtkUnstructuredGrid> DiagramGrid(const std::vector<flowrecon::Pe
   auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
   vtkNew<vtkIntArray> id, type, finite;
   vtkNew<vtkDoubleArray> persistence, birth;
-  id->SetName("PairIdentifier");
-  type->SetName("PairType");
-  finite->SetName("IsFinite");
-  persistence->SetName("Persistence");
-  birth->SetName("Birth");
+  id->SetName(flowrecon::names::PairIdentifier);
+  type->SetName(flowrecon::names::PairType);
+  finite->SetName(flowrecon::names::IsFinite);
+  persistence->SetName(flowrecon::names::Persistence);
+  birth->SetName(flowrecon::names::Birth);
   grid->AllocateExact(static_cast<vtkIdType>(pairs.size() + 1), 2);
   auto line = [&](double b, double d) {
     const vtkIdType ids[2] = { points->InsertNextPoint(b, b, 0), points->InsertNextPoint(b, d, 0) };

@@ -1,5 +1,6 @@
 #include "FlowComplexConversion.h"
 
+#include "FlowReconNames.h"
 #include "MemoryGuard.h"
 
 #include "vtkAbstractArray.h"
@@ -58,10 +59,10 @@ vtkSmartPointer<vtkPolyData> CriticalPointsBlock(const FlowComplex& fc)
 {
   std::vector<Point3> locations;
   locations.reserve(fc.Nodes.size());
-  auto nodeId = NamedArray<vtkIdTypeArray>("NodeId");
-  auto index = NamedArray<vtkIntArray>("Index");
-  auto value = NamedArray<vtkDoubleArray>("CriticalValue");
-  auto simplex = NamedArray<vtkIdTypeArray>("Simplex", 4);
+  auto nodeId = NamedArray<vtkIdTypeArray>(flowrecon::names::NodeId);
+  auto index = NamedArray<vtkIntArray>(flowrecon::names::Index);
+  auto value = NamedArray<vtkDoubleArray>(flowrecon::names::CriticalValue);
+  auto simplex = NamedArray<vtkIdTypeArray>(flowrecon::names::Simplex, 4);
   vtkNew<vtkCellArray> verts;
   for (std::size_t i = 0; i < fc.Nodes.size(); ++i)
   {
@@ -85,7 +86,7 @@ vtkSmartPointer<vtkPolyData> CriticalPointsBlock(const FlowComplex& fc)
   pd->GetPointData()->AddArray(index);
   pd->GetPointData()->AddArray(value);
   pd->GetPointData()->AddArray(simplex);
-  pd->GetPointData()->SetActiveScalars("CriticalValue");
+  pd->GetPointData()->SetActiveScalars(flowrecon::names::CriticalValue);
   return pd;
 }
 
@@ -124,11 +125,11 @@ vtkSmartPointer<vtkPolyData> HasseDiagramBlock(const FlowComplex& fc)
   {
     pts.push_back(node.Location);
   }
-  auto nodeId = NamedArray<vtkIdTypeArray>("NodeId");
-  auto mult = NamedArray<vtkIntArray>("Multiplicity");
-  auto ratio = NamedArray<vtkDoubleArray>("Ratio");
-  auto lowerId = NamedArray<vtkIdTypeArray>("LowerNodeId");
-  auto upperId = NamedArray<vtkIdTypeArray>("UpperNodeId");
+  auto nodeId = NamedArray<vtkIdTypeArray>(flowrecon::names::NodeId);
+  auto mult = NamedArray<vtkIntArray>(flowrecon::names::Multiplicity);
+  auto ratio = NamedArray<vtkDoubleArray>(flowrecon::names::Ratio);
+  auto lowerId = NamedArray<vtkIdTypeArray>(flowrecon::names::LowerNodeId);
+  auto upperId = NamedArray<vtkIdTypeArray>(flowrecon::names::UpperNodeId);
   vtkNew<vtkIdTypeArray> offsets, connectivity;
   offsets->SetNumberOfValues(arcs + 1);
   connectivity->SetNumberOfValues(2 * arcs);
@@ -189,7 +190,7 @@ vtkSmartPointer<vtkUnstructuredGrid> StableManifoldsBlock(const FlowComplex& fc)
 {
   vtkNew<vtkUnstructuredGrid> ug;
   ug->SetPoints(MakePoints(fc.Points));
-  auto original = NamedArray<vtkIdTypeArray>("vtkOriginalPointIds");
+  auto original = NamedArray<vtkIdTypeArray>(flowrecon::names::OriginalPointIds);
   original->SetNumberOfTuples(static_cast<vtkIdType>(fc.Points.size()));
   for (std::size_t i = 0; i < fc.Points.size(); ++i)
   {
@@ -198,9 +199,9 @@ vtkSmartPointer<vtkUnstructuredGrid> StableManifoldsBlock(const FlowComplex& fc)
   }
   ug->GetPointData()->AddArray(original);
 
-  auto nodeId = NamedArray<vtkIdTypeArray>("NodeId");
-  auto index = NamedArray<vtkIntArray>("Index");
-  auto value = NamedArray<vtkDoubleArray>("CriticalValue");
+  auto nodeId = NamedArray<vtkIdTypeArray>(flowrecon::names::NodeId);
+  auto index = NamedArray<vtkIntArray>(flowrecon::names::Index);
+  auto value = NamedArray<vtkDoubleArray>(flowrecon::names::CriticalValue);
   ug->AllocateExact(static_cast<vtkIdType>(fc.Nodes.size() + fc.Triangles.size() +
                       fc.Tetrahedra.size()),
     4);
@@ -238,7 +239,7 @@ vtkSmartPointer<vtkUnstructuredGrid> StableManifoldsBlock(const FlowComplex& fc)
   ug->GetCellData()->AddArray(nodeId);
   ug->GetCellData()->AddArray(index);
   ug->GetCellData()->AddArray(value);
-  ug->GetCellData()->SetActiveScalars("CriticalValue");
+  ug->GetCellData()->SetActiveScalars(flowrecon::names::CriticalValue);
   return ug;
 }
 
@@ -246,8 +247,8 @@ vtkSmartPointer<vtkPolyData> UnstableManifoldsBlock(const FlowComplex& fc)
 {
   std::vector<Point3> pts;
   vtkNew<vtkCellArray> lines;
-  auto nodeId = NamedArray<vtkIdTypeArray>("NodeId");
-  auto target = NamedArray<vtkIdTypeArray>("TargetNodeId");
+  auto nodeId = NamedArray<vtkIdTypeArray>(flowrecon::names::NodeId);
+  auto target = NamedArray<vtkIdTypeArray>(flowrecon::names::TargetNodeId);
   std::vector<vtkIdType> ids;
   for (const FlowLine& line : fc.FlowLines)
   {
@@ -337,7 +338,7 @@ bool ExtractSamples(vtkDataObject* input, std::vector<Point3>& points, std::stri
 void AddReport(const FlowComplex& fc, vtkFieldData* fd)
 {
   const auto n = fc.CountByIndex();
-  auto counts = NamedArray<vtkIdTypeArray>("NodeCountByIndex", 4);
+  auto counts = NamedArray<vtkIdTypeArray>(flowrecon::names::NodeCountByIndex, 4);
   const vtkIdType c[4] = { n[0], n[1], n[2], n[3] };
   counts->InsertNextTypedTuple(c);
   fd->AddArray(counts);
@@ -364,7 +365,7 @@ void AddReport(const FlowComplex& fc, vtkFieldData* fd)
   magnitude->InsertNextValue(fc.Report.PerturbationMagnitude);
   fd->AddArray(magnitude);
   auto timings = NamedArray<vtkDoubleArray>("Timings", 6);
-  const char* phases[6] = { "Delaunay", "CriticalPoints", "StableManifolds", "UnstableManifolds",
+  const char* phases[6] = { "Delaunay", flowrecon::names::CriticalPoints, flowrecon::names::StableManifolds, flowrecon::names::UnstableManifolds,
     "Assembly", "Total" };
   for (int k = 0; k < 6; ++k)
   {
@@ -391,8 +392,8 @@ void ToMultiBlock(const FlowComplex& fc, vtkMultiBlockDataSet* output)
 {
   vtkSmartPointer<vtkDataObject> blocks[4] = { CriticalPointsBlock(fc), HasseDiagramBlock(fc),
     StableManifoldsBlock(fc), UnstableManifoldsBlock(fc) };
-  const char* names[4] = { "CriticalPoints", "HasseDiagram", "StableManifolds",
-    "UnstableManifolds" };
+  const char* names[4] = { flowrecon::names::CriticalPoints, flowrecon::names::HasseDiagram, flowrecon::names::StableManifolds,
+    flowrecon::names::UnstableManifolds };
   output->SetNumberOfBlocks(4);
   for (unsigned int b = 0; b < 4; ++b)
   {
@@ -475,13 +476,13 @@ void ReadReport(vtkFieldData* fd, FlowComplex& fc)
 
 bool ReadNodes(vtkPolyData* cp, FlowComplex& fc, std::string& error)
 {
-  const char* block = "CriticalPoints";
+  const char* block = flowrecon::names::CriticalPoints;
   const vtkIdType n = cp->GetNumberOfPoints();
   vtkPointData* pd = cp->GetPointData();
-  vtkDataArray* nodeId = Required(pd, block, "NodeId", 1, n, error);
-  vtkDataArray* index = nodeId ? Required(pd, block, "Index", 1, n, error) : nullptr;
-  vtkDataArray* value = index ? Required(pd, block, "CriticalValue", 1, n, error) : nullptr;
-  vtkDataArray* simplex = value ? Required(pd, block, "Simplex", 4, n, error) : nullptr;
+  vtkDataArray* nodeId = Required(pd, block, flowrecon::names::NodeId, 1, n, error);
+  vtkDataArray* index = nodeId ? Required(pd, block, flowrecon::names::Index, 1, n, error) : nullptr;
+  vtkDataArray* value = index ? Required(pd, block, flowrecon::names::CriticalValue, 1, n, error) : nullptr;
+  vtkDataArray* simplex = value ? Required(pd, block, flowrecon::names::Simplex, 4, n, error) : nullptr;
   if (!simplex)
   {
     return false;
@@ -525,12 +526,12 @@ bool ReadNodes(vtkPolyData* cp, FlowComplex& fc, std::string& error)
 
 bool ReadArcs(vtkPolyData* hd, FlowComplex& fc, std::string& error)
 {
-  const char* block = "HasseDiagram";
+  const char* block = flowrecon::names::HasseDiagram;
   const vtkIdType m = hd->GetNumberOfCells();
   vtkCellData* cd = hd->GetCellData();
-  vtkDataArray* lower = Required(cd, block, "LowerNodeId", 1, m, error);
-  vtkDataArray* upper = lower ? Required(cd, block, "UpperNodeId", 1, m, error) : nullptr;
-  vtkDataArray* mult = upper ? Required(cd, block, "Multiplicity", 1, m, error) : nullptr;
+  vtkDataArray* lower = Required(cd, block, flowrecon::names::LowerNodeId, 1, m, error);
+  vtkDataArray* upper = lower ? Required(cd, block, flowrecon::names::UpperNodeId, 1, m, error) : nullptr;
+  vtkDataArray* mult = upper ? Required(cd, block, flowrecon::names::Multiplicity, 1, m, error) : nullptr;
   if (!mult)
   {
     return false;
@@ -554,7 +555,7 @@ bool ReadArcs(vtkPolyData* hd, FlowComplex& fc, std::string& error)
 
 bool ReadStableManifolds(vtkUnstructuredGrid* ug, FlowComplex& fc, std::string& error)
 {
-  const char* block = "StableManifolds";
+  const char* block = flowrecon::names::StableManifolds;
   const vtkIdType np = ug->GetNumberOfPoints();
   fc.Points.resize(static_cast<std::size_t>(np));
   for (vtkIdType i = 0; i < np; ++i)
@@ -562,7 +563,7 @@ bool ReadStableManifolds(vtkUnstructuredGrid* ug, FlowComplex& fc, std::string& 
     ug->GetPoint(i, fc.Points[i].data());
   }
   // Input points come first; constructed points have original id -1.
-  vtkDataArray* original = ug->GetPointData()->GetArray("vtkOriginalPointIds");
+  vtkDataArray* original = ug->GetPointData()->GetArray(flowrecon::names::OriginalPointIds);
   fc.NumberOfInputPoints = np;
   if (original && original->GetNumberOfTuples() == np)
   {
@@ -578,7 +579,7 @@ bool ReadStableManifolds(vtkUnstructuredGrid* ug, FlowComplex& fc, std::string& 
     fc.Representative[i] = i;
   }
   const vtkIdType nc = ug->GetNumberOfCells();
-  vtkDataArray* nodeId = Required(ug->GetCellData(), block, "NodeId", 1, nc, error);
+  vtkDataArray* nodeId = Required(ug->GetCellData(), block, flowrecon::names::NodeId, 1, nc, error);
   if (!nodeId)
   {
     return false;
@@ -641,8 +642,8 @@ bool ReadStableManifolds(vtkUnstructuredGrid* ug, FlowComplex& fc, std::string& 
 
 bool ReadFlowLines(vtkPolyData* um, FlowComplex& fc, std::string& error)
 {
-  vtkDataArray* nodeId = um->GetCellData()->GetArray("NodeId");
-  vtkDataArray* target = um->GetCellData()->GetArray("TargetNodeId");
+  vtkDataArray* nodeId = um->GetCellData()->GetArray(flowrecon::names::NodeId);
+  vtkDataArray* target = um->GetCellData()->GetArray(flowrecon::names::TargetNodeId);
   const vtkIdType nc = um->GetNumberOfCells();
   if (!nodeId || !target || nodeId->GetNumberOfTuples() != nc || target->GetNumberOfTuples() != nc)
   {
@@ -684,12 +685,12 @@ vtkSmartPointer<vtkPolyData> PersistencePairsBlock(const FlowComplex& fc, const 
 {
   std::vector<Point3> pts;
   vtkNew<vtkCellArray> lines;
-  auto ratio = NamedArray<vtkDoubleArray>("Ratio");
-  auto birth = NamedArray<vtkDoubleArray>("Birth");
-  auto death = NamedArray<vtkDoubleArray>("Death");
-  auto type = NamedArray<vtkIntArray>("PairType");
-  auto lowerId = NamedArray<vtkIdTypeArray>("LowerNodeId");
-  auto upperId = NamedArray<vtkIdTypeArray>("UpperNodeId");
+  auto ratio = NamedArray<vtkDoubleArray>(flowrecon::names::Ratio);
+  auto birth = NamedArray<vtkDoubleArray>(flowrecon::names::Birth);
+  auto death = NamedArray<vtkDoubleArray>(flowrecon::names::Death);
+  auto type = NamedArray<vtkIntArray>(flowrecon::names::PairType);
+  auto lowerId = NamedArray<vtkIdTypeArray>(flowrecon::names::LowerNodeId);
+  auto upperId = NamedArray<vtkIdTypeArray>(flowrecon::names::UpperNodeId);
   for (const CancelledPair& p : s.Pairs)
   {
     const vtkIdType ids[2] = { static_cast<vtkIdType>(pts.size()),
@@ -713,7 +714,7 @@ vtkSmartPointer<vtkPolyData> PersistencePairsBlock(const FlowComplex& fc, const 
   {
     pd->GetCellData()->AddArray(a);
   }
-  pd->GetCellData()->SetActiveScalars("Ratio");
+  pd->GetCellData()->SetActiveScalars(flowrecon::names::Ratio);
   return pd;
 }
 
@@ -740,9 +741,9 @@ vtkDataObject* NamedBlock(vtkMultiBlockDataSet* input, const char* name)
 bool FromMultiBlock(vtkMultiBlockDataSet* input, FlowComplex& fc, std::string& error)
 {
   fc = FlowComplex();
-  auto* cp = vtkPolyData::SafeDownCast(NamedBlock(input, "CriticalPoints"));
-  auto* hd = vtkPolyData::SafeDownCast(NamedBlock(input, "HasseDiagram"));
-  auto* sm = vtkUnstructuredGrid::SafeDownCast(NamedBlock(input, "StableManifolds"));
+  auto* cp = vtkPolyData::SafeDownCast(NamedBlock(input, flowrecon::names::CriticalPoints));
+  auto* hd = vtkPolyData::SafeDownCast(NamedBlock(input, flowrecon::names::HasseDiagram));
+  auto* sm = vtkUnstructuredGrid::SafeDownCast(NamedBlock(input, flowrecon::names::StableManifolds));
   if (!cp || !hd || !sm)
   {
     error = "not a flow complex: the blocks CriticalPoints (vtkPolyData), HasseDiagram "
@@ -755,7 +756,7 @@ bool FromMultiBlock(vtkMultiBlockDataSet* input, FlowComplex& fc, std::string& e
     fc = FlowComplex();
     return false;
   }
-  auto* um = vtkPolyData::SafeDownCast(NamedBlock(input, "UnstableManifolds"));
+  auto* um = vtkPolyData::SafeDownCast(NamedBlock(input, flowrecon::names::UnstableManifolds));
   if (um && !ReadFlowLines(um, fc, error))
   {
     fc = FlowComplex();
@@ -768,12 +769,12 @@ bool FromMultiBlock(vtkMultiBlockDataSet* input, FlowComplex& fc, std::string& e
 void AddSimplification(const FlowComplex& fc, const SimplificationResult& s, double threshold,
   vtkMultiBlockDataSet* output)
 {
-  auto* cp = vtkPolyData::SafeDownCast(NamedBlock(output, "CriticalPoints"));
-  auto* sm = vtkUnstructuredGrid::SafeDownCast(NamedBlock(output, "StableManifolds"));
+  auto* cp = vtkPolyData::SafeDownCast(NamedBlock(output, flowrecon::names::CriticalPoints));
+  auto* sm = vtkUnstructuredGrid::SafeDownCast(NamedBlock(output, flowrecon::names::StableManifolds));
   if (cp)
   {
-    vtkDataArray* nodeId = cp->GetPointData()->GetArray("NodeId");
-    auto cancelled = NamedArray<vtkUnsignedCharArray>("Cancelled");
+    vtkDataArray* nodeId = cp->GetPointData()->GetArray(flowrecon::names::NodeId);
+    auto cancelled = NamedArray<vtkUnsignedCharArray>(flowrecon::names::Cancelled);
     cancelled->SetNumberOfTuples(cp->GetNumberOfPoints());
     for (vtkIdType i = 0; i < cp->GetNumberOfPoints(); ++i)
     {
@@ -783,8 +784,8 @@ void AddSimplification(const FlowComplex& fc, const SimplificationResult& s, dou
   }
   if (sm)
   {
-    vtkDataArray* nodeId = sm->GetCellData()->GetArray("NodeId");
-    auto owner = NamedArray<vtkIdTypeArray>("Owner");
+    vtkDataArray* nodeId = sm->GetCellData()->GetArray(flowrecon::names::NodeId);
+    auto owner = NamedArray<vtkIdTypeArray>(flowrecon::names::Owner);
     owner->SetNumberOfTuples(sm->GetNumberOfCells());
     for (vtkIdType c = 0; c < sm->GetNumberOfCells(); ++c)
     {
@@ -821,7 +822,7 @@ void AddSimplification(const FlowComplex& fc, const SimplificationResult& s, dou
   const unsigned int b = output->GetNumberOfBlocks();
   output->SetNumberOfBlocks(b + 1);
   output->SetBlock(b, PersistencePairsBlock(fc, s));
-  output->GetMetaData(b)->Set(vtkCompositeDataSet::NAME(), "PersistencePairs");
+  output->GetMetaData(b)->Set(vtkCompositeDataSet::NAME(), flowrecon::names::PersistencePairs);
 }
 
 bool SimplificationFromMultiBlock(vtkMultiBlockDataSet* input, Id nodeCount,
@@ -831,14 +832,14 @@ bool SimplificationFromMultiBlock(vtkMultiBlockDataSet* input, Id nodeCount,
   s.Survives.assign(static_cast<std::size_t>(nodeCount), true);
   s.OwnerOffsets.assign(static_cast<std::size_t>(nodeCount + 1), 0);
   error.clear();
-  auto* cp = vtkPolyData::SafeDownCast(NamedBlock(input, "CriticalPoints"));
-  vtkDataArray* cancelled = cp ? cp->GetPointData()->GetArray("Cancelled") : nullptr;
+  auto* cp = vtkPolyData::SafeDownCast(NamedBlock(input, flowrecon::names::CriticalPoints));
+  vtkDataArray* cancelled = cp ? cp->GetPointData()->GetArray(flowrecon::names::Cancelled) : nullptr;
   if (!cancelled)
   {
     return false;
   }
-  const char* block = "CriticalPoints";
-  vtkDataArray* nodeId = Required(cp->GetPointData(), block, "NodeId", 1, nodeCount, error);
+  const char* block = flowrecon::names::CriticalPoints;
+  vtkDataArray* nodeId = Required(cp->GetPointData(), block, flowrecon::names::NodeId, 1, nodeCount, error);
   vtkDataArray* offsets = nodeId
     ? Required(cp->GetFieldData(), block, "OwnerOffsets", 1, nodeCount + 1, error)
     : nullptr;

@@ -1,6 +1,7 @@
 #include "ReconstructionConversion.h"
 
 #include "FlowComplexConversion.h"
+#include "FlowReconNames.h"
 #include "MemoryGuard.h"
 
 #include "vtkCellArray.h"
@@ -38,11 +39,11 @@ using flowrecon::NamedArray;
 /// Extension, Sponsor.
 struct InsertionArrays
 {
-  vtkSmartPointer<vtkIdTypeArray> Step = NamedArray<vtkIdTypeArray>("Step");
-  vtkSmartPointer<vtkIdTypeArray> NodeId = NamedArray<vtkIdTypeArray>("NodeId");
-  vtkSmartPointer<vtkDoubleArray> Priority = NamedArray<vtkDoubleArray>("Priority");
-  vtkSmartPointer<vtkIntArray> Extension = NamedArray<vtkIntArray>("Extension");
-  vtkSmartPointer<vtkIdTypeArray> Sponsor = NamedArray<vtkIdTypeArray>("Sponsor");
+  vtkSmartPointer<vtkIdTypeArray> Step = NamedArray<vtkIdTypeArray>(flowrecon::names::Step);
+  vtkSmartPointer<vtkIdTypeArray> NodeId = NamedArray<vtkIdTypeArray>(flowrecon::names::NodeId);
+  vtkSmartPointer<vtkDoubleArray> Priority = NamedArray<vtkDoubleArray>(flowrecon::names::Priority);
+  vtkSmartPointer<vtkIntArray> Extension = NamedArray<vtkIntArray>(flowrecon::names::Extension);
+  vtkSmartPointer<vtkIdTypeArray> Sponsor = NamedArray<vtkIdTypeArray>(flowrecon::names::Sponsor);
 
   void Append(Id step, Id node, const flowrecon::Insertion& in)
   {
@@ -189,16 +190,16 @@ void ReconstructionToVTK(const FlowComplex& fc, const std::vector<Id>& carriers,
     narrow ? connectivity->SetValue(i, static_cast<std::int32_t>(v)) : wideConnectivity->SetValue(i, v);
   };
   types->SetNumberOfValues(cells);
-  auto step = Sized<vtkIntArray>("Step", cells);
-  auto nodeId = Sized<vtkIntArray>("NodeId", cells);
-  auto priority = Sized<vtkDoubleArray>("Priority", cells);
-  auto extension = Sized<vtkIntArray>("Extension", cells);
-  auto sponsor = Sized<vtkIntArray>("Sponsor", cells);
-  auto index = Sized<vtkIntArray>("Index", cells);
-  auto value = Sized<vtkDoubleArray>("CriticalValue", cells);
-  auto threshold = Sized<vtkDoubleArray>("Threshold", cells);
-  auto owner = Sized<vtkIntArray>("Owner", cells);
-  auto mult = Sized<vtkIntArray>("Multiplicity", cells);
+  auto step = Sized<vtkIntArray>(flowrecon::names::Step, cells);
+  auto nodeId = Sized<vtkIntArray>(flowrecon::names::NodeId, cells);
+  auto priority = Sized<vtkDoubleArray>(flowrecon::names::Priority, cells);
+  auto extension = Sized<vtkIntArray>(flowrecon::names::Extension, cells);
+  auto sponsor = Sized<vtkIntArray>(flowrecon::names::Sponsor, cells);
+  auto index = Sized<vtkIntArray>(flowrecon::names::Index, cells);
+  auto value = Sized<vtkDoubleArray>(flowrecon::names::CriticalValue, cells);
+  auto threshold = Sized<vtkDoubleArray>(flowrecon::names::Threshold, cells);
+  auto owner = Sized<vtkIntArray>(flowrecon::names::Owner, cells);
+  auto mult = Sized<vtkIntArray>(flowrecon::names::Multiplicity, cells);
   std::vector<vtkIdType> pointOf(fc.Points.size(), -1);
   std::vector<Id> used; // fc point of each output point
   vtkIdType c = 0, k = 0;
@@ -236,7 +237,7 @@ void ReconstructionToVTK(const FlowComplex& fc, const std::vector<Id>& carriers,
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(static_cast<vtkIdType>(used.size()));
-  auto original = Sized<vtkIdTypeArray>("vtkOriginalPointIds", static_cast<vtkIdType>(used.size()));
+  auto original = Sized<vtkIdTypeArray>(flowrecon::names::OriginalPointIds, static_cast<vtkIdType>(used.size()));
   for (std::size_t p = 0; p < used.size(); ++p)
   {
     points->SetPoint(static_cast<vtkIdType>(p), fc.Points[used[p]].data());
@@ -261,12 +262,12 @@ void ReconstructionToVTK(const FlowComplex& fc, const std::vector<Id>& carriers,
   {
     grid->GetCellData()->AddArray(a);
   }
-  grid->GetCellData()->SetActiveScalars("CriticalValue");
+  grid->GetCellData()->SetActiveScalars(flowrecon::names::CriticalValue);
 
   // Port 1: the profile of the whole run.
   InsertionArrays rowInsertion;
-  auto pIndex = NamedArray<vtkIntArray>("Index");
-  auto pThreshold = NamedArray<vtkDoubleArray>("Threshold");
+  auto pIndex = NamedArray<vtkIntArray>(flowrecon::names::Index);
+  auto pThreshold = NamedArray<vtkDoubleArray>(flowrecon::names::Threshold);
   for (std::size_t k = 0; k < run.Order.size(); ++k)
   {
     const Id node = run.Order[k];
@@ -307,7 +308,7 @@ void ReconstructionToVTK(const FlowComplex& fc, const std::vector<Id>& carriers,
   {
     arrows->GetCellData()->AddArray(a);
   }
-  arrows->GetCellData()->SetActiveScalars("Priority");
+  arrows->GetCellData()->SetActiveScalars(flowrecon::names::Priority);
 }
 
 FilteredCells ReconstructionCells(const FlowComplex& fc, const std::vector<Id>& carriers,
@@ -339,11 +340,11 @@ void UnderSamplingToVTK(const std::vector<TopologyChange>& changes,
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   vtkNew<vtkCellArray> vertices;
-  auto threshold = NamedArray<vtkDoubleArray>("Threshold");
-  auto dimension = NamedArray<vtkIntArray>("Dimension");
-  auto change = NamedArray<vtkIntArray>("Change");
-  auto spacing = NamedArray<vtkDoubleArray>("Spacing");
-  auto nodeId = NamedArray<vtkIdTypeArray>("NodeId");
+  auto threshold = NamedArray<vtkDoubleArray>(flowrecon::names::Threshold);
+  auto dimension = NamedArray<vtkIntArray>(flowrecon::names::Dimension);
+  auto change = NamedArray<vtkIntArray>(flowrecon::names::Change);
+  auto spacing = NamedArray<vtkDoubleArray>(flowrecon::names::Spacing);
+  auto nodeId = NamedArray<vtkIdTypeArray>(flowrecon::names::NodeId);
   for (const TopologyChange& c : changes)
   {
     const Id node = c.Cell >= 0 && c.Cell < static_cast<Id>(cellNodes.size()) ? cellNodes[c.Cell] : -1;
@@ -370,14 +371,14 @@ void UnderSamplingToVTK(const std::vector<TopologyChange>& changes,
   {
     output->GetPointData()->AddArray(a);
   }
-  output->GetPointData()->SetActiveScalars("Threshold");
+  output->GetPointData()->SetActiveScalars(flowrecon::names::Threshold);
 }
 
 void TopologyToVTK(const std::vector<Bar>& bars, double t, double limit,
   vtkUnstructuredGrid* grid, vtkTable* table)
 {
   const std::array<Id, 4> betti = BettiNumbersBelow(bars, t);
-  auto field = NamedArray<vtkIdTypeArray>("BettiNumbers");
+  auto field = NamedArray<vtkIdTypeArray>(flowrecon::names::BettiNumbers);
   for (int d = 0; d < 3; ++d)
   {
     field->InsertNextValue(static_cast<vtkIdType>(betti[d]));
@@ -385,7 +386,7 @@ void TopologyToVTK(const std::vector<Bar>& bars, double t, double limit,
   grid->GetFieldData()->AddArray(field);
 
   table->Initialize();
-  auto threshold = NamedArray<vtkDoubleArray>("Threshold");
+  auto threshold = NamedArray<vtkDoubleArray>(flowrecon::names::Threshold);
   vtkSmartPointer<vtkIdTypeArray> b[3] = { NamedArray<vtkIdTypeArray>("b0"),
     NamedArray<vtkIdTypeArray>("b1"), NamedArray<vtkIdTypeArray>("b2") };
   for (const TopologyStep& step : TopologyProfile(bars, 1, limit))

@@ -2,6 +2,7 @@
 
 #include "FlowComplexBuilder.h"
 #include "CoreCall.h"
+#include "FlowReconNames.h"
 #include "FlowComplexConversion.h"
 
 #include "vtkDataObject.h"
@@ -22,8 +23,8 @@ vtkFlowComplex::~vtkFlowComplex() = default;
 //------------------------------------------------------------------------------
 const char* vtkFlowComplex::BlockName(int block)
 {
-  static const char* names[NUMBER_OF_BLOCKS] = { "CriticalPoints", "HasseDiagram",
-    "StableManifolds", "UnstableManifolds" };
+  static const char* names[NUMBER_OF_BLOCKS] = { flowrecon::names::CriticalPoints, flowrecon::names::HasseDiagram,
+    flowrecon::names::StableManifolds, flowrecon::names::UnstableManifolds };
   return (block >= 0 && block < NUMBER_OF_BLOCKS) ? names[block] : nullptr;
 }
 

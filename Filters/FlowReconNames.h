@@ -1,0 +1,56 @@
+// The names of the data contract (DESIGN.md): blocks of a flow complex and the
+// arrays every stage writes and reads. Filters, the CLI and C++ tests use these;
+// changing one changes the product.
+#ifndef FlowReconNames_h
+#define FlowReconNames_h
+
+namespace flowrecon
+{
+namespace names
+{
+// Blocks of Flow Complex and Flow Complex Simplification.
+constexpr const char* CriticalPoints = "CriticalPoints";
+constexpr const char* HasseDiagram = "HasseDiagram";
+constexpr const char* StableManifolds = "StableManifolds";
+constexpr const char* UnstableManifolds = "UnstableManifolds";
+constexpr const char* PersistencePairs = "PersistencePairs";
+
+// Nodes, arcs and cells.
+constexpr const char* NodeId = "NodeId";
+constexpr const char* Index = "Index";
+constexpr const char* CriticalValue = "CriticalValue";
+constexpr const char* Simplex = "Simplex";
+constexpr const char* Multiplicity = "Multiplicity";
+constexpr const char* Ratio = "Ratio";
+constexpr const char* LowerNodeId = "LowerNodeId";
+constexpr const char* UpperNodeId = "UpperNodeId";
+constexpr const char* TargetNodeId = "TargetNodeId";
+constexpr const char* Cancelled = "Cancelled";
+constexpr const char* Owner = "Owner";
+constexpr const char* NodeCountByIndex = "NodeCountByIndex";
+constexpr const char* OriginalPointIds = "vtkOriginalPointIds";
+
+// Reconstruction.
+constexpr const char* Step = "Step";
+constexpr const char* Priority = "Priority";
+constexpr const char* Threshold = "Threshold";
+constexpr const char* Extension = "Extension";
+constexpr const char* Sponsor = "Sponsor";
+
+// Persistence pairs and diagrams (TTK's layout).
+constexpr const char* Birth = "Birth";
+constexpr const char* Death = "Death";
+constexpr const char* PairType = "PairType";
+constexpr const char* Persistence = "Persistence";
+constexpr const char* PairIdentifier = "PairIdentifier";
+constexpr const char* IsFinite = "IsFinite";
+
+// Topology (issue #9).
+constexpr const char* BettiNumbers = "BettiNumbers";
+constexpr const char* Dimension = "Dimension";
+constexpr const char* Change = "Change";
+constexpr const char* Spacing = "Spacing";
+} // namespace names
+} // namespace flowrecon
+
+#endif
