@@ -17,6 +17,7 @@
 #include "FlowReconNames.h"
 #include "FlowComplexBuilder.h" // flowrecon diagram calls the core directly
 #include "Persistence.h"
+#include "PersistenceDiagramConversion.h"
 #include "Reconstruction.h"
 #include "ReconstructionConversion.h"
 #include "Simplification.h"
@@ -1370,59 +1371,6 @@ int RunReconstruct(const Arguments& args)
   return 0;
 }
 
-// TTK's persistence-diagram layout: pair i is the segment from point 2i =
-// (birth, birth, 0) to point 2i+1 = (birth, death, 0); essential classes end at
-// the largest finite value; a last cell is the diagonal (PairIdentifier -1).
-vtkSmartPointer<vtkUnstructuredGrid> DiagramGrid(const std::vector<flowrecon::PersistencePair>& pairs)
-{
-  double top = 0;
-  for (const auto& p : pairs)
-  {
-    top = std::max(top, std::isinf(p.DeathValue) ? p.BirthValue : p.DeathValue);
-  }
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
-  vtkNew<vtkIntArray> id, type, finite;
-  vtkNew<vtkDoubleArray> persistence, birth;
-  id->SetName(flowrecon::names::PairIdentifier);
-  type->SetName(flowrecon::names::PairType);
-  finite->SetName(flowrecon::names::IsFinite);
-  persistence->SetName(flowrecon::names::Persistence);
-  birth->SetName(flowrecon::names::Birth);
-  grid->AllocateExact(static_cast<vtkIdType>(pairs.size() + 1), 2);
-  auto line = [&](double b, double d) {
-    const vtkIdType ids[2] = { points->InsertNextPoint(b, b, 0), points->InsertNextPoint(b, d, 0) };
-    grid->InsertNextCell(VTK_LINE, 2, ids);
-  };
-  for (std::size_t i = 0; i < pairs.size(); ++i)
-  {
-    const auto& p = pairs[i];
-    const bool isFinite = !std::isinf(p.DeathValue);
-    const double death = isFinite ? p.DeathValue : top;
-    line(p.BirthValue, death);
-    id->InsertNextValue(static_cast<int>(i));
-    type->InsertNextValue(p.Dimension);
-    finite->InsertNextValue(isFinite ? 1 : 0);
-    persistence->InsertNextValue(death - p.BirthValue);
-    birth->InsertNextValue(p.BirthValue);
-  }
-  const vtkIdType diagonal[2] = { points->InsertNextPoint(0, 0, 0),
-    points->InsertNextPoint(top, top, 0) };
-  grid->InsertNextCell(VTK_LINE, 2, diagonal);
-  id->InsertNextValue(-1);
-  type->InsertNextValue(-1);
-  finite->InsertNextValue(0);
-  persistence->InsertNextValue(0);
-  birth->InsertNextValue(0);
-  grid->SetPoints(points);
-  for (vtkDataArray* a : std::initializer_list<vtkDataArray*>{ id, type, persistence, birth, finite })
-  {
-    grid->GetCellData()->AddArray(a);
-  }
-  return grid;
-}
-
 int RunDiagram(const Arguments& args)
 {
   const std::string& input = args.Inputs[0];
@@ -1493,14 +1441,7 @@ int RunDiagram(const Arguments& args)
     line->Finish();
     ThrowIfInterrupted();
   }
-  std::vector<flowrecon::PersistencePair> pairs;
-  for (const auto& p : flowrecon::ComputePersistence(fc.Nodes, fc.Arcs))
-  {
-    if (p.DeathValue > p.BirthValue) // zero-persistence pairs carry no feature
-    {
-      pairs.push_back(p);
-    }
-  }
+  const std::vector<flowrecon::PersistencePair> pairs = flowrecon::DiagramPairs(fc);
   fc = flowrecon::FlowComplex();
   ThrowIfInterrupted();
   if (ExtensionOf(output) == ".csv")
@@ -1541,7 +1482,9 @@ int RunDiagram(const Arguments& args)
   }
   else
   {
-    WriteXML<vtkXMLUnstructuredGridWriter>(DiagramGrid(pairs), output);
+    vtkNew<vtkUnstructuredGrid> grid;
+    flowrecon::DiagramToVTK(pairs, grid);
+    WriteXML<vtkXMLUnstructuredGridWriter>(grid.GetPointer(), output);
   }
   if (!options.Quiet)
   {

@@ -6,13 +6,17 @@ vtk_module_add_module(FlowRecon::Filters
     ${_flowrecon_filters_dir}/vtkFlowComplex
     ${_flowrecon_filters_dir}/vtkFlowComplexSimplification
     ${_flowrecon_filters_dir}/vtkFlowReconstruction
+    ${_flowrecon_filters_dir}/vtkPersistenceDiagram
     ${_flowrecon_filters_dir}/vtkPointCloudReader
   PRIVATE_HEADERS
     ${_flowrecon_filters_dir}/CoreCall.h
     ${_flowrecon_filters_dir}/FlowComplexConversion.h
+    ${_flowrecon_filters_dir}/FlowReconNames.h
+    ${_flowrecon_filters_dir}/PersistenceDiagramConversion.h
     ${_flowrecon_filters_dir}/ReconstructionConversion.h
   SOURCES
     ${_flowrecon_filters_dir}/FlowComplexConversion.cxx
+    ${_flowrecon_filters_dir}/PersistenceDiagramConversion.cxx
     ${_flowrecon_filters_dir}/ReconstructionConversion.cxx)
 vtk_module_include(FlowRecon::Filters PUBLIC "$<BUILD_INTERFACE:${_flowrecon_filters_dir}>")
 vtk_module_link(FlowRecon::Filters PRIVATE "$<BUILD_INTERFACE:FlowReconCore>")

@@ -1,0 +1,112 @@
+#!/usr/bin/env python3
+"""The views the Persistence Diagram filter opens (issue #10), as ParaView's Apply
+does it (ShowInPreferredView): port 0 in a render view, in 2D, drawing the pairs,
+the diagonal and the t_p line; port 1 in a line chart plotted against Ratio,
+with the curves and the t_p mark. Both are rendered to PNG files, and the
+pictures must show the data: the diagram's pixels in the colours of its PairType
+values, the chart's lines.
+
+Run (needs X): pvpython --force-offscreen-rendering test_persistence_diagram_views.py PLUGIN WORKDIR
+"""
+
+import os
+import sys
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "..", "Data"))
+import generate_clouds as gen  # noqa: E402
+
+from paraview import simple  # noqa: E402
+from paraview.modules.vtkRemotingViews import (  # noqa: E402
+    vtkSMParaViewPipelineControllerWithRendering)
+
+PLUGIN, WORK = sys.argv[1:3]
+failures = []
+
+
+def check(condition, message):
+    if not condition:
+        failures.append(message)
+        print("FAIL " + message, flush=True)
+    return condition
+
+
+def picture(view, path):
+    simple.SaveScreenshot(path, view, ImageResolution=[800, 600],
+                          OverrideColorPalette="WhiteBackground")
+    from vtkmodules.vtkIOImage import vtkPNGReader
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    r = vtkPNGReader()
+    r.SetFileName(path)
+    r.Update()
+    img = r.GetOutput()
+    rgb = vtk_to_numpy(img.GetPointData().GetScalars())[:, :3].astype(int)
+    return rgb
+
+
+def main():
+    os.makedirs(WORK, exist_ok=True)
+    simple.LoadPlugin(PLUGIN, remote=False, ns=globals())
+    rng = np.random.default_rng(11)
+    xyz = os.path.join(WORK, "torus.xyz")
+    np.savetxt(xyz, gen.torus(400, rng), fmt="%.17g")
+    reader = simple.OpenDataFile(xyz)
+    fc = FlowComplex(Input=reader, ComputeStableManifolds=0)  # noqa: F821
+    pd = PersistenceDiagram(Input=fc)  # noqa: F821
+    pd.UpdatePipeline()
+
+    controller = vtkSMParaViewPipelineControllerWithRendering()
+    # As Apply does in an empty layout frame: no view given, the preferred one is made.
+    diagram_view = controller.ShowInPreferredView(pd.SMProxy, 0, None)
+    curve_view = controller.ShowInPreferredView(pd.SMProxy, 1, None)
+    names = [v.GetXMLName() if v else None for v in (diagram_view, curve_view)]
+    print("views:", names, flush=True)
+    if not check(names == ["RenderView", "XYChartView"],
+                 "ports 0 and 1 open in %s, expected RenderView, XYChartView" % names):
+        return
+    # Port 1 in an existing render view still opens its own chart.
+    check(controller.ShowInPreferredView(pd.SMProxy, 1, diagram_view).GetXMLName() == "XYChartView",
+          "port 1 shown from a render view does not open a chart")
+
+    dview = simple.servermanager._getPyProxy(diagram_view)
+    cview = simple.servermanager._getPyProxy(curve_view)
+
+    # The diagram: flat, so the GUI's automatic mode picks 2D; do the same here.
+    info = pd.GetDataInformation(0)
+    bounds = info.GetBounds()
+    check(bounds[4] == bounds[5] == 0.0, "the diagram is not in the plane z = 0: %s" % (bounds,))
+    drep = simple.GetDisplayProperties(pd, dview)
+    simple.ColorBy(drep, ("CELLS", "PairType"))
+    drep.LineWidth = 2.0
+    dview.InteractionMode = "2D"
+    dview.OrientationAxesVisibility = 0
+    simple.ResetCamera(dview)
+    rgb = picture(dview, os.path.join(WORK, "diagram.png"))
+    background = np.all(rgb == rgb[0], axis=1)
+    colours = {tuple(c) for c in rgb[~background][:20000]}
+    print("diagram: %d non-background pixels, %d colours" % ((~background).sum(), len(colours)),
+          flush=True)
+    check((~background).sum() > 2000 and len(colours) >= 4,
+          "the diagram picture is (nearly) empty or single-coloured")
+
+    # The curve: against Ratio, with the t_p mark.
+    crep = simple.GetDisplayProperties(simple.OutputPort(pd, 1), cview)
+    print("chart: UseIndexForXAxis %s, XArrayName %s, visible %s" % (
+        crep.UseIndexForXAxis, crep.XArrayName, crep.SeriesVisibility), flush=True)
+    check(crep.UseIndexForXAxis == 0 and crep.XArrayName == "Ratio",
+          "the curve is not plotted against Ratio by default")
+    # Python lists the names of the visible series.
+    check(sorted(crep.SeriesVisibility) == ["PairsH1", "PairsH2", "t_p"],
+          "the chart shows %s, expected PairsH1, PairsH2, t_p" % list(crep.SeriesVisibility))
+    rgb = picture(cview, os.path.join(WORK, "curve.png"))
+    background = np.all(rgb == rgb[0], axis=1)
+    check((~background).sum() > 2000, "the curve picture is (nearly) empty")
+
+
+main()
+if failures:
+    print("FAIL: %d checks failed" % len(failures))
+    sys.exit(1)
+print("PASS")
