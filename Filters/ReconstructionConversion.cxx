@@ -21,9 +21,9 @@
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <limits>
-#include <array>
 #include <utility>
 
 namespace flowrecon
@@ -110,6 +110,76 @@ void ForEachCell(const FlowComplex& fc, Id node, const CellsByNode& triangles,
   for (Id j = tetrahedra.Offsets[node]; j < tetrahedra.Offsets[node + 1]; ++j)
   {
     f(VTK_TETRA, 4, fc.Tetrahedra[tetrahedra.List[j]].data(), node);
+  }
+}
+
+/// Thresholds from here on are "no bound" in the charts' marks: the GUI's way
+/// to say every step (its fields take no inf), which would squash a chart.
+constexpr double Unbounded = 1e308;
+
+/// The topology profile drawn as steps, for its line chart: a chart joins
+/// rows with slopes, and the rows (one per change) are what the command line
+/// writes, so the steps go to the table's field data. Two points per row, at
+/// the start and the end of its interval, and two at x = t for a vertical mark
+/// (`t_r`, NaN elsewhere) from 0 to the largest Betti number.
+void AddStaircase(const std::vector<TopologyStep>& profile, double t, double limit,
+  vtkFieldData* field)
+{
+  if (profile.empty())
+  {
+    return;
+  }
+  const char* names[4] = { flowrecon::names::Threshold, "b0", "b1", "b2" };
+  vtkSmartPointer<vtkDoubleArray> steps[5];
+  for (int k = 0; k < 4; ++k)
+  {
+    steps[k] = NamedArray<vtkDoubleArray>(names[k]);
+  }
+  steps[4] = NamedArray<vtkDoubleArray>("t_r");
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  double height = 1;
+  for (const TopologyStep& step : profile)
+  {
+    for (int d = 0; d < 3; ++d)
+    {
+      height = std::max(height, static_cast<double>(step.Betti[d]));
+    }
+  }
+  // A point of the curves (of `step`, NaN without) and of the mark.
+  auto point = [&](double x, const TopologyStep* step, double m) {
+    steps[0]->InsertNextValue(x);
+    for (int d = 0; d < 3; ++d)
+    {
+      steps[d + 1]->InsertNextValue(step ? static_cast<double>(step->Betti[d]) : nan);
+    }
+    steps[4]->InsertNextValue(m);
+  };
+  const bool mark = t < Unbounded;
+  if (mark && t <= profile.front().Threshold)
+  {
+    point(t, nullptr, 0); // before the first interval: the mark alone
+    point(t, nullptr, height);
+  }
+  for (std::size_t k = 0; k < profile.size(); ++k)
+  {
+    const double start = profile[k].Threshold;
+    // The last interval ends at the limit; with none, at t or where it starts.
+    double end = k + 1 < profile.size() ? profile[k + 1].Threshold : limit;
+    if (end >= Unbounded)
+    {
+      end = mark ? std::max(start, t) : start;
+    }
+    point(start, &profile[k], nan);
+    if (mark && start < t && t <= end)
+    {
+      point(t, &profile[k], 0);
+      point(t, &profile[k], height);
+    }
+    point(end, &profile[k], nan);
+  }
+  for (auto& a : steps)
+  {
+    field->AddArray(a);
   }
 }
 
@@ -276,6 +346,9 @@ void ReconstructionToVTK(const FlowComplex& fc, const std::vector<Id>& carriers,
     pIndex->InsertNextValue(fc.Nodes[node].Index);
     pThreshold->InsertNextValue(in.Threshold);
   }
+  // The mark of t_r in the profile's chart: a horizontal line, so t on every row.
+  auto mark = Sized<vtkDoubleArray>("t_r", static_cast<vtkIdType>(run.Order.size()));
+  mark->FillValue(t < Unbounded ? t : std::numeric_limits<double>::quiet_NaN());
   profile->Initialize();
   for (vtkDataArray* a : rowInsertion.All())
   {
@@ -283,6 +356,7 @@ void ReconstructionToVTK(const FlowComplex& fc, const std::vector<Id>& carriers,
   }
   profile->AddColumn(pIndex);
   profile->AddColumn(pThreshold);
+  profile->AddColumn(mark);
 
   // Port 2: sponsor -> node arrows of the current reconstruction.
   vtkNew<vtkPoints> arrowPoints;
@@ -389,7 +463,8 @@ void TopologyToVTK(const std::vector<Bar>& bars, double t, double limit,
   auto threshold = NamedArray<vtkDoubleArray>(flowrecon::names::Threshold);
   vtkSmartPointer<vtkIdTypeArray> b[3] = { NamedArray<vtkIdTypeArray>("b0"),
     NamedArray<vtkIdTypeArray>("b1"), NamedArray<vtkIdTypeArray>("b2") };
-  for (const TopologyStep& step : TopologyProfile(bars, 1, limit))
+  const std::vector<TopologyStep> profile = TopologyProfile(bars, 1, limit);
+  for (const TopologyStep& step : profile)
   {
     threshold->InsertNextValue(step.Threshold);
     for (int d = 0; d < 3; ++d)
@@ -402,6 +477,7 @@ void TopologyToVTK(const std::vector<Bar>& bars, double t, double limit,
   {
     table->AddColumn(column);
   }
+  AddStaircase(profile, t, limit, table->GetFieldData());
 }
 
 } // namespace flowrecon

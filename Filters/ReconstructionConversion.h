@@ -29,7 +29,9 @@ struct CellsByNode
 /// Port 0 (`grid`): the cells of the nodes whose carrier (CellCarriers) is in
 /// the reconstruction at `t`, over the points they use (samples keep their input
 /// id in vtkOriginalPointIds), with the insertion arrays; port 1 (`profile`) the
-/// whole run; port 2 (`arrows`) the sponsor arrows at `t`. `fc` holds the drawn
+/// whole run, one row per step, and a column `t_r` equal to `t` on every row
+/// (a horizontal mark in its chart; NaN, no mark, for t >= 1e308: every step);
+/// port 2 (`arrows`) the sponsor arrows at `t`. `fc` holds the drawn
 /// geometry of those nodes, grouped by `triangles` and `tetrahedra`.
 void ReconstructionToVTK(const FlowComplex& fc, const std::vector<Id>& carriers,
   const ReconstructionResult& run, double t, const CellsByNode& triangles,
@@ -53,7 +55,12 @@ void UnderSamplingToVTK(const std::vector<TopologyChange>& changes,
 /// Field data `BettiNumbers` (b0, b1, b2 of the cells below t) on `grid`, and
 /// the topology profile in `table`: columns `Threshold`, `b0`, `b1`, `b2`, one
 /// row per change, each holding for t_r in (Threshold, next row's Threshold]
-/// (the last up to `limit`).
+/// (the last up to `limit`). The table's field data holds the same profile as
+/// steps for a line chart: arrays `Threshold`, `b0`, `b1`, `b2` with two
+/// points per row (the start and the end of its interval; a `limit` >= 1e308,
+/// every step, ends the last at t or at its start) and two at x = `t` (none
+/// for t >= 1e308), where `t_r` (NaN elsewhere) draws a vertical mark from 0
+/// to the largest Betti number.
 void TopologyToVTK(const std::vector<Bar>& bars, double t, double limit,
   vtkUnstructuredGrid* grid, vtkTable* table);
 

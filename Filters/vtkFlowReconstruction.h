@@ -31,7 +31,8 @@
  *
  * Output port 1 (vtkTable): the reconstruction profile of the whole
  * t_r = infinity run, one row per step: `Step`, `NodeId`, `Index`, `Priority`,
- * `Threshold`, `Extension`, `Sponsor`. Steps with Threshold < t_r form the
+ * `Threshold`, `Extension`, `Sponsor`, and `t_r` (the current t_r on every
+ * row, for a horizontal mark in a chart). Steps with Threshold < t_r form the
  * current reconstruction; jumps of Threshold point at under-sampled regions.
  *
  * Output port 2 (vtkPolyData): sponsor arrows of the current reconstruction,
@@ -45,7 +46,9 @@
  * `Threshold` (flowrecon::CellBarcode): port 0 has field data `BettiNumbers`
  * (b0, b1, b2 at the current t_r), and output port 3 (vtkTable) is the
  * topology profile: columns `Threshold`, `b0`, `b1`, `b2`, one row per change,
- * each holding for t_r in (Threshold, next Threshold] up to MaximumThreshold.
+ * each holding for t_r in (Threshold, next Threshold] up to MaximumThreshold;
+ * its field data draws the same profile as steps, with a vertical mark `t_r`
+ * at the current t_r (flowrecon::TopologyToVTK), for a line chart.
  *
  * Output port 4 (vtkPolyData): under-sampling warnings, one point per change of
  * the Betti numbers for t_r in [t_r, UnderSamplingWindow x t_r), at the
