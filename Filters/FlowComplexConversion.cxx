@@ -186,7 +186,8 @@ vtkSmartPointer<vtkPolyData> HasseDiagramBlock(const FlowComplex& fc)
   return pd;
 }
 
-vtkSmartPointer<vtkUnstructuredGrid> StableManifoldsBlock(const FlowComplex& fc)
+vtkSmartPointer<vtkUnstructuredGrid> StableManifoldsBlock(
+  const FlowComplex& fc, const Progress& progress)
 {
   vtkNew<vtkUnstructuredGrid> ug;
   ug->SetPoints(MakePoints(fc.Points));
@@ -205,8 +206,14 @@ vtkSmartPointer<vtkUnstructuredGrid> StableManifoldsBlock(const FlowComplex& fc)
   ug->AllocateExact(static_cast<vtkIdType>(fc.Nodes.size() + fc.Triangles.size() +
                       fc.Tetrahedra.size()),
     4);
+  const double cells = static_cast<double>(fc.Nodes.size() + fc.Triangles.size() +
+    fc.Tetrahedra.size()) + 1;
   auto add = [&](int type, int n, const vtkIdType* ids, Id node) {
-    ug->InsertNextCell(type, n, ids);
+    const vtkIdType k = ug->InsertNextCell(type, n, ids);
+    if ((k & 0xFFFF) == 0xFFFF)
+    {
+      progress(static_cast<double>(k) / cells, "VTK output: stable manifolds");
+    }
     nodeId->InsertNextValue(node);
     index->InsertNextValue(fc.Nodes[node].Index);
     value->InsertNextValue(fc.Nodes[node].Value);
@@ -388,10 +395,30 @@ void RequireMemoryForVTK(const FlowComplex& fc)
     "use 'flowrecon reconstruct', which keeps the complex in its compact form, or fewer points");
 }
 
-void ToMultiBlock(const FlowComplex& fc, vtkMultiBlockDataSet* output)
+void ToMultiBlock(const FlowComplex& fc, vtkMultiBlockDataSet* output, const Progress& progress)
 {
-  vtkSmartPointer<vtkDataObject> blocks[4] = { CriticalPointsBlock(fc), HasseDiagramBlock(fc),
-    StableManifoldsBlock(fc), UnstableManifoldsBlock(fc) };
+  // Each block's share of the progress: its number of items (nodes, arcs,
+  // cells, flow-line points), which is what its copy costs.
+  double points = 0;
+  for (const FlowLine& line : fc.FlowLines)
+  {
+    points += static_cast<double>(line.Points.size());
+  }
+  const double share[4] = { static_cast<double>(fc.Nodes.size()),
+    static_cast<double>(fc.Arcs.size()),
+    static_cast<double>(fc.Nodes.size() + fc.Triangles.size() + fc.Tetrahedra.size()), points };
+  const double total = share[0] + share[1] + share[2] + share[3] + 1;
+  const double at[4] = { 0, share[0] / total, (share[0] + share[1]) / total,
+    (share[0] + share[1] + share[2]) / total };
+  progress(at[0], "VTK output: critical points");
+  vtkSmartPointer<vtkDataObject> blocks[4];
+  blocks[0] = CriticalPointsBlock(fc);
+  progress(at[1], "VTK output: Hasse diagram");
+  blocks[1] = HasseDiagramBlock(fc);
+  progress(at[2], "VTK output: stable manifolds");
+  blocks[2] = StableManifoldsBlock(fc, progress.Range(at[2], at[3]));
+  progress(at[3], "VTK output: unstable manifolds");
+  blocks[3] = UnstableManifoldsBlock(fc);
   const char* names[4] = { flowrecon::names::CriticalPoints, flowrecon::names::HasseDiagram, flowrecon::names::StableManifolds,
     flowrecon::names::UnstableManifolds };
   output->SetNumberOfBlocks(4);
@@ -402,6 +429,7 @@ void ToMultiBlock(const FlowComplex& fc, vtkMultiBlockDataSet* output)
   }
   AddReport(fc, blocks[0]->GetFieldData());
   AddReport(fc, output->GetFieldData());
+  progress(1, "VTK output");
 }
 
 namespace

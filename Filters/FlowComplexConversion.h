@@ -3,7 +3,8 @@
 #ifndef FlowComplexConversion_h
 #define FlowComplexConversion_h
 
-#include "FlowComplex.h"    // core data structure
+#include "FlowComplex.h"
+#include "Progress.h"    // core data structure
 #include "Simplification.h" // core data structure
 
 #include "vtkSmartPointer.h"
@@ -25,7 +26,10 @@ bool ExtractSamples(vtkDataObject* input, std::vector<Point3>& points, std::stri
 
 /// Fills `output` with the blocks CriticalPoints, HasseDiagram, StableManifolds and
 /// UnstableManifolds (the last two empty when not computed) and the report arrays.
-void ToMultiBlock(const FlowComplex& fc, vtkMultiBlockDataSet* output);
+/// Reports progress per block and every 2^16 cells (the copy of millions of
+/// cells takes seconds), and throws Aborted when asked to stop.
+void ToMultiBlock(
+  const FlowComplex& fc, vtkMultiBlockDataSet* output, const Progress& progress = Progress());
 
 /// Refuses (InputError, one line) to convert a flow complex whose VTK copy
 /// would not fit in memory: about 60 bytes per arc, 150 per node and 200 per

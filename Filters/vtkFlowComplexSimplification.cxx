@@ -65,9 +65,9 @@ int vtkFlowComplexSimplification::RequestData(
     this, "simplification",
     [&]() {
       const flowrecon::SimplificationResult s =
-        flowrecon::Simplify(fc.Nodes, fc.Arcs, this->PersistenceThreshold, progress);
+        flowrecon::Simplify(fc.Nodes, fc.Arcs, this->PersistenceThreshold, progress.Range(0, 0.6));
       fc.Arcs = s.Arcs; // the HasseDiagram block shows the simplified diagram
-      flowrecon::ToMultiBlock(fc, output);
+      flowrecon::ToMultiBlock(fc, output, progress.Range(0.6, 1));
       flowrecon::AddSimplification(fc, s, this->PersistenceThreshold, output);
     },
     [&]() { output->Initialize(); });

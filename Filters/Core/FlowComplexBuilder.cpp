@@ -133,7 +133,7 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
   const std::string cloud = std::to_string(coords.size()) + " points";
   RequireMemory(1500.0 * static_cast<double>(coords.size()), "the flow complex of " + cloud,
     "use fewer points (a subsample) or a machine with more memory");
-  auto tri = std::make_unique<const Triangulation>(coords);
+  auto tri = std::make_unique<const Triangulation>(coords, this->Report.Range(0, 0.2));
   if (tri->Dimension() < 3)
   {
     throw InputError(tri->Dimension() == 2 ? "all points are coplanar"

@@ -52,6 +52,21 @@ struct Progress
       throw Aborted();
     }
   }
+
+  /// The same callbacks for a stage that covers [from, to] of this progress.
+  Progress Range(double from, double to) const
+  {
+    Progress part;
+    part.ShouldAbort = this->ShouldAbort;
+    if (this->Report)
+    {
+      auto report = this->Report;
+      part.Report = [report, from, to](double f, const char* phase) {
+        report(from + (to - from) * f, phase);
+      };
+    }
+    return part;
+  }
 };
 
 } // namespace flowrecon

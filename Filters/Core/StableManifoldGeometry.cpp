@@ -152,7 +152,7 @@ void DrawStableManifolds(const std::vector<Point3>& points, const BuildOptions& 
     "the triangulation of " + std::to_string(in.Unique.size()) + " points", advice);
   const std::vector<Point3> coords = AttemptCoordinates(in, fc.Report.Attempts, options.Seed);
   progress(0.0, "Delaunay triangulation");
-  const Triangulation tri(coords);
+  const Triangulation tri(coords, progress.Range(0, 0.2));
   progress(0.2, "critical points");
   const CriticalSimplices cs = FindCriticalSimplices(tri, progress);
   const Id m = tri.NumberOfVertices();

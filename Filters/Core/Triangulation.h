@@ -5,6 +5,7 @@
 #define flowrecon_Triangulation_h
 
 #include "Delaunay.h"
+#include "Progress.h"
 
 #include <algorithm>
 #include <array>
@@ -20,7 +21,9 @@ public:
   /// Builds the triangulation of `points` (inserted with spatial sorting); vertex
   /// info is the index into `points`. Points must be pairwise distinct, and must
   /// outlive the triangulation (they are referenced, not copied).
-  explicit Triangulation(const std::vector<Point3>& points);
+  /// `progress` (fractions of this phase) is reported between rounds of
+  /// insertion and may abort (it throws Aborted).
+  explicit Triangulation(const std::vector<Point3>& points, const Progress& progress = Progress());
 
   const Delaunay& Dt() const { return this->DT; }
   /// Distinct for every triangulation built in this process: keys caches that

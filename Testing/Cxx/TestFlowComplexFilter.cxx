@@ -27,6 +27,8 @@
 #include <cmath>
 #include <random>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace
 {
@@ -197,6 +199,68 @@ int main(int argc, char* argv[])
   aborted->AddObserver(vtkCommand::ProgressEvent, onAbort);
   aborted->Update();
   CHECK(aborted->GetOutput()->GetNumberOfBlocks() == 0);
+
+  // Progress from the first second: the Delaunay phase of a large cloud reports
+  // as it goes, the copy into VTK data too, and 1 comes only at the end.
+  struct Seen
+  {
+    std::vector<std::pair<double, std::string>> Reports;
+    bool AbortInDelaunay = false;
+  };
+  auto record = [](vtkObject* caller, unsigned long, void* cd, void* data) {
+    auto* seen = static_cast<Seen*>(cd);
+    auto* algorithm = static_cast<vtkAlgorithm*>(caller);
+    const char* text = algorithm->GetProgressText();
+    const double f = *static_cast<double*>(data);
+    seen->Reports.emplace_back(f, text ? text : "");
+    if (seen->AbortInDelaunay && f > 0 && seen->Reports.back().second == "Delaunay triangulation")
+    {
+      algorithm->SetAbortExecute(1);
+    }
+  };
+  {
+    Seen seen;
+    vtkNew<vtkFlowComplex> large;
+    large->SetInputData(RandomCloud(70000, 3));
+    vtkNew<vtkCallbackCommand> observer;
+    observer->SetClientData(&seen);
+    observer->SetCallback(record);
+    large->AddObserver(vtkCommand::ProgressEvent, observer);
+    large->Update();
+    int delaunay = 0, vtkOutput = 0;
+    bool monotone = true;
+    for (std::size_t i = 0; i < seen.Reports.size(); ++i)
+    {
+      const auto& r = seen.Reports[i];
+      delaunay += (r.second == "Delaunay triangulation" && r.first > 0 && r.first < 0.2) ? 1 : 0;
+      vtkOutput += (r.second.rfind("VTK output", 0) == 0 && r.first > 0.8 && r.first < 1) ? 1 : 0;
+      monotone = monotone && (i == 0 || r.first >= seen.Reports[i - 1].first);
+      CHECK(r.first < 1 || i + 2 >= seen.Reports.size()); // 1 at the end only
+    }
+    std::cout << "progress: " << seen.Reports.size() << " reports, " << delaunay
+              << " inside the Delaunay phase, " << vtkOutput << " in the VTK output\n";
+    CHECK(delaunay >= 4);
+    CHECK(vtkOutput >= 2);
+    CHECK(monotone);
+    CHECK(large->GetOutput()->GetNumberOfBlocks() == 4);
+  }
+  {
+    // Abort inside the Delaunay phase: nothing after it runs.
+    Seen seen;
+    seen.AbortInDelaunay = true;
+    vtkNew<vtkFlowComplex> large;
+    large->SetInputData(RandomCloud(70000, 3));
+    vtkNew<vtkCallbackCommand> observer;
+    observer->SetClientData(&seen);
+    observer->SetCallback(record);
+    large->AddObserver(vtkCommand::ProgressEvent, observer);
+    large->Update();
+    bool later = false;
+    for (const auto& r : seen.Reports)
+      later = later || r.second == "critical points";
+    CHECK(!later);
+    CHECK(large->GetOutput()->GetNumberOfBlocks() == 0);
+  }
 
   return check::Finish("TestFlowComplexFilter");
 }
