@@ -77,6 +77,48 @@ tree                    5       (1, 0, 0)    a random branching tree (depth 5, 2
                                              curves, contractible; size = depth
 =======================  =====  ===========  ============================================
 
+Shapes added for the t_r / t_p study (``Data/tr_study.py``, issue #9 item 3).
+``_qu``: farthest points of 30x i.i.d. candidates as above; ``_pd``: a Poisson-disk
+(dart-throwing) subsample of 20x i.i.d. candidates (at most 10^7), quasi-uniform like
+``_qu`` but linear in the candidates, for 10^5-10^6 points (``poisson_disk``); ``_dv``:
+i.i.d. whose density grows linearly along x, 10 times from one side to the other
+(each point kept with probability (1 + 9 t) / 10, t = (x - xmin) / (xmax - xmin));
+``_dvqu``: a Poisson-disk sample with the same density (radius ~ density^(-1/2)),
+locally even. The Betti numbers of genus4 and of the thin tube were also checked on
+a voxelization of the solids (GUDHI cubical complex: (1, 4, 0) and (1, 1, 0)):
+
+=======================  =====  ===========  ============================================
+name                     size   (b0,b1,b2)   what
+=======================  =====  ===========  ============================================
+thin_tube, _qu           4000   (1, 2, 1)    thin-walled tube with rounded rims: the
+                                             offset at 0.05 of the cylinder rho = 0.95,
+                                             abs(z) <= 1 (walls rho = 0.9 and 1, half-torus
+                                             rims): wall 0.1 thick, smooth, a torus
+thin_plate, _qu          2000   (1, 0, 1)    thin round plate: the offset at 0.05 of the
+                                             unit disk of z = 0 (faces z = +-0.05, a
+                                             half-torus rim): 0.1 thick, a sphere
+genus4, _qu              4000   (1, 8, 1)    boundary of a row of 4 solid tori (R=1,
+                                             r=0.35, centres 2.4 apart on the x axis,
+                                             neighbours meeting in one lens like genus2,
+                                             the others disjoint): a genus-4 handlebody's
+                                             boundary
+sphere_dv, torus_dv      2000   as sphere,   density x10 along x (x from -1 to 1, from
+                                torus        -1.35 to 1.35), i.i.d.
+sphere_dvqu, torus_dvqu  2000   as sphere,   density x10 along x, Poisson disk
+                                torus
+sphere_pd, torus_pd,     2000,  as sphere,   Poisson-disk quasi-uniform samples
+thin_tube_pd             4000   torus,
+                                thin_tube
+lattice_shell              15   (1, 0, 1)    the integer points p with
+                                             abs(norm(p) - 15) < 0.5 (2 622 points);
+                                             size = the radius
+latlong_sphere             30   (1, 0, 1)    latitude-longitude lattice on the unit
+                                             sphere: 30 latitudes (no pole) x 60
+                                             longitudes; size = the latitudes
+plane_grid_jittered      1000   (1, 0, 0)    25 x 40 planar grid of spacing 1 in z = 0,
+                                             every coordinate moved by +-1e-12: a square
+=======================  =====  ===========  ============================================
+
 Command line::
 
     generate_clouds.py [OUTDIR] [--shapes NAME[,NAME...]] [--size NAME=N ...]
@@ -474,6 +516,273 @@ def tree(depth, rng, step=0.02):
     return np.vstack([root] + out)
 
 
+# --------------------------------------------------------------------------- study shapes
+# Shapes added for the t_r / t_p study (Data/tr_study.py, issue #9 item 3): thin parts,
+# a genus-4 surface, density-varying samples, Poisson-disk quasi-uniform samples (for
+# large n, where farthest_points is too slow) and regular lattices.
+
+
+def _cap_angles(m, rng, R, r, lo, hi):
+    """m angles v in [lo, hi] with density proportional to R + r cos v (the area
+    element of a torus of core radius R and tube radius r), by rejection."""
+    out, count = [], 0
+    while count < m:
+        k = 2 * (m - count) + 16
+        v = rng.uniform(lo, hi, k)
+        v = v[rng.uniform(0.0, 1.0, k) * (R + r) < R + r * np.cos(v)]
+        out.append(v)
+        count += len(v)
+    return np.concatenate(out)[:m]
+
+
+def thin_tube(n, rng, mid=0.95, half=0.05, height=1.0):
+    """Boundary of a thin-walled tube with rounded rims: the points at distance `half`
+    from the cylinder rho = mid, |z| <= height (its offset surface): the walls rho =
+    mid +- half (1 and 0.9) for |z| <= height, closed at z = +-height by half tori
+    (core circle rho = mid, tube radius half). The wall is 2 half = 0.1 thick, the
+    surface is smooth (C1) and is a torus, (1, 2, 1). Uniform w.r.t. area."""
+    areas = np.array([2.0 * math.pi * (mid + half) * 2.0 * height,   # outer wall
+                      2.0 * math.pi * (mid - half) * 2.0 * height,   # inner wall
+                      2.0 * math.pi ** 2 * mid * half,               # top half torus
+                      2.0 * math.pi ** 2 * mid * half])              # bottom half torus
+    which = rng.choice(4, size=n, p=areas / areas.sum())
+    u = rng.uniform(0.0, 2.0 * math.pi, n)
+    rho = np.empty(n)
+    z = np.empty(n)
+    for k, rk in ((0, mid + half), (1, mid - half)):
+        sel = which == k
+        rho[sel] = rk
+        z[sel] = rng.uniform(-height, height, int(sel.sum()))
+    for k, lo, zc in ((2, 0.0, height), (3, math.pi, -height)):
+        sel = which == k
+        v = _cap_angles(int(sel.sum()), rng, mid, half, lo, lo + math.pi)
+        rho[sel] = mid + half * np.cos(v)
+        z[sel] = zc + half * np.sin(v)
+    return np.column_stack((rho * np.cos(u), rho * np.sin(u), z))
+
+
+def thin_plate(n, rng, radius=1.0, half=0.05):
+    """Boundary of a thin round plate: the points at distance `half` from the unit
+    disk of the plane z = 0: the faces z = +-half (rho <= radius) and a half torus
+    rim (core circle rho = radius, tube radius half). 0.1 thick, smooth, a sphere
+    (1, 0, 1). Uniform w.r.t. area."""
+    areas = np.array([math.pi * radius ** 2, math.pi * radius ** 2,
+                      2.0 * math.pi * half * (math.pi * radius + 2.0 * half)])
+    which = rng.choice(3, size=n, p=areas / areas.sum())
+    u = rng.uniform(0.0, 2.0 * math.pi, n)
+    rho = np.empty(n)
+    z = np.empty(n)
+    for k, zk in ((0, half), (1, -half)):
+        sel = which == k
+        rho[sel] = radius * np.sqrt(rng.uniform(0.0, 1.0, int(sel.sum())))
+        z[sel] = zk
+    sel = which == 2
+    v = _cap_angles(int(sel.sum()), rng, radius, half, -0.5 * math.pi, 0.5 * math.pi)
+    rho[sel] = radius + half * np.cos(v)
+    z[sel] = half * np.sin(v)
+    return np.column_stack((rho * np.cos(u), rho * np.sin(u), z))
+
+
+def torus_row(n, rng, count, R=1.0, r=0.35, offset=1.2):
+    """Boundary of the union of `count` solid tori (R, r) in the plane z = 0 centred
+    at x = (i - (count - 1) / 2) 2 offset: neighbours meet in one lens (a ball) as in
+    genus2, tori two apart are disjoint (4 offset = 4.8 > 2 (R + r) = 2.7). Gluing
+    solid tori along balls in a chain gives a handlebody of genus `count`, whose
+    boundary has Betti numbers (1, 2 count, 1). Uniform w.r.t. area (every torus
+    drawn with probability 1 / count, the points inside a neighbour dropped)."""
+    xs = (np.arange(count) - 0.5 * (count - 1)) * 2.0 * offset
+    out, total = [], 0
+    while total < n:
+        m = 2 * (n - total) + 16
+        which = rng.integers(0, count, m)
+        p = torus(m, rng, R, r)
+        p[:, 0] += xs[which]
+        keep = np.ones(m, dtype=bool)
+        for i in range(count):
+            for j in (i - 1, i + 1):
+                if 0 <= j < count:
+                    sel = which == i
+                    keep[sel] &= ~_inside_solid_torus(p[sel], R, r, (xs[j], 0.0, 0.0))
+        out.append(p[keep])
+        total += int(keep.sum())
+    return np.vstack(out)[:n]
+
+
+def genus4(n, rng):
+    """A genus-4 surface: torus_row of 4 solid tori, (1, 8, 1)."""
+    return torus_row(n, rng, 4)
+
+
+thin_tube_qu = _qu(thin_tube)
+thin_plate_qu = _qu(thin_plate)
+genus4_qu = _qu(genus4)
+
+# density-varying i.i.d. samples
+
+DV_RATIO = 10.0
+
+
+def _accept_along_x(points, rng, xmin, xmax, ratio=DV_RATIO):
+    """Keep each point with the probability (1 + (ratio - 1) t) / ratio, t = (x - xmin)
+    / (xmax - xmin): the density grows linearly with x, ratio times from xmin to xmax."""
+    t = (points[:, 0] - xmin) / (xmax - xmin)
+    return points[rng.uniform(0.0, 1.0, len(points)) * ratio < 1.0 + (ratio - 1.0) * t]
+
+
+def _dv(func, xmin, xmax):
+    def sampler(n, rng):
+        out, count = [], 0
+        while count < n:
+            p = _accept_along_x(func(2 * (n - count) + 16, rng), rng, xmin, xmax)
+            out.append(p)
+            count += len(p)
+        return np.vstack(out)[:n]
+    sampler.__name__ = func.__name__ + "_dv"
+    sampler.__doc__ = ("i.i.d. sample of %s whose density grows linearly along x, %g times "
+                       "from x = %g to x = %g." % (func.__name__, DV_RATIO, xmin, xmax))
+    return sampler
+
+
+sphere_dv = _dv(sphere, -1.0, 1.0)
+torus_dv = _dv(torus, -1.35, 1.35)
+
+# Poisson-disk (quasi-uniform) samples: O(candidates), for large n
+
+PD_FACTOR = 20            # i.i.d. candidates per point ...
+PD_MAX_CANDIDATES = 10 ** 7   # ... but at most this many (10 per point at 10^6)
+
+
+def _greedy_disk(c, r2, cell, kept, grid, limit):
+    """One dart-throwing pass over the candidates c in their order: keep a candidate
+    when no kept point is closer than sqrt(r2) (r2 a number or one per candidate),
+    until `limit` points are kept. `grid` maps a cell (side `cell` >= the radius) to
+    its kept points, so 27 cells are looked at per candidate."""
+    lo = c.min(axis=0)
+    ijk = np.floor((c - lo) / cell).astype(np.int64) + 1
+    dims = ijk.max(axis=0) + 2
+    keys = ijk[:, 0] + dims[0] * (ijk[:, 1] + dims[1] * ijk[:, 2])
+    deltas = sorted(((dx, dy, dz) for dx in (-1, 0, 1) for dy in (-1, 0, 1) for dz in (-1, 0, 1)),
+                    key=lambda d: abs(d[0]) + abs(d[1]) + abs(d[2]))
+    offs = [int(dx + dims[0] * (dy + dims[1] * dz)) for dx, dy, dz in deltas]
+    get = grid.get
+    per_point = not np.isscalar(r2)
+    chunk = 200000
+    for s in range(0, len(c), chunk):
+        pts = c[s:s + chunk].tolist()
+        ks = keys[s:s + chunk].tolist()
+        rs = r2[s:s + chunk].tolist() if per_point else None
+        for j, (x, y, z) in enumerate(pts):
+            key = ks[j]
+            rr = rs[j] if per_point else r2
+            for d in offs:
+                cellpts = get(key + d)
+                if cellpts is not None:
+                    for (a, b, e) in cellpts:
+                        if (a - x) * (a - x) + (b - y) * (b - y) + (e - z) * (e - z) < rr:
+                            break
+                    else:
+                        continue
+                    break
+            else:
+                grid.setdefault(key, []).append((x, y, z))
+                kept.append(s + j)
+                if len(kept) >= limit:
+                    return
+
+
+def poisson_disk(candidates, n, measure, dim, weight=None):
+    """Exactly n of the candidates, about evenly spaced (a quasi-uniform sample, like
+    farthest_points but in time linear in the candidates: about 3 us each). A greedy
+    Poisson-disk (dart-throwing) pass keeps, in the candidates' (random) order, every
+    candidate with no kept point closer than a radius r; r is first guessed from the
+    `measure` (length, area or volume) of the `dim`-dimensional sampled set, then
+    rescaled until the pass keeps 95 % to 100 % of n; a second pass with the radius
+    0.85 r (0.85^2 r, ... if needed) adds the missing points, the first candidates that
+    fit, so they are spread all over. The kept points are >= 0.85 r apart and every
+    candidate is within r of one. `weight` (in (0, 1], one per candidate) scales the
+    radius by weight^(-1/dim): a density proportional to the weight (graded samples)."""
+    c = np.ascontiguousarray(candidates, dtype=float)
+    scale = np.ones(len(c)) if weight is None else np.asarray(weight, dtype=float) ** (-1.0 / dim)
+    effective = measure * float(np.mean(scale ** (-dim)))
+    r = (0.7 * effective / n) ** (1.0 / dim)  # maximal greedy packings: ~0.7 measure / r^dim
+    for _attempt in range(12):
+        kept, grid = [], {}
+        _greedy_disk(c, (r * scale) ** 2 if weight is not None else r * r,
+                     r * scale.max(), kept, grid, n + 1)
+        if 0.95 * n <= len(kept) <= n:
+            break
+        r *= (len(kept) / (0.98 * n)) ** (1.0 / dim)
+    else:
+        raise RuntimeError("poisson_disk: no radius keeps 95-100 %% of %d points" % n)
+    r2 = 0.85 * r
+    while len(kept) < n:
+        _greedy_disk(c, (r2 * scale) ** 2 if weight is not None else r2 * r2,
+                     r * scale.max(), kept, grid, n)
+        r2 *= 0.85
+    return c[np.asarray(kept, dtype=np.int64)]
+
+
+def _pd(func, measure, dim=2):
+    def sampler(n, rng):
+        m = min(PD_FACTOR * n, max(PD_MAX_CANDIDATES, n))
+        return poisson_disk(func(m, rng), n, measure, dim)
+    sampler.__name__ = func.__name__ + "_pd"
+    sampler.__doc__ = "Poisson-disk subsample of %s (quasi-uniform)." % func.__name__
+    return sampler
+
+
+def _dvqu(func, measure, xmin, xmax, dim=2):
+    def sampler(n, rng):
+        c = func(min(PD_FACTOR * n, max(PD_MAX_CANDIDATES, n)), rng)
+        t = (c[:, 0] - xmin) / (xmax - xmin)
+        return poisson_disk(c, n, measure, dim, (1.0 + (DV_RATIO - 1.0) * t) / DV_RATIO)
+    sampler.__name__ = func.__name__ + "_dvqu"
+    sampler.__doc__ = ("Graded Poisson-disk sample of %s: locally even, density growing "
+                       "linearly along x, %g times from x = %g to x = %g."
+                       % (func.__name__, DV_RATIO, xmin, xmax))
+    return sampler
+
+
+TORUS_AREA = 4.0 * math.pi ** 2 * 1.0 * 0.35
+THIN_TUBE_AREA = 2.0 * math.pi * 1.9 * 2.0 + 2.0 * (2.0 * math.pi ** 2 * 0.95 * 0.05)
+sphere_pd = _pd(sphere, 4.0 * math.pi)
+torus_pd = _pd(torus, TORUS_AREA)
+thin_tube_pd = _pd(thin_tube, THIN_TUBE_AREA)
+sphere_dvqu = _dvqu(sphere, 4.0 * math.pi, -1.0, 1.0)
+torus_dvqu = _dvqu(torus, TORUS_AREA, -1.35, 1.35)
+
+# regular lattices (degenerate on purpose: cospherical, cocircular, coplanar points)
+
+
+def lattice_shell(k, rng):
+    """The integer points p with | |p| - k | < 0.5 (no point is at 0.5 exactly): a
+    lattice sample of the sphere of radius k, (1, 0, 1); k = 15: 2 622 points."""
+    g = np.arange(-k - 1, k + 2, dtype=float)
+    p = np.stack(np.meshgrid(g, g, g, indexing="ij"), axis=-1).reshape(-1, 3)
+    return p[np.abs(np.linalg.norm(p, axis=1) - k) < 0.5]
+
+
+def latlong_sphere(k, rng):
+    """A latitude-longitude lattice on the unit sphere: k latitudes (polar angles
+    (i + 1/2) pi / k, no pole) times 2k longitudes (j pi / k), (1, 0, 1); every point
+    on one sphere, every ring and every isosceles trapezoid of neighbours cocircular."""
+    th = (np.arange(k) + 0.5) * math.pi / k
+    ph = np.arange(2 * k) * math.pi / k
+    T, P = np.meshgrid(th, ph, indexing="ij")
+    T, P = T.ravel(), P.ravel()
+    return np.column_stack((np.sin(T) * np.cos(P), np.sin(T) * np.sin(P), np.cos(T)))
+
+
+def plane_grid_jittered(n, rng, jitter=1e-12):
+    """n points of a planar a x (n / a) grid of spacing 1 (a the largest divisor of n
+    not above sqrt(n): 25 x 40 for 1000) in the plane z = 0, every coordinate moved
+    uniformly by +-1e-12: near-coplanar, a square (1, 0, 0)."""
+    a = max(d for d in range(1, int(math.isqrt(n)) + 1) if n % d == 0)
+    x, y = np.meshgrid(np.arange(n // a, dtype=float), np.arange(a, dtype=float), indexing="ij")
+    p = np.column_stack((x.ravel(), y.ravel(), np.zeros(n)))
+    return p + rng.uniform(-jitter, jitter, p.shape) if jitter else p
+
+
 # name -> (function(size, rng), default size, seed, (b0, b1, b2))
 SHAPES = {
     "sphere": (sphere, 2000, 101, (1, 0, 1)),
@@ -498,6 +807,23 @@ SHAPES = {
     "vase_qu": (vase_qu, 3000, 209, (1, 2, 0)),
     "plate3_qu": (plate3_qu, 8000, 210, (1, 6, 1)),
     "tree": (tree, 5, 211, (1, 0, 0)),
+    # added for Data/tr_study.py (issue #9 item 3; see the third table above)
+    "thin_tube": (thin_tube, 4000, 301, (1, 2, 1)),
+    "thin_tube_qu": (thin_tube_qu, 4000, 302, (1, 2, 1)),
+    "thin_plate": (thin_plate, 2000, 303, (1, 0, 1)),
+    "thin_plate_qu": (thin_plate_qu, 2000, 304, (1, 0, 1)),
+    "genus4": (genus4, 4000, 305, (1, 8, 1)),
+    "genus4_qu": (genus4_qu, 4000, 306, (1, 8, 1)),
+    "sphere_dv": (sphere_dv, 2000, 307, (1, 0, 1)),
+    "torus_dv": (torus_dv, 2000, 308, (1, 2, 1)),
+    "sphere_dvqu": (sphere_dvqu, 2000, 309, (1, 0, 1)),
+    "torus_dvqu": (torus_dvqu, 2000, 310, (1, 2, 1)),
+    "sphere_pd": (sphere_pd, 2000, 311, (1, 0, 1)),
+    "torus_pd": (torus_pd, 2000, 312, (1, 2, 1)),
+    "thin_tube_pd": (thin_tube_pd, 4000, 316, (1, 2, 1)),
+    "lattice_shell": (lattice_shell, 15, 313, (1, 0, 1)),
+    "latlong_sphere": (latlong_sphere, 30, 314, (1, 0, 1)),
+    "plane_grid_jittered": (plane_grid_jittered, 1000, 315, (1, 0, 0)),
 }
 
 
