@@ -8,7 +8,9 @@ numbers change for some t_r in [2, 2F) (what `flowrecon reconstruct
 instead. Prints a Markdown table (Data/EXPERIMENTS.md, "Under-sampling
 warnings").
 
-  /usr/bin/python3 Data/warning_study.py build/bin/flowrecon WORKDIR
+  /usr/bin/python3 Data/warning_study.py build/bin/flowrecon WORKDIR [T_R]
+
+T_R (default 2) evaluates another default t_r the same way.
 """
 import csv
 import os
@@ -20,6 +22,7 @@ import numpy as np
 import generate_clouds as gc
 
 FLOWRECON, WORK = sys.argv[1], sys.argv[2]
+TR = float(sys.argv[3]) if len(sys.argv) > 3 else 2.0
 WINDOWS = (1.03, 1.05, 1.1, 1.2)
 os.makedirs(WORK, exist_ok=True)
 runs = []
@@ -34,16 +37,16 @@ for name in STUDY:
         base = os.path.join(WORK, "%s_%d" % (name, seed))
         np.savetxt(base + ".xyz", gc.make(name, seed_offset=seed), fmt="%.17g")
         out = subprocess.run([FLOWRECON, "reconstruct", base + ".xyz", "-o", base + ".vtu",
-                              "--topology-profile", base + ".csv", "--warn-window", "1"],
+                              "--topology-profile", base + ".csv", "--warn-window", "1", "--tr", repr(TR)],
                              capture_output=True, text=True, check=True).stdout
         line = [l for l in out.splitlines() if l.startswith("Betti numbers: ")][0]
         betti = tuple(int(x) for x in line.split()[2:])
         with open(base + ".csv") as f:
             changes = [float(r["threshold"]) for r in csv.DictReader(f)][1:]
         right = betti == gc.betti(name)
-        print("%-24s seed %d: %s %s, nearest change above 2: %s" % (
-            name, seed, betti, "right" if right else "WRONG (truth %s)" % (gc.betti(name),),
-            min([t for t in changes if t >= 2], default="none")), file=sys.stderr)
+        print("%-24s seed %d: %s %s, nearest change above %g: %s" % (
+            name, seed, betti, "right" if right else "WRONG (truth %s)" % (gc.betti(name),), TR,
+            min([t for t in changes if t >= TR], default="none")), file=sys.stderr)
         runs.append((right, changes))
 
 print("| window | changes counted | right, no warning | right, warned (false alarm) "
@@ -51,8 +54,8 @@ print("| window | changes counted | right, no warning | right, warned (false ala
 print("|---|---|---:|---:|---:|---:|")
 for both in (False, True):
     for f in WINDOWS:
-        low = 2 / f if both else 2
-        flagged = [any(low <= t < 2 * f for t in changes) for _, changes in runs]
+        low = TR / f if both else TR
+        flagged = [any(low <= t < TR * f for t in changes) for _, changes in runs]
         count = lambda r, w: sum(1 for (right, _), fl in zip(runs, flagged) if right == r and fl == w)
         print("| %g | %s | %d | %d | %d | %d |" % (
             f, "[2/F, 2F)" if both else "[2, 2F)", count(True, False), count(True, True),

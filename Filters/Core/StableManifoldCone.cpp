@@ -1,25 +1,13 @@
 #include "StableManifoldCone.h"
 
+#include "PersistenceUnionFind.h"
+
 #include <algorithm>
 #include <numeric>
 #include <utility>
 
 namespace flowrecon
 {
-namespace
-{
-
-Id Find(std::vector<Id>& parent, Id x)
-{
-  while (parent[x] != x)
-  {
-    parent[x] = parent[parent[x]];
-    x = parent[x];
-  }
-  return x;
-}
-
-} // namespace
 
 Id AppendCone(Id apex, const std::vector<std::array<Id, 3>>& boundary,
   std::vector<Point3>& points, std::vector<std::array<Id, 4>>& tetrahedra)
@@ -47,7 +35,6 @@ Id AppendCone(Id apex, const std::vector<std::array<Id, 3>>& boundary,
   // stay joined: telling them from a boundary folded onto the edge needs the
   // side of each triangle the cell is on (README, known limits).
   std::vector<std::pair<Id, Id>> around; // (x, local triangle) for each edge (p, x)
-  std::vector<Id> parent;
   std::vector<std::vector<std::size_t>> sheets;
   std::vector<std::vector<std::size_t>> tetsOfTriangle; // filled at the first split
   for (std::size_t begin = 0; begin < corners.size();)
@@ -70,13 +57,13 @@ Id AppendCone(Id apex, const std::vector<std::array<Id, 3>>& boundary,
       }
     }
     std::sort(around.begin(), around.end());
-    parent.resize(end - begin);
-    std::iota(parent.begin(), parent.end(), Id(0));
+    ElderUnionFind sheet(end - begin);
     for (std::size_t i = 1; i < around.size(); ++i)
     {
       if (around[i].first == around[i - 1].first)
       {
-        parent[Find(parent, around[i].second)] = Find(parent, around[i - 1].second);
+        sheet.Merge(static_cast<std::int32_t>(around[i].second),
+          static_cast<std::int32_t>(around[i - 1].second));
       }
     }
     // Sheets in the order of their least triangle (corners are sorted by it).
@@ -84,7 +71,7 @@ Id AppendCone(Id apex, const std::vector<std::array<Id, 3>>& boundary,
     std::vector<Id> sheetOfRoot(end - begin, -1);
     for (std::size_t k = begin; k < end; ++k)
     {
-      const Id root = Find(parent, static_cast<Id>(k - begin));
+      const Id root = sheet.Find(static_cast<std::int32_t>(k - begin));
       if (sheetOfRoot[root] < 0)
       {
         sheetOfRoot[root] = static_cast<Id>(sheets.size());
