@@ -23,14 +23,7 @@ from paraview.modules.vtkRemotingViews import (  # noqa: E402
     vtkSMParaViewPipelineControllerWithRendering)
 
 PLUGIN, WORK = sys.argv[1:3]
-failures = []
-
-
-def check(condition, message):
-    if not condition:
-        failures.append(message)
-        print("FAIL " + message, flush=True)
-    return condition
+from checks import check, failures, finish  # noqa: E402,F401
 
 
 def picture(view, path):
@@ -106,7 +99,4 @@ def main():
 
 
 main()
-if failures:
-    print("FAIL: %d checks failed" % len(failures))
-    sys.exit(1)
-print("PASS")
+finish()

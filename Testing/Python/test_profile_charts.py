@@ -35,14 +35,7 @@ from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
 
 PLUGIN, FLOWRECON, WORK = sys.argv[1:4]
 TMAX = 4.0
-failures = []
-
-
-def check(condition, message):
-    if not condition:
-        failures.append(message)
-        print("FAIL " + message, flush=True)
-    return condition
+from checks import check, failures, finish  # noqa: E402,F401
 
 
 def cli(xyz, tr):
@@ -226,7 +219,4 @@ def main():
               np.unique(p["t_r"]), s["t_r"][~np.isnan(s["t_r"])], x[-1]))
 
 main()
-if failures:
-    print("FAIL: %d checks failed" % len(failures))
-    sys.exit(1)
-print("PASS")
+finish()
