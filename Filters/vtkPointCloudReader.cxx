@@ -1940,6 +1940,12 @@ void CheckXmlCounts(const std::string& file, int depth = 0)
       }
     }
     const bool isArray = name == "DataArray" || name == "Array";
+    if (isArray && type.empty())
+    {
+      // No type at all: vtkXMLReader dereferences a null array too (field data).
+      Fail(file, line,
+        "data array " + Quote(arrayName) + " has no type (corrupt or truncated file?)");
+    }
     // The connectivity of cells is sized by offsets (CheckCellOffsets).
     const auto sized = tuplesOf.find(section);
     if (isArray && arrayName != "connectivity" && arrayName != "faces" &&

@@ -761,6 +761,13 @@ void TestCorruptSizes()
   header(0, 0x7fffffff);
   ExpectError(Write("misnamed_array.vtp", text), 0, "cannot read VTK XML file");
 
+  // A data array without a type (the fuzzer's saved complex with 'typ="1"' in
+  // its field data): VTK 9.2 dereferences a null array; refused first.
+  text = Slurp(PathOf("offsets_lz4.vtp"));
+  const std::size_t untyped = text.find("<DataArray type=\"");
+  text.replace(untyped, 16, "<DataArray typ=");
+  ExpectError(Write("untyped_array.vtp", text), LineOf(text, untyped), "has no type");
+
   // An attribute in single quotes or with spaces around '=' escapes the text
   // scan, not the check of the parsed file.
   text = Slurp(PathOf("lz4.vtp"));
