@@ -1842,7 +1842,8 @@ void CheckXmlCounts(const std::string& file, int depth = 0)
     for (std::size_t eq = 0; (eq = element.find("=\"", eq)) != std::string_view::npos; eq += 2)
     {
       std::size_t start = eq;
-      while (start > 0 && std::isalpha(static_cast<unsigned char>(element[start - 1])))
+      while (start > 0 &&
+        (std::isalpha(static_cast<unsigned char>(element[start - 1])) || element[start - 1] == '_'))
       {
         --start;
       }
@@ -1880,6 +1881,22 @@ void CheckXmlCounts(const std::string& file, int depth = 0)
           const std::string_view kind = attribute.substr(8);
           tuplesOf[std::string(kind)] = count;
           tuplesOf[kind == "Points" ? "PointData" : "CellData"] += count;
+        }
+      }
+      else if (attribute == "type" && name == "VTKFile")
+      {
+        // The types of the extensions we read. Others reach readers that do not
+        // exist in VTK 9.2 (vtkNonOverlappingAMR: the data object leaks) or hold
+        // no points.
+        static const char* const types[] = { "PolyData", "UnstructuredGrid", "StructuredGrid",
+          "RectilinearGrid", "ImageData", "PPolyData", "PUnstructuredGrid", "PStructuredGrid",
+          "PRectilinearGrid", "PImageData", "vtkMultiBlockDataSet", "vtkOverlappingAMR",
+          "vtkHierarchicalBoxDataSet" };
+        if (std::find(std::begin(types), std::end(types), value) == std::end(types))
+        {
+          Fail(file, line,
+            "unsupported VTK XML file type " + Quote(value) +
+              " (expected a dataset with points or a multiblock of them)");
         }
       }
       else if ((attribute == "type" && (name == "DataArray" || name == "Array")) ||

@@ -570,6 +570,10 @@ void TestVtkWrittenFiles()
   Corrupt("written_raw.vtp", "corrupt_type.vtp", "type=\"Float64\"", "type=\"Int6-1\"",
     "implausible type='Int6-1'");
   Corrupt("written.vtm", "corrupt_index.vtm", "index=\"1\"", "index=\"-1\"", "implausible index");
+  // A file type VTK 9.2 has no XML reader for (the fuzzer's saved complex
+  // whose .vtm said vtkNonOverlappingAMR): the data object it made leaked.
+  Corrupt("written.vtm", "corrupt_file_type.vtm", "type=\"vtkMultiBlockDataSet\"",
+    "type=\"vtkNonOverlappingAMR\"", "unsupported VTK XML file type 'vtkNonOverlappingAMR'");
   Corrupt("written.vtk", "corrupt_count.vtk", "POLYGONS 2 3", "POLYGONS 2 -3", "invalid count");
 }
 
