@@ -371,6 +371,9 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
   // Unstable manifolds: the two flow lines of each index-2 point.
   t = Clock::now();
   std::vector<std::array<std::int32_t, 2>> ends(cs.Facets.size()); // maxima reached
+  // Which of ends[i] the normals of patch i face (PatchFacesSide, after the
+  // reordering of the sides below): the cones need the side of each patch.
+  std::vector<char> patchFaces(this->Options.StableManifolds ? cs.Facets.size() : 0, 0);
   fc.FlowLines.clear();
   {
     std::vector<std::int32_t> maximumOfCell(static_cast<std::size_t>(tri->NumberOfCells()), -1);
@@ -401,6 +404,10 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
         if (k1 < k0)
         {
           std::swap(sides[0], sides[1]);
+        }
+        if (!patchFaces.empty())
+        {
+          patchFaces[i] = static_cast<char>(PatchFacesSide(*tri, cs, i) ^ (k1 < k0 ? 1 : 0));
         }
       }
       Point3 centre{ { 0, 0, 0 } };
@@ -616,19 +623,21 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
         boundary[fill[arc.Upper - base3]++] = arc.Lower - base2;
       }
     }
-    std::vector<std::array<Id, 3>> coneBoundary;
+    ConeBoundary coneBoundary;
     for (std::size_t i = 0; i < cs.Cells.size(); ++i)
     {
       const Id node = base3 + static_cast<Id>(i);
-      coneBoundary.clear();
+      coneBoundary.Clear();
       for (Id b = boundaryBegin[i]; b < boundaryBegin[i + 1]; ++b)
       {
         const std::size_t f = static_cast<std::size_t>(boundary[b]);
-        coneBoundary.insert(coneBoundary.end(), fc.Triangles.begin() + triangleBegin[f],
-          fc.Triangles.begin() + triangleBegin[f + 1]);
+        const bool fin = ends[f][0] == ends[f][1];
+        coneBoundary.Add(fc.Triangles.data() + triangleBegin[f],
+          fc.Triangles.data() + triangleBegin[f + 1], !fin && ends[f][patchFaces[f]] != node, fin);
       }
       fc.TetrahedronNode.insert(fc.TetrahedronNode.end(),
-        static_cast<std::size_t>(AppendCone(fc.NodePoint[node], coneBoundary, fc.Points, fc.Tetrahedra)),
+        static_cast<std::size_t>(AppendCone(fc.NodePoint[node], coneBoundary.Triangles, fc.Points,
+          fc.Tetrahedra, &coneBoundary.TwoSided)),
         node);
     }
   }

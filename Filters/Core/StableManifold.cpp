@@ -22,6 +22,7 @@ struct Item
   Id ZRef;         // its vertex reference in the patch
   Id U, V, W;
   CellHandle Hint; // a cell containing u, v and w
+  bool Flip;       // the patch's orientation is (v, z, u) here, not (u, z, v)
 };
 
 template <class FT>
@@ -31,9 +32,9 @@ Patch Walk(const Triangulation& tri, const CriticalSimplices& cs, const std::arr
   Patch patch;
   std::vector<EdgePoint<FT>> points{ EdgePoint<FT>{ f, FT(0) } }; // c = c_f
   std::deque<Item<FT>> queue;
-  queue.push_back({ points[0], -1, f[0], f[1], f[2], cell });
-  queue.push_back({ points[0], -1, f[1], f[2], f[0], cell });
-  queue.push_back({ points[0], -1, f[2], f[0], f[1], cell });
+  queue.push_back({ points[0], -1, f[0], f[1], f[2], cell, false });
+  queue.push_back({ points[0], -1, f[1], f[2], f[0], cell, false });
+  queue.push_back({ points[0], -1, f[2], f[0], f[1], cell, false });
   std::vector<Id> excluded(1);
   std::size_t items = 0;
   while (!queue.empty())
@@ -52,7 +53,8 @@ Patch Walk(const Triangulation& tri, const CriticalSimplices& cs, const std::arr
       patch.Arrivals.push_back(edge);
       if (withGeometry)
       {
-        patch.Triangles.push_back({ { it.U, it.ZRef, it.V } });
+        patch.Triangles.push_back(
+          it.Flip ? std::array<Id, 3>{ { it.V, it.ZRef, it.U } } : std::array<Id, 3>{ { it.U, it.ZRef, it.V } });
       }
       continue;
     }
@@ -69,12 +71,22 @@ Patch Walk(const Triangulation& tri, const CriticalSimplices& cs, const std::arr
     points.push_back(y);
     if (withGeometry)
     {
-      patch.Triangles.push_back({ { it.U, it.ZRef, yRef } });
-      patch.Triangles.push_back({ { it.V, it.ZRef, yRef } });
+      // (u, z, v) = (u, z, y) + (y, z, v), with the orientation of (u, z, v).
+      if (it.Flip)
+      {
+        patch.Triangles.push_back({ { yRef, it.ZRef, it.U } });
+        patch.Triangles.push_back({ { it.V, it.ZRef, yRef } });
+      }
+      else
+      {
+        patch.Triangles.push_back({ { it.U, it.ZRef, yRef } });
+        patch.Triangles.push_back({ { yRef, it.ZRef, it.V } });
+      }
     }
-    // Both V(u s) and V(v s) flow into y (uvs is obtuse at s): two branches.
-    queue.push_back({ y, yRef, it.U, s, it.V, exitCell });
-    queue.push_back({ y, yRef, it.V, s, it.U, exitCell });
+    // Both V(u s) and V(v s) flow into y (uvs is obtuse at s): two branches,
+    // (u, y, s) with the orientation of (u, z, y) and (v, y, s) against it.
+    queue.push_back({ y, yRef, it.U, s, it.V, exitCell, it.Flip });
+    queue.push_back({ y, yRef, it.V, s, it.U, exitCell, !it.Flip });
   }
   if (withGeometry)
   {
@@ -98,6 +110,17 @@ Patch ComputeStableManifold(const Triangulation& tri, const CriticalSimplices& c
         tri, cs, Widen(cs.Facets[facet].Vertices), tri.Cell(cs.Facets[facet].Cell), withGeometry);
     },
     fallbacks);
+}
+
+int PatchFacesSide(const Triangulation& tri, const CriticalSimplices& cs, std::size_t facet)
+{
+  // The first triangles are (f0, c, f1)... with c inside the acute facet: the
+  // reverse of (f0, f1, f2), so their normals face the negative side of it.
+  const CriticalFacet& f = cs.Facets[facet];
+  const CellHandle cell = tri.Cell(f.Cell);
+  const CGAL::Orientation o = CGAL::orientation(tri.KCoord(f.Vertices[0]), tri.KCoord(f.Vertices[1]),
+    tri.KCoord(f.Vertices[2]), cell->vertex(f.Opposite)->point());
+  return o == CGAL::NEGATIVE ? 0 : 1;
 }
 
 } // namespace flowrecon

@@ -15,6 +15,8 @@ struct Patch
   /// Constructed vertices; [0] is the critical point c_f.
   std::vector<Point3> Constructed;
   /// Triangles; a vertex v >= 0 is a triangulation vertex, v < 0 is Constructed[-1 - v].
+  /// They are oriented consistently (neighbours run through a shared edge in
+  /// opposite directions), so that the patch has a side: see PatchFacesSide.
   std::vector<std::array<Id, 3>> Triangles;
   /// Positions in CriticalSimplices::Edges of the Gabriel edges reached, one per arrival.
   std::vector<Id> Arrivals;
@@ -25,6 +27,13 @@ struct Patch
 /// `fallbacks` counts walks redone in exact arithmetic.
 Patch ComputeStableManifold(const Triangulation& tri, const CriticalSimplices& cs,
   std::size_t facet, bool withGeometry, Id& fallbacks);
+
+/// The side of the critical facet cs.Facets[facet] that the normals of its
+/// patch's triangles ((b - a) x (c - a)) face: 0 toward the vertex opposite the
+/// facet in cs.Facets[facet].Cell, 1 toward the other cell. (The flow line from
+/// the critical point through side s reaches the maximum SuccessorForest gives
+/// for that cell.) Exact.
+int PatchFacesSide(const Triangulation& tri, const CriticalSimplices& cs, std::size_t facet);
 
 } // namespace flowrecon
 

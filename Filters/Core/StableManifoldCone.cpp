@@ -3,14 +3,116 @@
 #include "PersistenceUnionFind.h"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 #include <utility>
 
 namespace flowrecon
 {
 
+namespace
+{
+
+Point3 Minus(const Point3& a, const Point3& b)
+{
+  return { { a[0] - b[0], a[1] - b[1], a[2] - b[2] } };
+}
+
+Point3 Cross(const Point3& a, const Point3& b)
+{
+  return { { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] } };
+}
+
+double Dot(const Point3& a, const Point3& b)
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+} // namespace
+
+std::vector<std::size_t> SheetsAroundEdge(const std::vector<Point3>& points,
+  const std::vector<std::array<Id, 3>>& boundary, const std::vector<char>* twoSided, Id p, Id x,
+  const std::vector<std::size_t>& triangles)
+{
+  const std::size_t r = triangles.size();
+  // A frame (u, v) of the plane normal to the edge, with u x v along it.
+  const Point3 axis = Minus(points[x], points[p]);
+  const int small = std::abs(axis[0]) <= std::abs(axis[1])
+    ? (std::abs(axis[0]) <= std::abs(axis[2]) ? 0 : 2)
+    : (std::abs(axis[1]) <= std::abs(axis[2]) ? 1 : 2);
+  Point3 e{ { 0, 0, 0 } };
+  e[small] = 1;
+  const Point3 u = Cross(axis, e), v = Cross(axis, u);
+  struct Side
+  {
+    double Angle;
+    int Claims; // 1: the wedge after it (counterclockwise), 2: the one before, 3: both
+    std::size_t Position;
+  };
+  std::vector<Side> sides;
+  sides.reserve(r);
+  for (std::size_t k = 0; k < r; ++k)
+  {
+    const std::array<Id, 3>& t = boundary[triangles[k]];
+    Id y = -1;
+    for (const Id w : t)
+    {
+      y = w != p && w != x ? w : y;
+    }
+    if (y < 0)
+    {
+      return {}; // a degenerate triangle
+    }
+    const Point3 d = Minus(points[y], points[p]);
+    const double du = Dot(d, u), dv = Dot(d, v);
+    // Counterclockwise at d (about the axis): u x v turns u into v.
+    Point3 ahead;
+    for (int j = 0; j < 3; ++j)
+    {
+      ahead[j] = du * v[j] - dv * u[j];
+    }
+    const double facing =
+      Dot(Cross(Minus(points[t[1]], points[t[0]]), Minus(points[t[2]], points[t[0]])), ahead);
+    const bool both = twoSided && (*twoSided)[triangles[k]];
+    if (!(facing != 0) && !both)
+    {
+      return {};
+    }
+    sides.push_back({ std::atan2(dv, du), both ? 3 : (facing > 0 ? 1 : 2), k });
+  }
+  std::sort(sides.begin(), sides.end(), [](const Side& a, const Side& b) {
+    return a.Angle < b.Angle || (a.Angle == b.Angle && a.Position < b.Position);
+  });
+  ElderUnionFind sheet(r);
+  for (std::size_t i = 0; i < r; ++i)
+  {
+    const Side& a = sides[i];
+    const Side& b = sides[(i + 1) % r];
+    if (a.Angle == b.Angle && r > 1)
+    {
+      return {}; // two patches in one half-plane: no wedge between them
+    }
+    const bool fromA = (a.Claims & 1) != 0, fromB = (b.Claims & 2) != 0;
+    if (fromA != fromB)
+    {
+      return {};
+    }
+    if (fromA)
+    {
+      sheet.Merge(static_cast<std::int32_t>(a.Position), static_cast<std::int32_t>(b.Position));
+    }
+  }
+  std::vector<std::size_t> first(r);
+  for (std::size_t k = 0; k < r; ++k)
+  {
+    first[k] = static_cast<std::size_t>(sheet.Find(static_cast<std::int32_t>(k)));
+  }
+  return first;
+}
+
 Id AppendCone(Id apex, const std::vector<std::array<Id, 3>>& boundary,
-  std::vector<Point3>& points, std::vector<std::array<Id, 4>>& tetrahedra)
+  std::vector<Point3>& points, std::vector<std::array<Id, 4>>& tetrahedra,
+  const std::vector<char>* twoSided)
 {
   const std::size_t first = tetrahedra.size();
   for (const auto& t : boundary)
@@ -31,10 +133,10 @@ Id AppendCone(Id apex, const std::vector<std::array<Id, 3>>& boundary,
   std::sort(corners.begin(), corners.end());
 
   // The sheets at p: its triangles joined through their edges (p, x), that is
-  // the components of p's link. Two sheets pinched along a whole edge (p, x)
-  // stay joined: telling them from a boundary folded onto the edge needs the
-  // side of each triangle the cell is on (README, known limits).
+  // the components of p's link; where more than two triangles share an edge
+  // (p, x), only those of one sheet around it are joined.
   std::vector<std::pair<Id, Id>> around; // (x, local triangle) for each edge (p, x)
+  std::vector<std::size_t> shared;
   std::vector<std::vector<std::size_t>> sheets;
   std::vector<std::vector<std::size_t>> tetsOfTriangle; // filled at the first split
   for (std::size_t begin = 0; begin < corners.size();)
@@ -58,13 +160,30 @@ Id AppendCone(Id apex, const std::vector<std::array<Id, 3>>& boundary,
     }
     std::sort(around.begin(), around.end());
     ElderUnionFind sheet(end - begin);
-    for (std::size_t i = 1; i < around.size(); ++i)
+    for (std::size_t i = 0; i < around.size();)
     {
-      if (around[i].first == around[i - 1].first)
+      std::size_t j = i + 1;
+      while (j < around.size() && around[j].first == around[i].first)
       {
-        sheet.Merge(static_cast<std::int32_t>(around[i].second),
-          static_cast<std::int32_t>(around[i - 1].second));
+        ++j;
       }
+      std::vector<std::size_t> first;
+      if (j - i > 2)
+      {
+        shared.clear();
+        for (std::size_t k = i; k < j; ++k)
+        {
+          shared.push_back(static_cast<std::size_t>(corners[begin + around[k].second].second));
+        }
+        first = SheetsAroundEdge(points, boundary, twoSided, p, around[i].first, shared);
+      }
+      for (std::size_t k = i + 1; k < j; ++k)
+      {
+        const std::size_t other = first.empty() ? i : i + first[k - i];
+        sheet.Merge(static_cast<std::int32_t>(around[k].second),
+          static_cast<std::int32_t>(around[other].second));
+      }
+      i = j;
     }
     // Sheets in the order of their least triangle (corners are sorted by it).
     sheets.clear();

@@ -25,10 +25,57 @@ namespace flowrecon
 /// every component but the first, the segment from the apex to the pinched point
 /// gets a point of its own (a stellar subdivision of that edge in the tetrahedra
 /// of that component), and the sheets meet at the sample only.
+///
+/// A cell can also meet itself along an edge (a Gabriel edge where several of
+/// its boundary patches arrive): the triangles around that edge then belong to
+/// several sheets, and which ones pair up depends on the side of each triangle
+/// the cell is on. So `boundary` is oriented: the normal (b - a) x (c - a) of
+/// each triangle faces into the cell, except for the triangles marked in
+/// `twoSided` (a fin: the cell on both sides), whose orientation is free.
+/// Around such an edge the triangles are paired through the wedges of the cell
+/// (SheetsAroundEdge); if the geometry does not tell, they stay one sheet.
 /// Returns the number of tetrahedra appended: boundary.size() when nothing is
 /// pinched, more otherwise.
 Id AppendCone(Id apex, const std::vector<std::array<Id, 3>>& boundary,
-  std::vector<Point3>& points, std::vector<std::array<Id, 4>>& tetrahedra);
+  std::vector<Point3>& points, std::vector<std::array<Id, 4>>& tetrahedra,
+  const std::vector<char>* twoSided = nullptr);
+
+/// The boundary of a cone, as AppendCone takes it, gathered patch by patch.
+struct ConeBoundary
+{
+  std::vector<std::array<Id, 3>> Triangles;
+  std::vector<char> TwoSided;
+
+  void Clear()
+  {
+    this->Triangles.clear();
+    this->TwoSided.clear();
+  }
+  /// Adds the triangles [first, last) of a patch (oriented consistently, as
+  /// Patch::Triangles), reversed when their normals face away from the cell,
+  /// two-sided when the patch is a fin of the cell.
+  void Add(const std::array<Id, 3>* first, const std::array<Id, 3>* last, bool reverse, bool fin)
+  {
+    for (; first != last; ++first)
+    {
+      const std::array<Id, 3>& t = *first;
+      this->Triangles.push_back(reverse ? std::array<Id, 3>{ { t[0], t[2], t[1] } } : t);
+      this->TwoSided.push_back(fin ? 1 : 0);
+    }
+  }
+};
+
+/// The sheets of a cell around the edge (p, x) that `triangles` (positions into
+/// `boundary`, each holding p and x, oriented as for AppendCone) share: sorted
+/// by angle around the edge, two consecutive triangles are in one sheet when
+/// the wedge between them is inside the cell, that is when the first faces
+/// forward into it and the second back. Returns, for each triangle, the first
+/// triangle of its sheet (its position in `triangles`), or an empty vector when
+/// the triangles do not bound wedges consistently (coinciding half-planes, or a
+/// wedge claimed from one side only).
+std::vector<std::size_t> SheetsAroundEdge(const std::vector<Point3>& points,
+  const std::vector<std::array<Id, 3>>& boundary, const std::vector<char>* twoSided, Id p, Id x,
+  const std::vector<std::size_t>& triangles);
 
 } // namespace flowrecon
 

@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 
 namespace flowrecon
@@ -193,6 +194,33 @@ void DrawStableManifolds(const std::vector<Point3>& points, const BuildOptions& 
     drawPatch[f] = 1;
   }
   std::vector<char> walk(drawPatch);
+  // The maxima the two flow lines of each boundary facet reach (side 0: its
+  // cell, side 1: the neighbour): the side of each patch the cell is on.
+  std::vector<std::array<std::int32_t, 2>> ends;
+  std::vector<std::int32_t> maximumOfCell;
+  if (!cones.empty())
+  {
+    maximumOfCell.assign(static_cast<std::size_t>(tri.NumberOfCells()), -1);
+    for (Id i = 0; i < nCells; ++i)
+    {
+      maximumOfCell[cs.Cells[i].Cell] = static_cast<std::int32_t>(base3 + i);
+    }
+    ends.assign(static_cast<std::size_t>(nFacets), { { -1, -1 } });
+  }
+  std::optional<SuccessorForest> forest;
+  if (!cones.empty())
+  {
+    forest.emplace(tri, maximumOfCell, fc.InfinityNode, 0, false);
+  }
+  auto endsOf = [&](Id i) {
+    const CellHandle cell = tri.Cell(cs.Facets[i].Cell);
+    const CellHandle sides[2] = { cell, cell->neighbor(cs.Facets[i].Opposite) };
+    for (int s = 0; s < 2; ++s)
+    {
+      ends[i][s] = static_cast<std::int32_t>(
+        tri.Dt().is_infinite(sides[s]) ? fc.InfinityNode : forest->Root(tri.CellId(sides[s])));
+    }
+  };
   if (!cones.empty() && unsimplifiedArcs)
   {
     std::vector<std::int32_t> coneOf(static_cast<std::size_t>(nCells), -1);
@@ -209,33 +237,34 @@ void DrawStableManifolds(const std::vector<Point3>& points, const BuildOptions& 
         walk[a.Lower - base2] = 1;
       }
     }
+    std::vector<Id> boundaryFacets;
+    for (const std::vector<Id>& b : boundary)
+    {
+      boundaryFacets.insert(boundaryFacets.end(), b.begin(), b.end());
+    }
+    std::sort(boundaryFacets.begin(), boundaryFacets.end());
+    boundaryFacets.erase(
+      std::unique(boundaryFacets.begin(), boundaryFacets.end()), boundaryFacets.end());
+    ParallelSlices(static_cast<Id>(boundaryFacets.size()), Id(1) << 17, progress, 0.35, 0.45,
+      "boundaries of maxima", [&](Id first, Id last) {
+        for (Id k = first; k < last; ++k)
+        {
+          endsOf(boundaryFacets[k]);
+        }
+      });
   }
   else if (!cones.empty())
   {
-    std::vector<std::int32_t> maximumOfCell(static_cast<std::size_t>(tri.NumberOfCells()), -1);
     std::vector<std::int32_t> coneOf(static_cast<std::size_t>(nCells), -1);
-    for (Id i = 0; i < nCells; ++i)
-    {
-      maximumOfCell[cs.Cells[i].Cell] = static_cast<std::int32_t>(base3 + i);
-    }
     for (std::size_t k = 0; k < cones.size(); ++k)
     {
       coneOf[cones[k]] = static_cast<std::int32_t>(k);
     }
-    SuccessorForest forest(tri, maximumOfCell, fc.InfinityNode, 0, false);
-    std::vector<std::array<std::int32_t, 2>> ends(static_cast<std::size_t>(nFacets));
     ParallelSlices(nFacets, Id(1) << 17, progress, 0.35, 0.45, "boundaries of maxima",
       [&](Id first, Id last) {
         for (Id i = first; i < last; ++i)
         {
-          const CellHandle cell = tri.Cell(cs.Facets[i].Cell);
-          const CellHandle sides[2] = { cell, cell->neighbor(cs.Facets[i].Opposite) };
-          for (int s = 0; s < 2; ++s)
-          {
-            ends[i][s] = static_cast<std::int32_t>(tri.Dt().is_infinite(sides[s])
-                ? fc.InfinityNode
-                : forest.Root(tri.CellId(sides[s])));
-          }
+          endsOf(i);
         }
       });
     for (Id i = 0; i < nFacets; ++i)
@@ -335,7 +364,7 @@ void DrawStableManifolds(const std::vector<Point3>& points, const BuildOptions& 
   fc.Report.ExactFallbacks += fallbacks;
 
   progress(0.95, "index-3 cones");
-  std::vector<std::array<Id, 3>> coneBoundary;
+  ConeBoundary coneBoundary;
   for (std::size_t k = 0; k < cones.size(); ++k)
   {
     const Id node = base3 + cones[k];
@@ -348,14 +377,18 @@ void DrawStableManifolds(const std::vector<Point3>& points, const BuildOptions& 
     const Id apex = static_cast<Id>(fc.Points.size());
     fc.NodePoint[node] = apex;
     fc.Points.push_back(fc.Nodes[node].Location);
-    coneBoundary.clear();
+    coneBoundary.Clear();
     for (const Id f : boundary[k])
     {
-      coneBoundary.insert(coneBoundary.end(), walked.begin() + patchBegin[f],
-        walked.begin() + patchEnd[f]);
+      const bool fin = ends[f][0] == ends[f][1];
+      const int faces = PatchFacesSide(tri, cs, static_cast<std::size_t>(f));
+      coneBoundary.Add(walked.data() + patchBegin[f], walked.data() + patchEnd[f],
+        !fin && ends[f][faces] != node, fin);
     }
     fc.TetrahedronNode.insert(fc.TetrahedronNode.end(),
-      static_cast<std::size_t>(AppendCone(apex, coneBoundary, fc.Points, fc.Tetrahedra)), node);
+      static_cast<std::size_t>(AppendCone(
+        apex, coneBoundary.Triangles, fc.Points, fc.Tetrahedra, &coneBoundary.TwoSided)),
+      node);
   }
   progress(1.0, "stable manifolds");
 }

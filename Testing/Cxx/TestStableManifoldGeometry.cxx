@@ -62,19 +62,27 @@ void TestCloud(const std::string& name, const std::vector<Point3>& points)
   const FlowComplex eager = BuildFlowComplex(points, eagerOptions, Progress());
   const auto eagerCells = CellsByNode(eager);
 
-  // Counts from the diagram alone = the eager walks' counts.
+  // Counts from the diagram alone = the eager walks' counts, except that a cone
+  // split where its cell meets itself has a few tetrahedra more (extra).
   const std::vector<Id> counts = StableManifoldCellCounts(eager.Nodes, eager.Arcs);
-  Id total = 0, wrong = 0;
+  std::vector<Id> extra(eager.Nodes.size(), 0);
+  Id total = 0, wrong = 0, extraTotal = 0;
   for (std::size_t i = 0; i < eager.Nodes.size(); ++i)
   {
     const auto it = eagerCells.find(static_cast<Id>(i));
     const Id actual = it == eagerCells.end() ? 0 : static_cast<Id>(it->second.size());
-    wrong += (!eager.Nodes[i].IsInfinity() && actual != counts[i]) ? 1 : 0;
-    total += eager.Nodes[i].IsInfinity() ? 0 : counts[i];
+    if (eager.Nodes[i].IsInfinity())
+    {
+      continue;
+    }
+    extra[i] = actual - counts[i];
+    wrong += (eager.Nodes[i].Index == 3 ? extra[i] < 0 : extra[i] != 0) ? 1 : 0;
+    total += counts[i];
+    extraTotal += extra[i];
   }
   CHECK(wrong == 0);
-  CHECK(total == static_cast<Id>(eager.Triangles.size() + eager.Tetrahedra.size()));
-  CHECK(total > 0);
+  CHECK(total + extraTotal == static_cast<Id>(eager.Triangles.size() + eager.Tetrahedra.size()));
+  CHECK(total > 0 && extraTotal <= total / 20);
 
   BuildOptions hasseOptions = eagerOptions;
   hasseOptions.StableManifolds = false;
@@ -110,13 +118,14 @@ void TestCloud(const std::string& name, const std::vector<Point3>& points)
   budgetOptions.MaximumGeometryCells = total / 2;
   const FlowComplex budget = BuildFlowComplex(points, budgetOptions, Progress());
   const auto budgetCells = CellsByNode(budget);
-  Id drawnCells = 0;
+  Id drawnCells = 0, drawnExtra = 0;
   for (const auto& entry : budgetCells)
   {
     CHECK(entry.second == eagerCells.at(entry.first));
     drawnCells += static_cast<Id>(entry.second.size());
+    drawnExtra += extra[entry.first];
   }
-  CHECK(drawnCells <= total / 2);
+  CHECK(drawnCells - drawnExtra <= total / 2);
   std::vector<Id> order;
   for (std::size_t i = 0; i < eager.Nodes.size(); ++i)
   {
@@ -140,7 +149,7 @@ void TestCloud(const std::string& name, const std::vector<Point3>& points)
     prefix = prefix && (drawn == fits || (counts[node] == 0 && fits));
   }
   CHECK(prefix);
-  CHECK(used == drawnCells);
+  CHECK(used == drawnCells - drawnExtra);
 
   // Not the points of this complex: refused, not silently wrong.
   std::vector<Point3> moved = points;
