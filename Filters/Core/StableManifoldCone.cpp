@@ -35,8 +35,35 @@ std::vector<std::size_t> SheetsAroundEdge(const std::vector<Point3>& points,
   const std::vector<std::size_t>& triangles)
 {
   const std::size_t r = triangles.size();
+  // Coordinates relative to p, scaled by a power of two to about 1: products
+  // of up to seven of them neither overflow nor underflow, and a cloud scaled
+  // by 2^k gives exactly the same answer.
+  double largest = 0;
+  for (const std::size_t t : triangles)
+  {
+    for (const Id w : boundary[t])
+    {
+      for (int j = 0; j < 3; ++j)
+      {
+        largest = std::max(largest, std::abs(points[w][j] - points[p][j]));
+      }
+    }
+  }
+  if (!(largest > 0) || !std::isfinite(largest))
+  {
+    return {};
+  }
+  const int exponent = std::ilogb(largest);
+  const auto at = [&](Id w) {
+    Point3 d = Minus(points[w], points[p]);
+    for (double& c : d)
+    {
+      c = std::ldexp(c, -exponent);
+    }
+    return d;
+  };
   // A frame (u, v) of the plane normal to the edge, with u x v along it.
-  const Point3 axis = Minus(points[x], points[p]);
+  const Point3 axis = at(x);
   const int small = std::abs(axis[0]) <= std::abs(axis[1])
     ? (std::abs(axis[0]) <= std::abs(axis[2]) ? 0 : 2)
     : (std::abs(axis[1]) <= std::abs(axis[2]) ? 1 : 2);
@@ -63,7 +90,7 @@ std::vector<std::size_t> SheetsAroundEdge(const std::vector<Point3>& points,
     {
       return {}; // a degenerate triangle
     }
-    const Point3 d = Minus(points[y], points[p]);
+    const Point3 d = at(y);
     const double du = Dot(d, u), dv = Dot(d, v);
     // Counterclockwise at d (about the axis): u x v turns u into v.
     Point3 ahead;
@@ -72,7 +99,7 @@ std::vector<std::size_t> SheetsAroundEdge(const std::vector<Point3>& points,
       ahead[j] = du * v[j] - dv * u[j];
     }
     const double facing =
-      Dot(Cross(Minus(points[t[1]], points[t[0]]), Minus(points[t[2]], points[t[0]])), ahead);
+      Dot(Cross(Minus(at(t[1]), at(t[0])), Minus(at(t[2]), at(t[0]))), ahead);
     const bool both = twoSided && (*twoSided)[triangles[k]];
     if (!(facing != 0) && !both)
     {
@@ -130,7 +157,12 @@ Id AppendCone(Id apex, const std::vector<std::array<Id, 3>>& boundary,
       corners.emplace_back(boundary[t][c], static_cast<Id>(t));
     }
   }
-  std::sort(corners.begin(), corners.end());
+  // Points in the order of their coordinates (then ids): where a sheet is split
+  // at both ends of an edge, the tetrahedra depend on which end comes first, and
+  // they must not depend on the numbering of the input.
+  std::sort(corners.begin(), corners.end(), [&points](const auto& a, const auto& b) {
+    return points[a.first] != points[b.first] ? points[a.first] < points[b.first] : a < b;
+  });
 
   // The sheets at p: its triangles joined through their edges (p, x), that is
   // the components of p's link; where more than two triangles share an edge
@@ -185,7 +217,6 @@ Id AppendCone(Id apex, const std::vector<std::array<Id, 3>>& boundary,
       }
       i = j;
     }
-    // Sheets in the order of their least triangle (corners are sorted by it).
     sheets.clear();
     std::vector<Id> sheetOfRoot(end - begin, -1);
     for (std::size_t k = begin; k < end; ++k)
@@ -197,6 +228,47 @@ Id AppendCone(Id apex, const std::vector<std::array<Id, 3>>& boundary,
         sheets.emplace_back();
       }
       sheets[sheetOfRoot[root]].push_back(static_cast<std::size_t>(corners[k].second));
+    }
+    if (sheets.size() > 1)
+    {
+      // The sheet that keeps the apex, and the order of the others, by their
+      // geometry (the least triangle by sorted corner coordinates), not by the
+      // order of the triangles, which follows the numbering of the input.
+      auto key = [&](const std::vector<std::size_t>& sheetTriangles) {
+        std::array<Point3, 3> least;
+        bool first = true;
+        for (const std::size_t t : sheetTriangles)
+        {
+          std::array<Point3, 3> c{ { points[boundary[t][0]], points[boundary[t][1]],
+            points[boundary[t][2]] } };
+          std::sort(c.begin(), c.end());
+          if (first || c < least)
+          {
+            least = c;
+            first = false;
+          }
+        }
+        return least;
+      };
+      for (std::vector<std::size_t>& sheetTriangles : sheets)
+      {
+        // Sums over a sheet (its middle) in an order of the geometry too.
+        std::sort(sheetTriangles.begin(), sheetTriangles.end(), [&](std::size_t a, std::size_t b) {
+          return key({ a }) < key({ b });
+        });
+      }
+      std::vector<std::pair<std::array<Point3, 3>, std::size_t>> order;
+      for (std::size_t s = 0; s < sheets.size(); ++s)
+      {
+        order.emplace_back(key(sheets[s]), s);
+      }
+      std::sort(order.begin(), order.end());
+      std::vector<std::vector<std::size_t>> sorted;
+      for (const auto& o : order)
+      {
+        sorted.push_back(std::move(sheets[o.second]));
+      }
+      sheets.swap(sorted);
     }
     for (std::size_t s = 1; s < sheets.size(); ++s)
     {
