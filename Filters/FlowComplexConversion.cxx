@@ -86,7 +86,7 @@ vtkSmartPointer<vtkPolyData> CriticalPointsBlock(const FlowComplex& fc)
   pd->GetPointData()->AddArray(index);
   pd->GetPointData()->AddArray(value);
   pd->GetPointData()->AddArray(simplex);
-  pd->GetPointData()->SetActiveScalars(flowrecon::names::CriticalValue);
+  pd->GetPointData()->SetActiveScalars(flowrecon::names::Index);
   return pd;
 }
 
@@ -747,6 +747,33 @@ vtkSmartPointer<vtkPolyData> PersistencePairsBlock(const FlowComplex& fc, const 
 }
 
 } // namespace
+
+void SetDefaultScalars(vtkMultiBlockDataSet* output)
+{
+  for (unsigned int b = 0; b < output->GetNumberOfBlocks(); ++b)
+  {
+    auto* block = vtkDataSet::SafeDownCast(output->GetBlock(b));
+    const char* name =
+      output->HasMetaData(b) ? output->GetMetaData(b)->Get(vtkCompositeDataSet::NAME()) : nullptr;
+    if (!block || !name)
+    {
+      continue;
+    }
+    const std::string blockName(name);
+    if (blockName == names::CriticalPoints)
+    {
+      block->GetPointData()->SetActiveScalars(names::Index);
+    }
+    else if (blockName == names::StableManifolds)
+    {
+      block->GetCellData()->SetActiveScalars(names::Index);
+    }
+    else if (blockName == names::PersistencePairs)
+    {
+      block->GetCellData()->SetActiveScalars(nullptr);
+    }
+  }
+}
 
 vtkDataObject* NamedBlock(vtkMultiBlockDataSet* input, const char* name)
 {

@@ -89,6 +89,7 @@ int vtkFlowComplex::RequestData(
         flowrecon::BuildFlowComplex(samples, options, progress.Range(0, 0.8));
       flowrecon::RequireMemoryForVTK(fc);
       flowrecon::ToMultiBlock(fc, output, progress.Range(0.8, 1));
+      flowrecon::SetDefaultScalars(output);
     },
     [&]() { output->Initialize(); });
 }

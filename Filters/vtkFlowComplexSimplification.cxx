@@ -69,6 +69,7 @@ int vtkFlowComplexSimplification::RequestData(
       fc.Arcs = s.Arcs; // the HasseDiagram block shows the simplified diagram
       flowrecon::ToMultiBlock(fc, output, progress.Range(0.6, 1));
       flowrecon::AddSimplification(fc, s, this->PersistenceThreshold, output);
+      flowrecon::SetDefaultScalars(output);
     },
     [&]() { output->Initialize(); });
 }

@@ -2,6 +2,7 @@
 
 #include "CoreCall.h"
 #include "FlowComplexConversion.h"
+#include "FlowReconNames.h"
 #include "ReconstructionConversion.h"
 #include "Reconstruction.h"
 #include "Simplification.h"
@@ -210,6 +211,11 @@ int vtkFlowReconstruction::RequestData(
     undersampling->Initialize();
     vtkWarningMacro(<< "no Betti numbers: " << c.TopologyError);
   }
+  // What ParaView colours by in a render view: the reconstruction by Index (the
+  // array Flow Complex's critical points and stable manifolds are coloured by),
+  // the under-sampling points by nothing, so that the view has one colour legend.
+  grid->GetCellData()->SetActiveScalars(flowrecon::names::Index);
+  undersampling->GetPointData()->SetActiveScalars(nullptr);
 
   this->SetProgressText(nullptr);
   this->UpdateProgress(1.0);

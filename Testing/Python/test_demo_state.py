@@ -1,7 +1,10 @@
 #!/usr/bin/env pvpython
-"""Data/demo.pvsm loads from the repository root (its data file is the relative path
+"""Data/demo.pvsm loads from the repository root as it is ("Use File Names From State",
+what `paraview --state=Data/demo.pvsm` does: its data file is the relative path
 Data/two_hemispheres.xyz) with the plugin auto-loaded from PV_PLUGIN_PATH, and gives the
-demo pipeline. Run from the repository root: pvpython Testing/Python/test_demo_state.py
+demo pipeline, read with the plugin's own reader. Run from the repository root:
+pvpython Testing/Python/test_demo_state.py (test_states.py loads every state from
+elsewhere).
 """
 import os
 import sys
@@ -11,13 +14,18 @@ from paraview import simple
 simple.LoadState("Data/demo.pvsm")
 names = sorted(key[0] for key in simple.GetSources())
 print("sources:", names)
-expected = ["FlowComplex", "Points", "Reconstruction t_r 2", "Reconstruction t_r 2.5",
+expected = ["FlowComplex", "Reconstruction t_r 2", "Reconstruction t_r 2.5",
             "Simplification", "two_hemispheres.xyz"]
 if names != expected:
     sys.exit("FAIL: sources %s, expected %s" % (names, expected))
 reader = simple.FindSource("two_hemispheres.xyz")
-if list(reader.FileName) != ["Data/two_hemispheres.xyz"]:
-    sys.exit("FAIL: reader file %s" % list(reader.FileName))
+if reader.GetXMLName() != "FlowReconPointCloudReader":
+    sys.exit("FAIL: the reader is %s, not the plugin's FlowReconPointCloudReader"
+             % reader.GetXMLName())
+files = reader.FileName
+files = [files] if isinstance(files, str) else list(files)
+if files != ["Data/two_hemispheres.xyz"]:
+    sys.exit("FAIL: reader file %s" % files)
 cells = {}
 for name in ("Reconstruction t_r 2", "Reconstruction t_r 2.5"):
     source = simple.FindSource(name)

@@ -1,0 +1,257 @@
+#!/usr/bin/env python3
+"""What a user sees when pressing Apply on each FlowRecon filter in a render view
+(issue #10, "readable defaults"), with no X server: every output port shown as
+Apply does it (ShowInPreferredView, the input hidden, a colour legend for each
+scalar-coloured display), then the colouring array and its association, the
+colour legends, the blocks shown and the camera after Reset Camera.
+
+- Flow Reconstruction: output 0 coloured by the cell array Index, output 2
+  (sponsor arrows) not shown, output 4 (under-sampling points) not coloured:
+  one colour legend in the view.
+- Flow Complex Simplification: not coloured by the Ratio of its PersistencePairs
+  (a colouring of that block only); shown after a Flow Complex coloured by Index,
+  it keeps that colouring.
+- Flow Complex and Simplification: Index is the active scalars of CriticalPoints
+  (points) and StableManifolds (cells), and Extract Block of CriticalPoints opens
+  coloured by Index. What ParaView 5.11 does not let the filter choose (all blocks
+  shown, no default colouring of the whole multiblock) is checked too, so that
+  the filters' documentation, which says so, stays true.
+- Every filter: after Reset Camera the view spans at most twice the cloud (the
+  unstable manifolds stop at the cloud's box grown by a quarter of its
+  diagonal, at most 1 + sqrt(3)/2 of its size), centred on it.
+
+Usage: pvpython test_default_display.py PLUGIN WORKDIR
+"""
+
+import math
+import os
+import sys
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "..", "Data"))
+import generate_clouds as gen  # noqa: E402
+
+from paraview import servermanager, simple  # noqa: E402
+from paraview.modules.vtkRemotingViews import (  # noqa: E402
+    vtkSMParaViewPipelineControllerWithRendering, vtkSMPVRepresentationProxy)
+
+PLUGIN, WORK = sys.argv[1:3]
+from checks import check, failures, finish  # noqa: E402,F401
+
+controller = vtkSMParaViewPipelineControllerWithRendering()
+
+
+def apply(source, view, input_source=None):
+    """Show every output port of `source` as the GUI's Apply does with `view`
+    active: each port in its preferred view, a colour legend for each
+    scalar-coloured display, the input hidden. Returns {port: display} for the
+    ports shown in `view`."""
+    shown = {}
+    for port in range(source.GetNumberOfOutputPorts()):
+        target = controller.ShowInPreferredView(source.SMProxy, port, view.SMProxy)
+        if target is None or target.GetGlobalID() != view.SMProxy.GetGlobalID():
+            continue
+        rep = target.FindRepresentation(source.SMProxy, port)
+        if vtkSMPVRepresentationProxy.GetUsingScalarColoring(rep):
+            vtkSMPVRepresentationProxy.SetScalarBarVisibility(rep, view.SMProxy, True)
+        shown[port] = servermanager._getPyProxy(rep)
+    if input_source is not None:
+        controller.SetVisibility(input_source.SMProxy, 0, view.SMProxy, False)
+    return shown
+
+
+def legends(view):
+    """Titles of the colour legends (scalar bars) visible in `view`."""
+    titles = []
+    for rep in view.Representations:
+        if rep.GetXMLName() == "ScalarBarWidgetRepresentation" and rep.Visibility:
+            titles.append(rep.Title)
+    return titles
+
+
+def colouring(display):
+    return tuple(display.ColorArrayName)
+
+
+def fresh_view(reader):
+    view = simple.CreateRenderView()
+    simple.Show(reader, view)
+    return view
+
+
+def check_camera(label, view, cloud_bounds):
+    """After Reset Camera, the camera looks at the cloud and the sphere it frames
+    (radius: the view's parallel scale) is at most twice the cloud's."""
+    view.ResetCamera()
+    cam = view.GetActiveCamera()
+    lo, hi = np.array(cloud_bounds[0::2]), np.array(cloud_bounds[1::2])
+    centre, radius = (lo + hi) / 2, np.linalg.norm(hi - lo) / 2
+    framed = cam.GetParallelScale()
+    off = np.linalg.norm(np.array(cam.GetFocalPoint()) - centre)
+    print("%s: camera frames a radius of %.3g (cloud %.3g), %.3g off the cloud's centre" % (
+        label, framed, radius, off), flush=True)
+    check(0.5 * radius <= framed <= 2.0 * radius,
+          "%s: Reset Camera frames a radius of %.3g, the cloud's is %.3g (expected within "
+          "a factor 2)" % (label, framed, radius))
+    check(off <= 0.25 * radius,
+          "%s: Reset Camera looks %.3g away from the cloud's centre (cloud radius %.3g)" % (
+              label, off, radius))
+
+
+def blocks(mb):
+    return {mb.GetMetaData(i).Get(mb.NAME()): mb.GetBlock(i) for i in range(mb.GetNumberOfBlocks())}
+
+
+def active_name(attributes):
+    scalars = attributes.GetScalars()
+    return scalars.GetName() if scalars is not None else None
+
+
+def check_active_scalars(label, source):
+    """Index is the active scalars of CriticalPoints (points) and StableManifolds
+    (cells); no other block has any."""
+    out = blocks(servermanager.Fetch(source))
+    expected = {"CriticalPoints": ("Index", None), "StableManifolds": (None, "Index")}
+    for name, block in out.items():
+        got = (active_name(block.GetPointData()), active_name(block.GetCellData()))
+        want = expected.get(name, (None, None))
+        check(got == want, "%s: block %s has active point/cell scalars %s, expected %s" % (
+            label, name, got, want))
+
+
+def flow_complex(reader, cloud_bounds):
+    fc = FlowComplex(Input=reader)  # noqa: F821 (defined by LoadPlugin)
+    view = fresh_view(reader)
+    shown = apply(fc, view, reader)
+    check(sorted(shown) == [0], "Flow Complex: ports shown in the render view %s" % sorted(shown))
+    display = shown[0]
+    print("Flow Complex: colouring %s, blocks %s, legends %s" % (
+        colouring(display), list(display.BlockSelectors), legends(view)), flush=True)
+    check_active_scalars("Flow Complex", fc)
+    # What ParaView 5.11 does not let a filter choose, as FlowComplex.xml says.
+    check(colouring(display)[1] == "",
+          "Flow Complex now opens coloured by %s: update the 'What Apply shows' paragraph "
+          "of FlowComplex.xml" % (colouring(display),))
+    check(list(display.BlockSelectors) == ["/"],
+          "Flow Complex now opens with the blocks %s: update FlowComplex.xml's documentation"
+          % list(display.BlockSelectors))
+    check(legends(view) == [], "Flow Complex: colour legends %s" % legends(view))
+    check_camera("Flow Complex", view, cloud_bounds)
+
+    # The readable picture the documentation recommends: Extract Block of
+    # CriticalPoints opens coloured by the point array Index.
+    extract = simple.ExtractBlock(Input=fc, Selectors=["/Root/CriticalPoints"])
+    eview = fresh_view(reader)
+    eshown = apply(extract, eview, reader)
+    check(0 in eshown and colouring(eshown[0]) == ("POINTS", "Index"),
+          "Extract Block CriticalPoints opens coloured by %s, expected POINTS Index" % (
+              colouring(eshown[0]) if 0 in eshown else None,))
+    check(legends(eview) == ["Index"], "Extract Block CriticalPoints: colour legends %s, "
+          "expected Index" % legends(eview))
+    lut = simple.GetColorTransferFunction("Index")
+    print("Index colour map: categorical %d, annotations %s (a filter cannot set them in "
+          "ParaView 5.11)" % (lut.InterpretValuesAsCategories, list(lut.Annotations)), flush=True)
+    check_camera("Extract Block CriticalPoints", eview, cloud_bounds)
+    return fc
+
+
+def simplification(reader, fc, cloud_bounds):
+    simp = FlowComplexSimplification(Input=fc)  # noqa: F821
+    view = fresh_view(reader)
+    shown = apply(simp, view, reader)
+    check(sorted(shown) == [0], "Simplification: ports shown %s" % sorted(shown))
+    display = shown[0]
+    print("Simplification: colouring %s, legends %s" % (colouring(display), legends(view)),
+          flush=True)
+    check(colouring(display)[1] != "Ratio",
+          "Simplification opens coloured by the Ratio of PersistencePairs only")
+    check(colouring(display)[1] == "" and legends(view) == [],
+          "Simplification opens coloured by %s with legends %s; FlowComplexSimplification.xml "
+          "says no colouring" % (colouring(display), legends(view)))
+    check_active_scalars("Simplification", simp)
+    check_camera("Simplification", view, cloud_bounds)
+
+    # After a Flow Complex coloured by Index (as its documentation recommends),
+    # the simplification keeps that colouring: one legend.
+    view2 = fresh_view(reader)
+    fcd = simple.Show(fc, view2)
+    simple.ColorBy(fcd, ("POINTS", "Index"))
+    fcd.SetScalarBarVisibility(view2, True)
+    shown2 = apply(simp, view2, fc)
+    print("Simplification after Flow Complex by Index: colouring %s, legends %s" % (
+        colouring(shown2[0]), legends(view2)), flush=True)
+    check(colouring(shown2[0]) == ("POINTS", "Index"),
+          "Simplification applied after a Flow Complex coloured by Index is coloured by %s" % (
+              colouring(shown2[0]),))
+    check(legends(view2) == ["Index"],
+          "Simplification after Flow Complex by Index: colour legends %s" % legends(view2))
+    return simp
+
+
+def reconstruction(work):
+    # A sphere whose cap lost half of its points: output 4 has warning points.
+    base = gen.make("sphere_qu", size=1500)
+    keep = (base[:, 2] <= 0.7) | (np.random.default_rng(3).uniform(size=len(base)) > 0.5)
+    xyz = os.path.join(work, "sphere_thinned.xyz")
+    np.savetxt(xyz, base[keep], fmt="%.17g")
+    reader = simple.OpenDataFile(xyz)
+    reader.UpdatePipeline()
+    cloud_bounds = reader.GetDataInformation().GetBounds()
+    recon = FlowReconstruction(  # noqa: F821
+        Input=FlowComplexSimplification(  # noqa: F821
+            Input=FlowComplex(Input=reader, ComputeStableManifolds=0)))  # noqa: F821
+    recon.UpdatePipeline()
+    warnings = recon.GetDataInformation(4).GetNumberOfPoints()
+    check(warnings > 0, "Flow Reconstruction: no under-sampling point to show on this cloud")
+    view = fresh_view(reader)
+    shown = apply(recon, view, reader)
+    print("Flow Reconstruction: ports in the render view %s, colourings %s, legends %s" % (
+        sorted(shown), {p: colouring(d) for p, d in shown.items()}, legends(view)), flush=True)
+    check(sorted(shown) == [0, 4],
+          "Flow Reconstruction: ports shown in the render view %s, expected 0 and 4 "
+          "(2, the sponsor arrows, only on request)" % sorted(shown))
+    check(view.SMProxy.FindRepresentation(recon.SMProxy, 2) is None,
+          "Flow Reconstruction: the sponsor arrows (output 2) are shown on Apply")
+    if 0 in shown:
+        check(colouring(shown[0]) == ("CELLS", "Index"),
+              "Flow Reconstruction: output 0 coloured by %s, expected CELLS Index" % (
+                  colouring(shown[0]),))
+        check(shown[0].Visibility == 1, "Flow Reconstruction: output 0 hidden")
+    if 4 in shown:
+        check(colouring(shown[4])[1] == "",
+              "Flow Reconstruction: the under-sampling points are coloured by %s (a second "
+              "legend)" % (colouring(shown[4]),))
+        check(shown[4].Visibility == 1, "Flow Reconstruction: output 4 hidden")
+    check(legends(view) == ["Index"],
+          "Flow Reconstruction: colour legends %s, expected one, Index" % legends(view))
+    lut = simple.GetColorTransferFunction("Index")
+    rng = lut.RGBPoints[0], lut.RGBPoints[-4]
+    check(rng == (0.0, 3.0) or lut.InterpretValuesAsCategories,
+          "Flow Reconstruction: the Index colour map spans %s, expected 0 to 3" % (rng,))
+    check_camera("Flow Reconstruction", view, cloud_bounds)
+    # The sponsor arrows are one click away, coloured by Priority.
+    arrows = simple.Show(simple.OutputPort(recon, 2), view)
+    check(colouring(arrows) == ("CELLS", "Priority"),
+          "Flow Reconstruction: shown on request, the sponsor arrows are coloured by %s" % (
+              colouring(arrows),))
+
+
+def main():
+    os.makedirs(WORK, exist_ok=True)
+    simple.LoadPlugin(PLUGIN, remote=False, ns=globals())
+    xyz = os.path.join(WORK, "torus.xyz")
+    np.savetxt(xyz, gen.torus(300, np.random.default_rng(4)), fmt="%.17g")
+    reader = simple.OpenDataFile(xyz)
+    reader.UpdatePipeline()
+    cloud_bounds = reader.GetDataInformation().GetBounds()
+    check(all(math.isfinite(b) for b in cloud_bounds), "the cloud has no bounds")
+    fc = flow_complex(reader, cloud_bounds)
+    simplification(reader, fc, cloud_bounds)
+    reconstruction(WORK)
+    finish()
+
+
+if __name__ == "__main__":
+    main()
