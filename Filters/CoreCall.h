@@ -30,9 +30,10 @@ inline Progress AlgorithmProgress(vtkAlgorithm* algorithm, double scale = 1.0)
 }
 
 /// Runs `work()`. Returns 1 if it succeeds; on an abort calls `onAbort()` (which
-/// empties the outputs) and returns 1, since an abort is not an error; on any
-/// other exception reports it (prefixed by `what` unless it is bad input) and
-/// returns 0.
+/// empties the outputs), warns "`what` aborted: the output is empty ..." (so that
+/// an empty output in ParaView is explained) and returns 1, since an abort is not an
+/// error; on any other exception reports it (prefixed by `what` unless it is bad
+/// input) and returns 0.
 template <class Work, class OnAbort>
 int CallCore(vtkAlgorithm* algorithm, const char* what, Work&& work, OnAbort&& onAbort)
 {
@@ -48,6 +49,11 @@ int CallCore(vtkAlgorithm* algorithm, const char* what, Work&& work, OnAbort&& o
   catch (const Aborted&)
   {
     onAbort();
+    algorithm->SetProgressText(nullptr);
+    // VTK 9.2.20230111 (ParaView 5.11) no longer clears AbortExecute when a run
+    // starts: until the caller clears it, every run ends here at once.
+    vtkWarningWithObjectMacro(algorithm,
+      << what << " aborted: the output is empty (AbortExecute stays set until cleared)");
     return 1;
   }
   catch (const std::bad_alloc&)

@@ -1,6 +1,7 @@
 # What Flow Complex and the other filters show by default in ParaView (issue #10):
 # Apply's displays in a render view, their colouring, colour legends, blocks and
-# camera (pv.default_display, no X server needed). Included from
+# camera, the plugin's categorical colour maps and that user settings beat them
+# (pv.default_display, no X server needed). Included from
 # Testing/Python/CMakeLists.txt.
 find_program(FLOWRECON_PVPYTHON pvpython DOC "ParaView's Python interpreter")
 if (FLOWRECON_BUILD_PARAVIEW_PLUGIN AND TARGET FlowRecon AND FLOWRECON_PVPYTHON)

@@ -8,14 +8,16 @@ colour legends, the blocks shown and the camera after Reset Camera.
 - Flow Reconstruction: output 0 coloured by the cell array Index, output 2
   (sponsor arrows) not shown, output 4 (under-sampling points) not coloured:
   one colour legend in the view.
-- Flow Complex Simplification: not coloured by the Ratio of its PersistencePairs
-  (a colouring of that block only); shown after a Flow Complex coloured by Index,
-  it keeps that colouring.
-- Flow Complex and Simplification: Index is the active scalars of CriticalPoints
-  (points) and StableManifolds (cells), and Extract Block of CriticalPoints opens
-  coloured by Index. What ParaView 5.11 does not let the filter choose (all blocks
-  shown, no default colouring of the whole multiblock) is checked too, so that
-  the filters' documentation, which says so, stays true.
+- Flow Complex and Flow Complex Simplification (the plugin's display
+  FlowReconMultiBlockRepresentation and its initialization helper): only the
+  block CriticalPoints shown, coloured by the point array Index, whose colour map
+  is categorical with the four names of FlowComplex.xml; one colour legend.
+  Shown after a Flow Complex coloured by Index, the simplification keeps it.
+  Index is the active scalars of CriticalPoints (points) and StableManifolds
+  (cells), and Extract Block of CriticalPoints opens coloured by Index.
+- Settings: the plugin's colour maps (Index, Extension) sit below the user's
+  settings, and a user setting of the display's BlockSelectors wins (in a new
+  session, so that the Index colour map is made again).
 - Every filter: after Reset Camera the view spans at most twice the cloud (the
   unstable manifolds stop at the cloud's box grown by a quarter of its
   diagonal, at most 1 + sqrt(3)/2 of its size), centred on it.
@@ -23,6 +25,7 @@ colour legends, the blocks shown and the camera after Reset Camera.
 Usage: pvpython test_default_display.py PLUGIN WORKDIR
 """
 
+import json
 import math
 import os
 import sys
@@ -109,6 +112,41 @@ def active_name(attributes):
     return scalars.GetName() if scalars is not None else None
 
 
+INDEX_NAMES = ["0", "minimum (sample)", "1", "index-1 saddle (Gabriel edge)",
+               "2", "index-2 saddle (Gabriel triangle)", "3", "maximum"]
+EXTENSION_NAMES = ["0", "initialization", "1", "regularization", "2", "upflow",
+                   "3", "horizontal"]
+
+
+def check_categorical(label, array, names):
+    """The colour map of `array` is categorical and names its values."""
+    lut = simple.GetColorTransferFunction(array)
+    got = (lut.InterpretValuesAsCategories, list(lut.Annotations))
+    print("%s: %s colour map categorical %d, annotations %s" % (label, array, got[0], got[1]),
+          flush=True)
+    check(got == (1, names), "%s: the %s colour map is %s, expected categorical with "
+          "annotations %s" % (label, array, got, names))
+
+
+def check_plugin_display(label, display, view):
+    """What the plugin's display chooses: CriticalPoints only, coloured by the
+    point array Index (categorical, named), one colour legend."""
+    check(display.GetXMLName() == "FlowReconMultiBlockRepresentation",
+          "%s: the display is a %s" % (label, display.GetXMLName()))
+    check(colouring(display) == ("POINTS", "Index"),
+          "%s opens coloured by %s, expected POINTS Index" % (label, colouring(display)))
+    check(list(display.BlockSelectors) == ["/Root/CriticalPoints"],
+          "%s opens with the blocks %s, expected CriticalPoints only" % (
+              label, list(display.BlockSelectors)))
+    check(display.LookupTable is not None and
+          display.LookupTable.SMProxy.GetGlobalID() ==
+          simple.GetColorTransferFunction("Index").SMProxy.GetGlobalID(),
+          "%s: the display does not use the Index colour map" % label)
+    check_categorical(label, "Index", INDEX_NAMES)
+    check(legends(view) == ["Index"], "%s: colour legends %s, expected Index" % (
+        label, legends(view)))
+
+
 def check_active_scalars(label, source):
     """Index is the active scalars of CriticalPoints (points) and StableManifolds
     (cells); no other block has any."""
@@ -130,14 +168,8 @@ def flow_complex(reader, cloud_bounds):
     print("Flow Complex: colouring %s, blocks %s, legends %s" % (
         colouring(display), list(display.BlockSelectors), legends(view)), flush=True)
     check_active_scalars("Flow Complex", fc)
-    # What ParaView 5.11 does not let a filter choose, as FlowComplex.xml says.
-    check(colouring(display)[1] == "",
-          "Flow Complex now opens coloured by %s: update the 'What Apply shows' paragraph "
-          "of FlowComplex.xml" % (colouring(display),))
-    check(list(display.BlockSelectors) == ["/"],
-          "Flow Complex now opens with the blocks %s: update FlowComplex.xml's documentation"
-          % list(display.BlockSelectors))
-    check(legends(view) == [], "Flow Complex: colour legends %s" % legends(view))
+    # What FlowComplex.xml's "What Apply shows" paragraph says.
+    check_plugin_display("Flow Complex", display, view)
     check_camera("Flow Complex", view, cloud_bounds)
 
     # The readable picture the documentation recommends: Extract Block of
@@ -150,9 +182,6 @@ def flow_complex(reader, cloud_bounds):
               colouring(eshown[0]) if 0 in eshown else None,))
     check(legends(eview) == ["Index"], "Extract Block CriticalPoints: colour legends %s, "
           "expected Index" % legends(eview))
-    lut = simple.GetColorTransferFunction("Index")
-    print("Index colour map: categorical %d, annotations %s (a filter cannot set them in "
-          "ParaView 5.11)" % (lut.InterpretValuesAsCategories, list(lut.Annotations)), flush=True)
     check_camera("Extract Block CriticalPoints", eview, cloud_bounds)
     return fc
 
@@ -163,13 +192,11 @@ def simplification(reader, fc, cloud_bounds):
     shown = apply(simp, view, reader)
     check(sorted(shown) == [0], "Simplification: ports shown %s" % sorted(shown))
     display = shown[0]
-    print("Simplification: colouring %s, legends %s" % (colouring(display), legends(view)),
-          flush=True)
+    print("Simplification: colouring %s, blocks %s, legends %s" % (
+        colouring(display), list(display.BlockSelectors), legends(view)), flush=True)
     check(colouring(display)[1] != "Ratio",
           "Simplification opens coloured by the Ratio of PersistencePairs only")
-    check(colouring(display)[1] == "" and legends(view) == [],
-          "Simplification opens coloured by %s with legends %s; FlowComplexSimplification.xml "
-          "says no colouring" % (colouring(display), legends(view)))
+    check_plugin_display("Simplification", display, view)
     check_active_scalars("Simplification", simp)
     check_camera("Simplification", view, cloud_bounds)
 
@@ -230,12 +257,49 @@ def reconstruction(work):
     rng = lut.RGBPoints[0], lut.RGBPoints[-4]
     check(rng == (0.0, 3.0) or lut.InterpretValuesAsCategories,
           "Flow Reconstruction: the Index colour map spans %s, expected 0 to 3" % (rng,))
+    check_categorical("Flow Reconstruction", "Index", INDEX_NAMES)
     check_camera("Flow Reconstruction", view, cloud_bounds)
     # The sponsor arrows are one click away, coloured by Priority.
     arrows = simple.Show(simple.OutputPort(recon, 2), view)
     check(colouring(arrows) == ("CELLS", "Priority"),
           "Flow Reconstruction: shown on request, the sponsor arrows are coloured by %s" % (
               colouring(arrows),))
+    # Colouring them by Extension names how each node entered the reconstruction.
+    simple.ColorBy(arrows, ("CELLS", "Extension"))
+    check_categorical("Flow Reconstruction", "Extension", EXTENSION_NAMES)
+
+
+def user_settings(xyz):
+    """User settings (priority 1, as ParaView loads the user's file at a
+    priority above the plugin's 0) beat the plugin's: the Index colour map is
+    not categorical, and the display shows the blocks the user chose. The
+    plugin's other keys (the names) stay. A new session makes the colour map
+    again; the plugin stays loaded."""
+    simple.Disconnect()
+    simple.Connect()
+    user = {"array_lookup_tables": {"Index": {"PVLookupTable": {"IndexedLookup": 0}}},
+            "representations": {"FlowReconMultiBlockRepresentation": {
+                "BlockSelectors": ["/Root/CriticalPoints", "/Root/StableManifolds"]}}}
+    check(servermanager.vtkSMSettings.GetInstance().AddCollectionFromString(
+        json.dumps(user), 1.0), "user settings: not accepted")
+    reader = simple.OpenDataFile(xyz)
+    fc = FlowComplex(Input=reader)  # noqa: F821
+    view = fresh_view(reader)
+    shown = apply(fc, view, reader)
+    display = shown[0]
+    lut = simple.GetColorTransferFunction("Index")
+    print("User settings: colouring %s, blocks %s, Index categorical %d, annotations %s" % (
+        colouring(display), list(display.BlockSelectors), lut.InterpretValuesAsCategories,
+        list(lut.Annotations)), flush=True)
+    check(list(display.BlockSelectors) == ["/Root/CriticalPoints", "/Root/StableManifolds"],
+          "user settings: the display shows the blocks %s, not the user's" % list(
+              display.BlockSelectors))
+    check(colouring(display) == ("POINTS", "Index"),
+          "user settings: the display is coloured by %s" % (colouring(display),))
+    check(lut.InterpretValuesAsCategories == 0,
+          "user settings: the Index colour map is still categorical")
+    check(list(lut.Annotations) == INDEX_NAMES,
+          "user settings: the Index colour map lost its names: %s" % list(lut.Annotations))
 
 
 def main():
@@ -250,6 +314,7 @@ def main():
     fc = flow_complex(reader, cloud_bounds)
     simplification(reader, fc, cloud_bounds)
     reconstruction(WORK)
+    user_settings(xyz)
     finish()
 
 

@@ -1,0 +1,83 @@
+#include "vtkFlowReconDisplayInitializationHelper.h"
+
+#include "vtkDataObject.h"
+#include "vtkObjectFactory.h"
+#include "vtkPVDataInformation.h"
+#include "vtkPVXMLElement.h"
+#include "vtkSMOutputPort.h"
+#include "vtkSMProperty.h"
+#include "vtkSMPropertyHelper.h"
+#include "vtkSMProxy.h"
+#include "vtkSMSettings.h"
+
+#include <cstring>
+#include <iterator>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+vtkStandardNewMacro(vtkFlowReconDisplayInitializationHelper);
+
+namespace
+{
+// The property is still at its initial value and no setting chose it.
+bool IsFree(vtkSMProxy* repr, vtkSMProperty* property, const char* name, vtkMTimeType ts)
+{
+  if (!property || property->GetMTime() > ts)
+  {
+    return false;
+  }
+  const std::string setting = std::string(repr->GetXMLGroup()) + "." + repr->GetXMLName() + "." +
+    name;
+  return !vtkSMSettings::GetInstance()->HasSetting(
+    setting.c_str(), std::numeric_limits<double>::max());
+}
+}
+
+//------------------------------------------------------------------------------
+void vtkFlowReconDisplayInitializationHelper::PostInitializeProxy(
+  vtkSMProxy* repr, vtkPVXMLElement* xml, vtkMTimeType ts)
+{
+  bool changed = false;
+
+  vtkSMProperty* blocks = repr->GetProperty("BlockSelectors");
+  const char* selectors = xml->GetAttribute("blocks");
+  if (selectors && IsFree(repr, blocks, "BlockSelectors", ts))
+  {
+    std::istringstream words(selectors);
+    const std::vector<std::string> list{ std::istream_iterator<std::string>(words),
+      std::istream_iterator<std::string>() };
+    vtkSMPropertyHelper helper(blocks);
+    helper.SetNumberOfElements(static_cast<unsigned int>(list.size()));
+    for (unsigned int i = 0; i < list.size(); ++i)
+    {
+      helper.Set(i, list[i].c_str());
+    }
+    changed = true;
+  }
+
+  vtkSMProperty* color = repr->GetProperty("ColorArrayName");
+  const char* array = xml->GetAttribute("color_array");
+  const char* association = xml->GetAttribute("color_association");
+  if (array && IsFree(repr, color, "ColorArrayName", ts))
+  {
+    const int field = (association && std::strcmp(association, "CELLS") == 0)
+      ? vtkDataObject::FIELD_ASSOCIATION_CELLS
+      : vtkDataObject::FIELD_ASSOCIATION_POINTS;
+    vtkSMOutputPort* port = repr->GetProperty("Input")
+      ? vtkSMPropertyHelper(repr, "Input").GetAsOutputPort()
+      : nullptr;
+    vtkPVDataInformation* info = port ? port->GetDataInformation() : nullptr;
+    if (info && info->GetArrayInformation(array, field))
+    {
+      vtkSMPropertyHelper(color).SetInputArrayToProcess(field, array);
+      changed = true;
+    }
+  }
+
+  if (changed)
+  {
+    repr->UpdateVTKObjects();
+  }
+}

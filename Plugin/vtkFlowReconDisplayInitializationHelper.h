@@ -1,0 +1,46 @@
+// The default look of a FlowRecon multiblock output in a render view (issue #10).
+#ifndef vtkFlowReconDisplayInitializationHelper_h
+#define vtkFlowReconDisplayInitializationHelper_h
+
+#include "vtkSMProxyInitializationHelper.h"
+
+/**
+ * @class vtkFlowReconDisplayInitializationHelper
+ * @brief Chooses the colouring and the visible blocks of a new display.
+ *
+ * Named by the hint of the representation FlowReconMultiBlockRepresentation
+ * (FlowComplex.xml), which Flow Complex and Flow Complex Simplification ask for
+ * in render views:
+ *
+ *   <InitializationHelper class="vtkFlowReconDisplayInitializationHelper"
+ *     color_association="POINTS" color_array="Index" blocks="/Root/CriticalPoints"/>
+ *
+ * ParaView calls it when it sets up a display (vtkSMParaViewPipelineController::
+ * PostInitializeProxy), before it picks defaults from the domains; it then sets
+ * up the colour map of the array (vtkSMTransferFunctionManager, from settings).
+ * A property is left alone when it was set since the display's creation or when
+ * a setting (representations.<display>.<property>) gives it, and the colouring
+ * only when the data has the array. `blocks` is a space-separated list of
+ * selectors.
+ *
+ * Not Python- or ClientServer-wrapped: FlowReconDisplayDefaults() registers the
+ * class with the ClientServer interpreter, which is how ParaView creates it.
+ */
+class vtkFlowReconDisplayInitializationHelper : public vtkSMProxyInitializationHelper
+{
+public:
+  static vtkFlowReconDisplayInitializationHelper* New();
+  vtkTypeMacro(vtkFlowReconDisplayInitializationHelper, vtkSMProxyInitializationHelper);
+
+  void PostInitializeProxy(vtkSMProxy* repr, vtkPVXMLElement* xml, vtkMTimeType ts) override;
+
+protected:
+  vtkFlowReconDisplayInitializationHelper() = default;
+  ~vtkFlowReconDisplayInitializationHelper() override = default;
+
+private:
+  vtkFlowReconDisplayInitializationHelper(const vtkFlowReconDisplayInitializationHelper&) = delete;
+  void operator=(const vtkFlowReconDisplayInitializationHelper&) = delete;
+};
+
+#endif
