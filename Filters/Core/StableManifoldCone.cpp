@@ -147,8 +147,8 @@ Id AppendCone(Id apex, const std::vector<std::array<Id, 3>>& boundary,
     tetrahedra.push_back({ { apex, t[0], t[1], t[2] } });
   }
 
-  // Corners (triangle, vertex) sorted by vertex: the star of each boundary point.
-  std::vector<std::pair<Id, Id>> corners; // (vertex, triangle)
+  // Corners (vertex, triangle) sorted by vertex id: the star of each boundary point.
+  std::vector<std::pair<Id, Id>> corners;
   corners.reserve(3 * boundary.size());
   for (std::size_t t = 0; t < boundary.size(); ++t)
   {
@@ -157,20 +157,22 @@ Id AppendCone(Id apex, const std::vector<std::array<Id, 3>>& boundary,
       corners.emplace_back(boundary[t][c], static_cast<Id>(t));
     }
   }
-  // Points in the order of their coordinates (then ids): where a sheet is split
-  // at both ends of an edge, the tetrahedra depend on which end comes first, and
-  // they must not depend on the numbering of the input.
-  std::sort(corners.begin(), corners.end(), [&points](const auto& a, const auto& b) {
-    return points[a.first] != points[b.first] ? points[a.first] < points[b.first] : a < b;
-  });
+  std::sort(corners.begin(), corners.end());
 
   // The sheets at p: its triangles joined through their edges (p, x), that is
   // the components of p's link; where more than two triangles share an edge
-  // (p, x), only those of one sheet around it are joined.
+  // (p, x), only those of one sheet around it are joined. The sheets of one
+  // point do not depend on the splits at others, so the points with several
+  // sheets are found first and split afterwards in an order of the geometry.
+  struct Pinch
+  {
+    Id P;
+    std::vector<std::vector<std::size_t>> Sheets;
+  };
+  std::vector<Pinch> pinches;
   std::vector<std::pair<Id, Id>> around; // (x, local triangle) for each edge (p, x)
   std::vector<std::size_t> shared;
-  std::vector<std::vector<std::size_t>> sheets;
-  std::vector<std::vector<std::size_t>> tetsOfTriangle; // filled at the first split
+  std::vector<Id> sheetOfRoot;
   for (std::size_t begin = 0; begin < corners.size();)
   {
     const Id p = corners[begin].first;
@@ -192,6 +194,7 @@ Id AppendCone(Id apex, const std::vector<std::array<Id, 3>>& boundary,
     }
     std::sort(around.begin(), around.end());
     ElderUnionFind sheet(end - begin);
+    std::size_t components = end - begin;
     for (std::size_t i = 0; i < around.size();)
     {
       std::size_t j = i + 1;
@@ -199,7 +202,7 @@ Id AppendCone(Id apex, const std::vector<std::array<Id, 3>>& boundary,
       {
         ++j;
       }
-      std::vector<std::size_t> first;
+      std::vector<std::size_t> firstOfSheet;
       if (j - i > 2)
       {
         shared.clear();
@@ -207,76 +210,97 @@ Id AppendCone(Id apex, const std::vector<std::array<Id, 3>>& boundary,
         {
           shared.push_back(static_cast<std::size_t>(corners[begin + around[k].second].second));
         }
-        first = SheetsAroundEdge(points, boundary, twoSided, p, around[i].first, shared);
+        firstOfSheet = SheetsAroundEdge(points, boundary, twoSided, p, around[i].first, shared);
       }
       for (std::size_t k = i + 1; k < j; ++k)
       {
-        const std::size_t other = first.empty() ? i : i + first[k - i];
-        sheet.Merge(static_cast<std::int32_t>(around[k].second),
-          static_cast<std::int32_t>(around[other].second));
+        const std::size_t other = firstOfSheet.empty() ? i : i + firstOfSheet[k - i];
+        const auto a = static_cast<std::int32_t>(around[k].second);
+        const auto b = static_cast<std::int32_t>(around[other].second);
+        if (sheet.Merge(a, b) >= 0)
+        {
+          --components;
+        }
       }
       i = j;
     }
-    sheets.clear();
-    std::vector<Id> sheetOfRoot(end - begin, -1);
-    for (std::size_t k = begin; k < end; ++k)
+    if (components > 1)
     {
-      const Id root = sheet.Find(static_cast<std::int32_t>(k - begin));
-      if (sheetOfRoot[root] < 0)
+      Pinch pinch{ p, {} };
+      sheetOfRoot.assign(end - begin, -1);
+      for (std::size_t k = begin; k < end; ++k)
       {
-        sheetOfRoot[root] = static_cast<Id>(sheets.size());
-        sheets.emplace_back();
-      }
-      sheets[sheetOfRoot[root]].push_back(static_cast<std::size_t>(corners[k].second));
-    }
-    if (sheets.size() > 1)
-    {
-      // The sheet that keeps the apex, and the order of the others, by their
-      // geometry (the least triangle by sorted corner coordinates), not by the
-      // order of the triangles, which follows the numbering of the input.
-      auto key = [&](const std::vector<std::size_t>& sheetTriangles) {
-        std::array<Point3, 3> least;
-        bool first = true;
-        for (const std::size_t t : sheetTriangles)
+        const Id root = sheet.Find(static_cast<std::int32_t>(k - begin));
+        if (sheetOfRoot[root] < 0)
         {
-          std::array<Point3, 3> c{ { points[boundary[t][0]], points[boundary[t][1]],
-            points[boundary[t][2]] } };
-          std::sort(c.begin(), c.end());
-          if (first || c < least)
-          {
-            least = c;
-            first = false;
-          }
+          sheetOfRoot[root] = static_cast<Id>(pinch.Sheets.size());
+          pinch.Sheets.emplace_back();
         }
-        return least;
-      };
-      for (std::vector<std::size_t>& sheetTriangles : sheets)
-      {
-        // Sums over a sheet (its middle) in an order of the geometry too.
-        std::sort(sheetTriangles.begin(), sheetTriangles.end(), [&](std::size_t a, std::size_t b) {
-          return key({ a }) < key({ b });
-        });
+        pinch.Sheets[sheetOfRoot[root]].push_back(static_cast<std::size_t>(corners[k].second));
       }
-      std::vector<std::pair<std::array<Point3, 3>, std::size_t>> order;
-      for (std::size_t s = 0; s < sheets.size(); ++s)
-      {
-        order.emplace_back(key(sheets[s]), s);
-      }
-      std::sort(order.begin(), order.end());
-      std::vector<std::vector<std::size_t>> sorted;
-      for (const auto& o : order)
-      {
-        sorted.push_back(std::move(sheets[o.second]));
-      }
-      sheets.swap(sorted);
+      pinches.push_back(std::move(pinch));
     }
-    for (std::size_t s = 1; s < sheets.size(); ++s)
+    begin = end;
+  }
+  if (pinches.empty())
+  {
+    return static_cast<Id>(boundary.size());
+  }
+
+  // Points in the order of their coordinates (then ids): where a sheet is split
+  // at both ends of an edge, the tetrahedra depend on which end comes first, and
+  // they must not depend on the numbering of the input.
+  std::sort(pinches.begin(), pinches.end(), [&points](const Pinch& a, const Pinch& b) {
+    return points[a.P] != points[b.P] ? points[a.P] < points[b.P] : a.P < b.P;
+  });
+  // The sheet that keeps the apex, and the order of the others, by their
+  // geometry (the least triangle by sorted corner coordinates), not by the
+  // order of the triangles, which follows the numbering of the input.
+  const auto key = [&](const std::vector<std::size_t>& sheetTriangles) {
+    std::array<Point3, 3> least;
+    bool firstTriangle = true;
+    for (const std::size_t t : sheetTriangles)
     {
+      std::array<Point3, 3> c{ { points[boundary[t][0]], points[boundary[t][1]],
+        points[boundary[t][2]] } };
+      std::sort(c.begin(), c.end());
+      if (firstTriangle || c < least)
+      {
+        least = c;
+        firstTriangle = false;
+      }
+    }
+    return least;
+  };
+  std::vector<std::vector<std::size_t>> tetsOfTriangle(boundary.size());
+  for (std::size_t t = 0; t < boundary.size(); ++t)
+  {
+    tetsOfTriangle[t].push_back(first + t);
+  }
+  for (Pinch& pinch : pinches)
+  {
+    const Id p = pinch.P;
+    std::vector<std::vector<std::size_t>>& sheets = pinch.Sheets;
+    for (std::vector<std::size_t>& sheetTriangles : sheets)
+    {
+      // Sums over a sheet (its middle) in an order of the geometry too.
+      std::sort(sheetTriangles.begin(), sheetTriangles.end(),
+        [&](std::size_t a, std::size_t b) { return key({ a }) < key({ b }); });
+    }
+    std::vector<std::pair<std::array<Point3, 3>, std::size_t>> order;
+    for (std::size_t s = 0; s < sheets.size(); ++s)
+    {
+      order.emplace_back(key(sheets[s]), s);
+    }
+    std::sort(order.begin(), order.end());
+    for (std::size_t o = 1; o < order.size(); ++o)
+    {
+      const std::vector<std::size_t>& sheetTriangles = sheets[order[o].second];
       // The new point: halfway from the apex to the sheet's middle near p, so
       // that it is inside this sheet's part of the cone.
       Point3 middle = points[p];
       Id near = 1;
-      for (const std::size_t t : sheets[s])
+      for (const std::size_t t : sheetTriangles)
       {
         for (int c = 0; c < 3; ++c)
         {
@@ -298,15 +322,7 @@ Id AppendCone(Id apex, const std::vector<std::array<Id, 3>>& boundary,
       // Every tetrahedron of these triangles that holds the edge (apex, p)
       // becomes two: (m, p, x, y) and (apex, m, x, y). Tetrahedra keep the apex
       // first, so later splits at another corner find it.
-      if (tetsOfTriangle.empty())
-      {
-        tetsOfTriangle.resize(boundary.size());
-        for (std::size_t t = 0; t < boundary.size(); ++t)
-        {
-          tetsOfTriangle[t].push_back(first + t);
-        }
-      }
-      for (const std::size_t t : sheets[s])
+      for (const std::size_t t : sheetTriangles)
       {
         const std::size_t count = tetsOfTriangle[t].size();
         for (std::size_t i = 0; i < count; ++i)
@@ -324,7 +340,6 @@ Id AppendCone(Id apex, const std::vector<std::array<Id, 3>>& boundary,
         }
       }
     }
-    begin = end;
   }
   return static_cast<Id>(tetrahedra.size() - first);
 }
