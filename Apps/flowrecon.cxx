@@ -968,8 +968,8 @@ void ReconstructCloud(const std::string& input, double tp, double tr, double twr
       {
         throw flowrecon::InputError("not asked for");
       }
-      bars = flowrecon::CellBarcode(flowrecon::ReconstructionCells(
-                                      fc, carriers, run, tdraw, triangles, tetrahedra, &cellNodes),
+      bars = flowrecon::CellBarcode(flowrecon::ReconstructionCells(fc, carriers, run, tdraw,
+                                      triangles, tetrahedra, &cellNodes, bettiCells),
         stage(0.9, 0.95), bettiCells);
     }
     catch (const flowrecon::InputError& e)

@@ -387,14 +387,27 @@ void ReconstructionToVTK(const FlowComplex& fc, const std::vector<Id>& carriers,
 
 FilteredCells ReconstructionCells(const FlowComplex& fc, const std::vector<Id>& carriers,
   const ReconstructionResult& run, double t, const CellsByNode& triangles,
-  const CellsByNode& tetrahedra, std::vector<Id>* cellNodes)
+  const CellsByNode& tetrahedra, std::vector<Id>* cellNodes, Id maximumCells)
 {
   FilteredCells cells;
   if (cellNodes)
   {
     cellNodes->clear();
   }
-  for (const Id node : SelectedNodes(fc, carriers, run, t))
+  const std::vector<Id> nodes = SelectedNodes(fc, carriers, run, t);
+  if (maximumCells >= 0)
+  {
+    Id count = 0;
+    for (const Id node : nodes)
+    {
+      ForEachCell(fc, node, triangles, tetrahedra, [&](int, int, const Id*, Id) { ++count; });
+    }
+    if (count > maximumCells)
+    {
+      throw InputError(TooManyCells(count, maximumCells));
+    }
+  }
+  for (const Id node : nodes)
   {
     const double threshold = run.Nodes[carriers[node]].Threshold;
     ForEachCell(fc, node, triangles, tetrahedra, [&](int, int n, const Id* ids, Id) {

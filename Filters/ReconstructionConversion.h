@@ -39,9 +39,11 @@ void ReconstructionToVTK(const FlowComplex& fc, const std::vector<Id>& carriers,
 
 /// The cells ReconstructionToVTK writes at `t` (fc's point ids), each with the
 /// Threshold of its carrier: the filtration of the nested family below t.
+/// Throws InputError, before gathering anything, when there are more than
+/// `maximumCells` (>= 0) of them: the Betti numbers are then skipped.
 FilteredCells ReconstructionCells(const FlowComplex& fc, const std::vector<Id>& carriers,
   const ReconstructionResult& run, double t, const CellsByNode& triangles,
-  const CellsByNode& tetrahedra, std::vector<Id>* cellNodes = nullptr);
+  const CellsByNode& tetrahedra, std::vector<Id>* cellNodes = nullptr, Id maximumCells = -1);
 
 /// The under-sampling warnings as points (vtkPolyData with vertices): one per
 /// change, at the critical point of the node whose cell brings it

@@ -284,7 +284,8 @@ bool vtkFlowReconstruction::DrawGeometry(double tmax)
     this->SetProgressText("Betti numbers");
     this->UpdateProgress(0.9);
     cache.Bars = flowrecon::CellBarcode(flowrecon::ReconstructionCells(fc, cache.Carrier,
-      cache.Run, tmax, cache.TriangleGroups, cache.TetraGroups, &cache.CellNodes),
+      cache.Run, tmax, cache.TriangleGroups, cache.TetraGroups, &cache.CellNodes,
+        this->MaximumTopologyCells),
       flowrecon::Progress(), this->MaximumTopologyCells);
   }
   catch (const flowrecon::InputError& e)

@@ -328,12 +328,17 @@ Id Find(std::vector<Id>& parent, Id x)
 
 } // namespace
 
+std::string TooManyCells(Id cells, Id maximumCells)
+{
+  return "skipped for " + std::to_string(cells) + " cells, more than " +
+    std::to_string(maximumCells) + " (flowrecon --betti-max-cells, MaximumTopologyCells)";
+}
+
 std::vector<Bar> CellBarcode(const FilteredCells& cells, const Progress& progress, Id maximumCells)
 {
   if (maximumCells >= 0 && cells.Size() > maximumCells)
   {
-    throw InputError("skipped for " + std::to_string(cells.Size()) + " cells, more than " +
-      std::to_string(maximumCells) + " (flowrecon --betti-max-cells, MaximumTopologyCells)");
+    throw InputError(TooManyCells(cells.Size(), maximumCells));
   }
   if (cells.Offsets.size() != cells.Values.size() + 1 || cells.Offsets.back() != static_cast<Id>(cells.Points.size()))
   {

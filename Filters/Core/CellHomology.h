@@ -10,6 +10,7 @@
 #include "Progress.h"
 
 #include <array>
+#include <string>
 #include <vector>
 
 namespace flowrecon
@@ -44,6 +45,9 @@ struct Bar
 /// reconstruction (cost follows the output, but the caller chooses how much).
 std::vector<Bar> CellBarcode(const FilteredCells& cells, const Progress& progress = Progress(),
   Id maximumCells = -1);
+
+/// The message of that refusal, for callers that count cells before gathering them.
+std::string TooManyCells(Id cells, Id maximumCells);
 
 /// b0..b3 of the cells with value < t (the reconstruction at t_r = t).
 std::array<Id, 4> BettiNumbersBelow(const std::vector<Bar>& bars, double t);
