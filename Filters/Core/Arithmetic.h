@@ -7,7 +7,8 @@
 
 #include "FlowComplex.h"
 
-#include <CGAL/Exact_rational.h>
+#include "ExactRational.h"
+
 #include <CGAL/FPU.h>
 #include <CGAL/Interval_nt.h>
 #include <CGAL/Uncertain.h>
@@ -20,7 +21,16 @@ namespace flowrecon
 {
 
 using IntervalFT = CGAL::Interval_nt_advanced; // needs a Protect_FPU_rounding scope
-using ExactFT = CGAL::Exact_rational;
+using ExactFT = ExactRational;
+
+inline double ToDouble(const IntervalFT& x)
+{
+  return CGAL::to_double(x);
+}
+inline double ToDouble(const ExactFT& x)
+{
+  return x.ToDouble();
+}
 
 template <class FT>
 struct Vec
@@ -38,7 +48,7 @@ struct Vec
   {
     return Vec{ Y * o.Z - Z * o.Y, Z * o.X - X * o.Z, X * o.Y - Y * o.X };
   }
-  Point3 ToDouble() const { return Point3{ { CGAL::to_double(X), CGAL::to_double(Y), CGAL::to_double(Z) } }; }
+  Point3 ToDouble() const { return Point3{ { flowrecon::ToDouble(X), flowrecon::ToDouble(Y), flowrecon::ToDouble(Z) } }; }
 };
 
 /// Sign of x; throws CGAL::Uncertain_conversion_exception if an interval cannot tell.
@@ -48,7 +58,7 @@ inline int CertainSign(const IntervalFT& x)
 }
 inline int CertainSign(const ExactFT& x)
 {
-  return static_cast<int>(CGAL::sign(x));
+  return static_cast<int>(x.Sign());
 }
 
 /// Circumcentre of triangle abc inside its own plane.
@@ -142,7 +152,7 @@ std::array<double, N> Certified(F&& f)
       std::array<double, N> out;
       for (std::size_t i = 0; i < N; ++i)
       {
-        out[i] = CGAL::to_double(r[i]);
+        out[i] = ToDouble(r[i]);
       }
       return out;
     }
@@ -151,7 +161,7 @@ std::array<double, N> Certified(F&& f)
   std::array<double, N> out;
   for (std::size_t i = 0; i < N; ++i)
   {
-    out[i] = CGAL::to_double(r[i]);
+    out[i] = ToDouble(r[i]);
   }
   return out;
 }

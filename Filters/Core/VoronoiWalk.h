@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <vector>
 
 namespace flowrecon
@@ -143,15 +144,24 @@ inline IntervalFT Moebius(const IntervalFT& a, const IntervalFT& b, const Interv
   const IntervalFT flo = -(a + b * lo) / (c + d * lo), fhi = -(a + b * hi) / (c + d * hi);
   return IntervalFT(std::min(flo.inf(), fhi.inf()), std::max(flo.sup(), fhi.sup()));
 }
+/// Exactly, on numerators and denominators: with lambda = p / q, the result is
+/// -(a q + b p) / (c q + d p) up to the denominators of a..d. Its terms grow by
+/// a constant per step of a walk; past about 1024 bits (a double overflows)
+/// they are reduced, which costs a gcd that most walks, a few steps long, do
+/// not need.
 inline ExactFT Moebius(
   const ExactFT& a, const ExactFT& b, const ExactFT& c, const ExactFT& d, const ExactFT& lambda)
 {
-  const ExactFT den = c + d * lambda;
-  if (CGAL::sign(den) == CGAL::ZERO)
+  const ExactFT q(lambda.Denominator(), CGAL::Mpzf(1)), p(lambda.Numerator(), CGAL::Mpzf(1));
+  const ExactFT top = a * q + b * p, bottom = c * q + d * p;
+  if (bottom.Sign() == CGAL::ZERO)
   {
     throw Degenerate("walk runs parallel to a Voronoi edge");
   }
-  return -(a + b * lambda) / den;
+  const ExactFT next = -top / bottom;
+  const bool large = !std::isfinite(next.Numerator().to_double()) ||
+    !std::isfinite(next.Denominator().to_double());
+  return large ? next.Reduced() : next;
 }
 
 /// The first exit of the walk from z (on V(z.G), inside V(uv)) along the line
