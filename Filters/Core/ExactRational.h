@@ -17,6 +17,8 @@
 #include <CGAL/enum.h>
 #include <CGAL/Gmpq.h>
 
+#include <cfloat>
+#include <cmath>
 #include <stdexcept>
 #include <utility>
 
@@ -70,7 +72,38 @@ public:
   }
 
   /// Truncated to a double, as GMP's mpq_get_d, for any sizes of the terms.
-  double ToDouble() const { return this->Quotient().to_double(); }
+  double ToDouble() const
+  {
+    // N / D = (a / 2^i) / (b / 2^j) with integers a, b: the quotient of a and b
+    // scaled to 54-55 bits and truncated, then truncated again to 53 bits by
+    // mpz_get_d, is the truncation of the exact value (no gcd, unlike Gmpq).
+    if (this->N.is_zero())
+    {
+      return 0;
+    }
+    const CGAL::Gmpq n = static_cast<CGAL::Gmpq>(this->N), d = static_cast<CGAL::Gmpq>(this->D);
+    mpz_t a, b, q;
+    mpz_init_set(a, mpq_numref(n.mpq()));
+    mpz_init_set(b, mpq_numref(d.mpq()));
+    mpz_init(q);
+    const long shift = static_cast<long>(mpz_sizeinbase(b, 2)) - static_cast<long>(mpz_sizeinbase(a, 2)) + 54;
+    if (shift >= 0)
+    {
+      mpz_mul_2exp(a, a, static_cast<mp_bitcnt_t>(shift));
+    }
+    else
+    {
+      mpz_mul_2exp(b, b, static_cast<mp_bitcnt_t>(-shift));
+    }
+    mpz_tdiv_q(q, a, b);
+    // Powers of two left in the denominators: 2^j / 2^i, as exponents.
+    const long i = static_cast<long>(mpz_sizeinbase(mpq_denref(n.mpq()), 2)) - 1;
+    const long j = static_cast<long>(mpz_sizeinbase(mpq_denref(d.mpq()), 2)) - 1;
+    const double x = std::ldexp(mpz_get_d(q), static_cast<int>(j - i - shift));
+    mpz_clears(a, b, q, nullptr);
+    // Below the normal range ldexp rounds instead of truncating: GMP then.
+    return std::isfinite(x) && std::abs(x) >= DBL_MIN ? x : this->Quotient().to_double();
+  }
 
   /// As a canonical GMP rational.
   CGAL::Gmpq Quotient() const
