@@ -397,6 +397,11 @@ void RequireMemoryForVTK(const FlowComplex& fc)
 
 void ToMultiBlock(const FlowComplex& fc, vtkMultiBlockDataSet* output, const Progress& progress)
 {
+  if (!fc.DeferredPatches.empty())
+  {
+    // A stored HasseDiagram block promises every arc.
+    throw InputError("a flow complex with deferred patches has no complete Hasse diagram to store");
+  }
   // Each block's share of the progress: its number of items (nodes, arcs,
   // cells, flow-line points), which is what its copy costs.
   double points = 0;

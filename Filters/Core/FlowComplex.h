@@ -5,6 +5,7 @@
 #define flowrecon_FlowComplex_h
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -118,6 +119,12 @@ struct FlowComplex
   /// Index 3: tetrahedra (cone from the maximum over its boundary patches, fins once).
   std::vector<std::array<Id, 4>> Tetrahedra;
   std::vector<Id> TetrahedronNode;
+
+  /// Index-2 nodes (sorted) whose patches were not walked, so that their 1-2
+  /// arcs are missing (BuildOptions::DeferPatchesAboveRatio): every ratio of
+  /// those arcs is at least DeferralRatio. Empty for a complete diagram.
+  std::vector<Id> DeferredPatches;
+  double DeferralRatio = HUGE_VAL;
 
   /// Unstable manifolds of index-2 nodes: two flow lines each.
   std::vector<FlowLine> FlowLines;

@@ -15,6 +15,7 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 #include <tbb/scalable_allocator.h>
 #include <tbb/task_group.h>
 
@@ -210,6 +211,45 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
   }
   fc.Time.CriticalPoints = Seconds(t);
 
+  // Deferred patches: decided on the very values MakeNode gives the nodes below,
+  // before any walk (the 1-2 arcs cannot raise them: see the check after ScaleBack).
+  std::vector<char> deferred;
+  fc.DeferredPatches.clear();
+  fc.DeferralRatio = HUGE_VAL;
+  if (!this->Options.StableManifolds && this->Options.DeferPatchesAboveRatio < HUGE_VAL &&
+    nEdges > 0)
+  {
+    const double largest = tbb::parallel_reduce(tbb::blocked_range<Id>(0, nEdges), 0.0,
+      [&](const tbb::blocked_range<Id>& r, double v) {
+        for (Id i = r.begin(); i != r.end(); ++i)
+        {
+          v = std::max(v, this->MakeNode(1, cs.Edges[i].data(), coords).Value);
+        }
+        return v;
+      },
+      [](double a, double b) { return std::max(a, b); });
+    deferred.assign(cs.Facets.size(), 0);
+    const double ratio = this->Options.DeferPatchesAboveRatio;
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, cs.Facets.size()),
+      [&](const tbb::blocked_range<std::size_t>& r) {
+        for (std::size_t i = r.begin(); i != r.end(); ++i)
+        {
+          // V/L >= ratio in doubles implies V/V(a) >= ratio for every edge a
+          // (V(a) <= L, and rounding is monotone).
+          const double v = this->MakeNode(2, Widen(cs.Facets[i].Vertices).data(), coords).Value;
+          deferred[i] = v / largest >= ratio ? 1 : 0;
+        }
+      });
+    for (std::size_t i = 0; i < deferred.size(); ++i)
+    {
+      if (deferred[i])
+      {
+        fc.DeferredPatches.push_back(base2 + static_cast<Id>(i));
+      }
+    }
+    fc.DeferralRatio = ratio;
+  }
+
   // Stable manifolds of index-2 points and the 1-2 incidences.
   t = Clock::now();
   fc.Points.assign(this->Input.begin(), this->Input.end());
@@ -240,6 +280,10 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
         for (std::size_t i = r.begin(); i != r.end(); ++i)
         {
           Patch& patch = batch.Patches[i - begin];
+          if (!deferred.empty() && deferred[i])
+          {
+            continue;
+          }
           patch = ComputeStableManifold(
             *tri, cs, i, this->Options.StableManifolds, batch.Fallbacks[i - begin]);
           // Sorted here, in parallel: equal runs are the 1-2 multiplicities.
@@ -583,6 +627,23 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
   }
 
   this->ScaleBack();
+  if (!fc.DeferredPatches.empty())
+  {
+    // The promise of DeferredPatches on the final values (scaling back by a
+    // power of two keeps every ratio; a value raised by the pass above would not).
+    double largest = 0;
+    for (Id n = base1; n < base2; ++n)
+    {
+      largest = std::max(largest, fc.Nodes[n].Value);
+    }
+    for (const Id n : fc.DeferredPatches)
+    {
+      if (!(fc.Nodes[n].Value / largest >= fc.DeferralRatio))
+      {
+        throw Degenerate("deferred patch below its ratio");
+      }
+    }
+  }
   const DrawingBox box = BoxAround(fc.Points, fc.NumberOfInputPoints, 0.25);
   for (FlowLine& line : fc.FlowLines)
   {

@@ -5,6 +5,7 @@
 #include "FlowComplex.h"
 #include "Progress.h"
 
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -22,6 +23,12 @@ struct BuildOptions
   std::uint64_t Seed = 1;        ///< seed of the perturbation of degenerate input
   int MaxAttempts = 6;           ///< perturbations tried before giving up
   bool ExactOnly = false;        ///< skip the interval filter (for testing the exact path)
+  /// Without StableManifolds: the patches of index-2 nodes whose value is at
+  /// least this many times the largest Gabriel-edge value are not walked (no
+  /// 1-2 arcs; listed in FlowComplex::DeferredPatches). Every ratio V(b)/V(a)
+  /// of their 1-2 arcs is then >= it: no cancellation below it and no upflow
+  /// below it uses them (DeferredPatches.h walks them when they are needed).
+  double DeferPatchesAboveRatio = HUGE_VAL;
 };
 
 /// The flow complex of `points`. Throws InputError for unusable input (non-finite

@@ -34,13 +34,17 @@ public:
     : Nodes(nodes)
     , Diagram(nodes, arcs)
     , Alive(nodes.size(), true)
-    , DirectOwners(nodes.size())
   {
   }
 
-  SimplificationResult Run(double threshold, const Progress& progress)
+  SimplificationResult Run(double threshold, const Progress& progress, bool recordLowers)
   {
     this->Threshold = threshold;
+    this->RecordLowers = recordLowers;
+    SimplificationResult result;
+    result.DirectOwnerOffsets.assign(1, 0);
+    result.LowerOffsets.assign(1, 0);
+    this->Result = &result;
     std::vector<Candidate> initial;
     for (Id lower = 0; lower < this->Diagram.NodeCount(); ++lower)
     {
@@ -52,7 +56,6 @@ public:
     const double expected = std::max<double>(1, static_cast<double>(initial.size()));
     std::priority_queue<Candidate> queue(std::less<Candidate>(), std::move(initial));
     std::vector<Candidate> fresh;
-    SimplificationResult result;
     std::size_t pops = 0;
     progress(0, "Simplifying the Hasse diagram");
     // t_p < 1 is the paper's "no persistence" (t_p = 0): say so explicitly rather
@@ -95,7 +98,11 @@ public:
     }
     result.Survives = this->Alive;
     result.Arcs = this->Diagram.Arcs();
-    this->ResolveOwners(result);
+    if (!this->RecordLowers)
+    {
+      result.LowerOffsets.assign(result.Pairs.size() + 1, 0);
+    }
+    ResolveOwners(result, {});
     progress(1, "Simplifying the Hasse diagram");
     return result;
   }
@@ -138,7 +145,7 @@ private:
       }
     }
     this->Uppers.clear();
-    std::vector<Id>& owners = this->DirectOwners[a];
+    std::vector<Id>& owners = this->Owners;
     owners.clear();
     for (const HasseDiagram::HalfArc& y : this->Diagram.Out(a))
     {
@@ -155,7 +162,18 @@ private:
       }
     }
     std::sort(owners.begin(), owners.end());
-    this->DirectOwners[b] = owners;
+    SimplificationResult& r = *this->Result;
+    r.DirectOwners.insert(r.DirectOwners.end(), owners.begin(), owners.end());
+    r.DirectOwnerOffsets.push_back(static_cast<Id>(r.DirectOwners.size()));
+    if (this->RecordLowers)
+    {
+      if (this->Nodes[a].Index == 1)
+      {
+        r.Lowers.insert(r.Lowers.end(), this->Lowers.begin(), this->Lowers.end());
+        std::sort(r.Lowers.end() - static_cast<std::ptrdiff_t>(this->Lowers.size()), r.Lowers.end());
+      }
+      r.LowerOffsets.push_back(static_cast<Id>(r.Lowers.size()));
+    }
     this->Diagram.Remove(a);
     this->Diagram.Remove(b);
     this->Alive[a] = false;
@@ -171,55 +189,15 @@ private:
         }
       }
     }
-    this->Order.push_back(a);
-    this->Order.push_back(b);
-  }
-
-  /// Owners are transitive: a direct owner that was cancelled later hands over
-  /// its own owners. Direct owners were alive at the cancellation, so they were
-  /// cancelled later if at all: resolving in reverse cancellation order finds
-  /// them already resolved.
-  void ResolveOwners(SimplificationResult& result) const
-  {
-    std::vector<std::vector<Id>> resolved(this->Nodes.size());
-    std::vector<Id> merged;
-    for (auto it = this->Order.rbegin(); it != this->Order.rend(); ++it)
-    {
-      merged.clear();
-      for (const Id d : this->DirectOwners[*it])
-      {
-        if (this->Alive[d])
-        {
-          merged.push_back(d);
-        }
-        else
-        {
-          merged.insert(merged.end(), resolved[d].begin(), resolved[d].end());
-        }
-      }
-      std::sort(merged.begin(), merged.end());
-      merged.erase(std::unique(merged.begin(), merged.end()), merged.end());
-      resolved[*it] = merged;
-    }
-    result.OwnerOffsets.assign(this->Nodes.size() + 1, 0);
-    for (std::size_t i = 0; i < this->Nodes.size(); ++i)
-    {
-      result.OwnerOffsets[i + 1] = result.OwnerOffsets[i] + static_cast<Id>(resolved[i].size());
-    }
-    result.Owners.reserve(static_cast<std::size_t>(result.OwnerOffsets.back()));
-    for (const std::vector<Id>& r : resolved)
-    {
-      result.Owners.insert(result.Owners.end(), r.begin(), r.end());
-    }
   }
 
   const std::vector<Node>& Nodes;
   HasseDiagram Diagram;
   std::vector<bool> Alive;
-  std::vector<std::vector<Id>> DirectOwners;
-  std::vector<Id> Order; ///< cancelled nodes, in cancellation order
+  SimplificationResult* Result = nullptr;
+  bool RecordLowers = false;
   double Threshold = 0;
-  std::vector<Id> Lowers, Uppers;
+  std::vector<Id> Lowers, Uppers, Owners;
 };
 
 } // namespace
@@ -231,8 +209,77 @@ SimplificationResult Simplify(const std::vector<Node>& nodes, const std::vector<
   return Simplify(nodes, std::move(copy), persistenceThreshold, progress);
 }
 
+void ResolveOwners(SimplificationResult& result, const std::vector<std::pair<Id, Id>>& extra)
+{
+  const std::size_t pairs = result.Pairs.size();
+  if (result.DirectOwnerOffsets.size() != pairs + 1)
+  {
+    throw InputError("simplification: direct owners do not match the pairs");
+  }
+  std::vector<std::pair<Id, Id>> more(extra);
+  for (const auto& e : more)
+  {
+    if (e.first < 0 || static_cast<std::size_t>(e.first) >= pairs)
+    {
+      throw InputError("simplification: owner of a pair out of range");
+    }
+  }
+  std::sort(more.begin(), more.end());
+  // Owners are transitive: a direct owner that was cancelled later hands over
+  // its own owners. Direct owners were alive at the cancellation, so they were
+  // cancelled later if at all: resolving in reverse cancellation order finds
+  // them already resolved.
+  const std::size_t n = result.Survives.size();
+  std::vector<std::vector<Id>> resolved(n);
+  std::vector<Id> merged;
+  auto add = [&](Id d) {
+    if (d < 0 || static_cast<std::size_t>(d) >= n)
+    {
+      throw InputError("simplification: owner out of range");
+    }
+    if (result.Survives[d])
+    {
+      merged.push_back(d);
+    }
+    else
+    {
+      merged.insert(merged.end(), resolved[d].begin(), resolved[d].end());
+    }
+  };
+  auto extraBegin = more.end();
+  for (std::size_t p = pairs; p-- > 0;)
+  {
+    merged.clear();
+    for (Id k = result.DirectOwnerOffsets[p]; k < result.DirectOwnerOffsets[p + 1]; ++k)
+    {
+      add(result.DirectOwners[k]);
+    }
+    auto first = std::lower_bound(more.begin(), extraBegin, std::make_pair(static_cast<Id>(p), Id(-1)));
+    for (auto e = first; e != extraBegin; ++e)
+    {
+      add(e->second);
+    }
+    extraBegin = first;
+    std::sort(merged.begin(), merged.end());
+    merged.erase(std::unique(merged.begin(), merged.end()), merged.end());
+    resolved[result.Pairs[p].Lower] = merged;
+    resolved[result.Pairs[p].Upper] = merged;
+  }
+  result.OwnerOffsets.assign(n + 1, 0);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    result.OwnerOffsets[i + 1] = result.OwnerOffsets[i] + static_cast<Id>(resolved[i].size());
+  }
+  result.Owners.clear();
+  result.Owners.reserve(static_cast<std::size_t>(result.OwnerOffsets.back()));
+  for (const std::vector<Id>& r : resolved)
+  {
+    result.Owners.insert(result.Owners.end(), r.begin(), r.end());
+  }
+}
+
 SimplificationResult Simplify(const std::vector<Node>& nodes, std::vector<Arc>&& arcs,
-  double persistenceThreshold, const Progress& progress)
+  double persistenceThreshold, const Progress& progress, bool recordLowers)
 {
   if (std::isnan(persistenceThreshold))
   {
@@ -245,7 +292,7 @@ SimplificationResult Simplify(const std::vector<Node>& nodes, std::vector<Arc>&&
     "use t_p 0 (no simplification) or fewer points");
   Simplifier simplifier(nodes, arcs);
   std::vector<Arc>().swap(arcs);
-  return simplifier.Run(persistenceThreshold, progress);
+  return simplifier.Run(persistenceThreshold, progress, recordLowers);
 }
 
 } // namespace flowrecon

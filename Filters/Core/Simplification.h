@@ -6,6 +6,7 @@
 #include "FlowComplex.h"
 #include "Progress.h"
 
+#include <utility>
 #include <vector>
 
 namespace flowrecon
@@ -40,6 +41,15 @@ struct SimplificationResult
   std::vector<Id> OwnerOffsets; ///< size = nodes + 1
   std::vector<Id> Owners;       ///< sorted within each row
 
+  /// Per pair, in the order of Pairs: its direct owners, the successors of
+  /// Lower other than Upper when the pair was cancelled (compressed rows, sorted).
+  std::vector<Id> DirectOwnerOffsets, DirectOwners;
+  /// When asked for (recordLowers): per pair, the lowers x != Lower of odd arcs
+  /// x -> Upper when it was cancelled, for 1-2 pairs (rows of 2-3 pairs are
+  /// empty). With DirectOwners, enough to replay the cancellations on a node
+  /// whose In list was not known (DeferredPatches.h).
+  std::vector<Id> LowerOffsets, Lowers;
+
   const Id* OwnersBegin(Id node) const { return this->Owners.data() + this->OwnerOffsets[node]; }
   const Id* OwnersEnd(Id node) const { return this->Owners.data() + this->OwnerOffsets[node + 1]; }
   std::vector<Id> OwnersOf(Id node) const
@@ -60,7 +70,12 @@ SimplificationResult Simplify(const std::vector<Node>& nodes, const std::vector<
 /// The same, taking the arcs over: they are freed once the diagram is built,
 /// which lowers the peak memory of large clouds (the arcs are left empty).
 SimplificationResult Simplify(const std::vector<Node>& nodes, std::vector<Arc>&& arcs,
-  double persistenceThreshold, const Progress& progress);
+  double persistenceThreshold, const Progress& progress, bool recordLowers = false);
+
+/// Recomputes Owners and OwnerOffsets from DirectOwners plus `extra` direct
+/// owners, (pair position, node) entries: the successors a replay found that
+/// the diagram did not hold when the pair was cancelled (deferred patches).
+void ResolveOwners(SimplificationResult& result, const std::vector<std::pair<Id, Id>>& extra);
 
 } // namespace flowrecon
 
