@@ -3,6 +3,7 @@
 #include "Arithmetic.h"
 #include "CriticalSimplices.h"
 #include "InputPreparation.h"
+#include "Retriangulation.h"
 #include "MemoryGuard.h"
 #include "ParallelSlices.h"
 #include "StableManifold.h"
@@ -28,10 +29,6 @@ namespace
 /// node (40 B), VTK's connectivity, offset and type (41 B) and ten cell-data
 /// values (76 B), plus a share of the constructed points.
 constexpr double BytesPerCell = 200;
-
-/// Triangulation, critical simplices and the walk tables, per distinct point
-/// (measured peaks of the builder are 1.4-1.5 KB per point on volume samples).
-constexpr double BytesPerPoint = 1500;
 
 } // namespace
 
@@ -87,7 +84,7 @@ std::vector<Id> NodesWithinBudget(
 
 void DrawStableManifolds(const std::vector<Point3>& points, const BuildOptions& options,
   const std::vector<Id>& draw, FlowComplex& fc, const Progress& progress, const std::string& advice,
-  const std::vector<Arc>* unsimplifiedArcs)
+  const std::vector<Arc>* unsimplifiedArcs, const Retriangulation* retriangulation)
 {
   struct ExactScope
   {
@@ -95,8 +92,7 @@ void DrawStableManifolds(const std::vector<Point3>& points, const BuildOptions& 
     ~ExactScope() { ExactOnly() = this->Saved; }
   } exactScope;
   ExactOnly() = options.ExactOnly;
-  const std::string mismatch =
-    "the flow complex does not belong to its points (edited file, or another perturbation seed)";
+  const std::string mismatch = Retriangulation::Mismatch();
   fc.Points = points;
   fc.NumberOfInputPoints = static_cast<Id>(points.size());
   fc.Triangles.clear();
@@ -144,43 +140,31 @@ void DrawStableManifolds(const std::vector<Point3>& points, const BuildOptions& 
     return;
   }
 
-  PreparedInput in = PrepareForTriangulation(points);
-  if (static_cast<Id>(in.Unique.size()) != n[0])
+  std::optional<Retriangulation> own;
+  if (!retriangulation)
   {
-    throw InputError(mismatch);
+    own.emplace(points, options, fc, progress, advice);
+    retriangulation = &*own;
   }
-  RequireMemory(BytesPerPoint * static_cast<double>(in.Unique.size()),
-    "the triangulation of " + std::to_string(in.Unique.size()) + " points", advice);
-  const std::vector<Point3> coords = AttemptCoordinates(in, fc.Report.Attempts, options.Seed);
-  progress(0.0, "Delaunay triangulation");
-  const Triangulation tri(coords, progress.Range(0, 0.2));
-  progress(0.2, "critical points");
-  const CriticalSimplices cs = FindCriticalSimplices(tri, progress);
-  const Id m = tri.NumberOfVertices();
-  const Id nEdges = static_cast<Id>(cs.Edges.size()), nFacets = static_cast<Id>(cs.Facets.size());
+  const Retriangulation& re = *retriangulation;
+  if (re.Options().Seed != options.Seed || re.Options().ExactOnly != options.ExactOnly)
+  {
+    throw InputError("drawing: the triangulation was made with other options");
+  }
+  const Triangulation& tri = re.Tri();
+  const CriticalSimplices& cs = re.Critical();
+  const PreparedInput& in = re.Prepared();
+  const Id nFacets = static_cast<Id>(cs.Facets.size());
   const Id nCells = static_cast<Id>(cs.Cells.size());
-  const Id base2 = m + nEdges, base3 = base2 + nFacets;
-  if (tri.Dimension() < 3 || m != n[0] || nEdges != n[1] || nFacets != n[2] || nCells != n[3] ||
-    fc.InfinityNode != base3 + nCells)
+  const Id base2 = re.Base2(), base3 = re.Base3();
+  if (base3 + nCells != fc.InfinityNode || n[2] != nFacets || n[3] != nCells)
   {
     throw InputError(mismatch);
   }
   auto sameSimplex = [&](Id node, const Id* v, int count) {
-    std::array<std::int32_t, 4> s{ { -1, -1, -1, -1 } };
-    for (int k = 0; k < count; ++k)
-    {
-      s[k] = static_cast<std::int32_t>(in.InputId[v[k]]);
-    }
-    std::sort(s.begin(), s.begin() + count);
-    return s == fc.Nodes[node].Simplex;
+    return re.SameSimplex(fc, node, v, count);
   };
-  auto backScaled = [&](Point3 p) {
-    for (double& x : p)
-    {
-      x = std::ldexp(x, in.ScaleExponent);
-    }
-    return p;
-  };
+  auto backScaled = [&](const Point3& p) { return re.BackScaled(p); };
 
   // The boundary of a cone: the index-2 points with a flow line ending at its
   // maximum (the 2-3 arcs of the unsimplified complex, which a simplified input

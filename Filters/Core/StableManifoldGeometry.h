@@ -11,6 +11,8 @@
 namespace flowrecon
 {
 
+class Retriangulation;
+
 /// Cells of each node's stable manifold, read off the unsimplified Hasse diagram
 /// without drawing anything: a descending walk starts with 3 branches and each
 /// exit adds 2 branches and 2 triangles, each arrival 1 triangle, so A arrivals
@@ -39,9 +41,12 @@ std::vector<Id> NodesWithinBudget(
 /// `unsimplifiedArcs`, when given, holds (at least) the 2-3 arcs of the
 /// unsimplified complex: the cones' boundaries are then read from it instead of
 /// being found again by flow-line roots.
+/// `retriangulation`, when given, is that triangulation already made (with the
+/// same options): it is used instead of a new one.
 void DrawStableManifolds(const std::vector<Point3>& points, const BuildOptions& options,
   const std::vector<Id>& draw, FlowComplex& fc, const Progress& progress,
-  const std::string& advice, const std::vector<Arc>* unsimplifiedArcs = nullptr);
+  const std::string& advice, const std::vector<Arc>* unsimplifiedArcs = nullptr,
+  const Retriangulation* retriangulation = nullptr);
 
 } // namespace flowrecon
 

@@ -1,0 +1,93 @@
+#include "Retriangulation.h"
+
+#include "Arithmetic.h"
+#include "MemoryGuard.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace flowrecon
+{
+
+namespace
+{
+
+/// Triangulation, critical simplices and the walk tables, per distinct point
+/// (measured peaks of the builder are 1.4-1.5 KB per point on volume samples).
+constexpr double BytesPerPoint = 1500;
+
+} // namespace
+
+const char* Retriangulation::Mismatch()
+{
+  return "the flow complex does not belong to its points (edited file, or another perturbation seed)";
+}
+
+Retriangulation::Retriangulation(const std::vector<Point3>& points, const BuildOptions& options,
+  const FlowComplex& fc, const Progress& progress, const std::string& advice)
+  : In(PrepareForTriangulation(points))
+  , Opts(options)
+{
+  struct ExactScope
+  {
+    bool Saved = ExactOnly();
+    ~ExactScope() { ExactOnly() = this->Saved; }
+  } exactScope;
+  ExactOnly() = options.ExactOnly;
+  const std::array<Id, 4> n = fc.CountByIndex();
+  if (static_cast<Id>(this->In.Unique.size()) != n[0])
+  {
+    throw InputError(Mismatch());
+  }
+  for (const Node& node : fc.Nodes)
+  {
+    // A sample node sits exactly on its sample: any edited point shows here.
+    if (node.Index == 0 && !node.IsInfinity() &&
+      (node.Simplex[0] >= static_cast<Id>(points.size()) || points[node.Simplex[0]] != node.Location))
+    {
+      throw InputError(Mismatch());
+    }
+  }
+  RequireMemory(BytesPerPoint * static_cast<double>(this->In.Unique.size()),
+    "the triangulation of " + std::to_string(this->In.Unique.size()) + " points", advice);
+  this->Coords = AttemptCoordinates(this->In, fc.Report.Attempts, options.Seed);
+  progress(0.0, "Delaunay triangulation");
+  this->Tri_ = std::make_unique<const Triangulation>(this->Coords, progress.Range(0, 0.2));
+  progress(0.2, "critical points");
+  this->Cs = FindCriticalSimplices(*this->Tri_, progress);
+  const Triangulation& tri = *this->Tri_;
+  const Id m = tri.NumberOfVertices();
+  const Id nEdges = static_cast<Id>(this->Cs.Edges.size());
+  const Id nFacets = static_cast<Id>(this->Cs.Facets.size());
+  const Id nCells = static_cast<Id>(this->Cs.Cells.size());
+  this->Base2_ = m + nEdges;
+  this->Base3_ = this->Base2_ + nFacets;
+  if (tri.Dimension() < 3 || m != n[0] || nEdges != n[1] || nFacets != n[2] || nCells != n[3] ||
+    fc.InfinityNode != this->Base3_ + nCells)
+  {
+    throw InputError(Mismatch());
+  }
+  progress(0.35, "critical points");
+}
+
+bool Retriangulation::SameSimplex(const FlowComplex& fc, Id node, const Id* vertices, int count) const
+{
+  std::array<std::int32_t, 4> s{ { -1, -1, -1, -1 } };
+  for (int k = 0; k < count; ++k)
+  {
+    s[k] = static_cast<std::int32_t>(this->In.InputId[vertices[k]]);
+  }
+  std::sort(s.begin(), s.begin() + count);
+  return s == fc.Nodes[node].Simplex;
+}
+
+Point3 Retriangulation::BackScaled(Point3 p) const
+{
+  for (double& x : p)
+  {
+    x = std::ldexp(x, this->In.ScaleExponent);
+  }
+  return p;
+}
+
+} // namespace flowrecon

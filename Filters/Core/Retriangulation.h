@@ -1,0 +1,56 @@
+// The Delaunay triangulation and critical simplices of the points a flow complex
+// was built from, computed again (the floor cost) and checked against the
+// complex: what walking some of its patches later needs (the drawing of chosen
+// nodes, deferred patches). Carrying them through a pipeline would cost more.
+#ifndef flowrecon_Retriangulation_h
+#define flowrecon_Retriangulation_h
+
+#include "CriticalSimplices.h"
+#include "FlowComplexBuilder.h"
+#include "InputPreparation.h"
+#include "Triangulation.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace flowrecon
+{
+
+class Retriangulation
+{
+public:
+  /// `fc` must be the flow complex BuildFlowComplex computed from `points` with
+  /// options.Seed (its Nodes and Report.Attempts are used). Throws InputError
+  /// when the counts of critical simplices differ, or when the triangulation
+  /// would not fit in memory (`advice` says what to do); Aborted on request.
+  /// Reports progress from 0 to 0.35 of `progress` (the builder's shares).
+  Retriangulation(const std::vector<Point3>& points, const BuildOptions& options,
+    const FlowComplex& fc, const Progress& progress, const std::string& advice);
+
+  const Triangulation& Tri() const { return *this->Tri_; }
+  const CriticalSimplices& Critical() const { return this->Cs; }
+  const PreparedInput& Prepared() const { return this->In; }
+  const BuildOptions& Options() const { return this->Opts; }
+  /// Node id of the first index-2 and index-3 node.
+  Id Base2() const { return this->Base2_; }
+  Id Base3() const { return this->Base3_; }
+  /// Whether the node's simplex is the given triangulation vertices (input ids).
+  bool SameSimplex(const FlowComplex& fc, Id node, const Id* vertices, int count) const;
+  /// A constructed point in the input's units.
+  Point3 BackScaled(Point3 p) const;
+
+  static const char* Mismatch();
+
+private:
+  PreparedInput In;
+  BuildOptions Opts;
+  std::vector<Point3> Coords; ///< the triangulation refers to them
+  std::unique_ptr<const Triangulation> Tri_;
+  CriticalSimplices Cs;
+  Id Base2_ = 0, Base3_ = 0;
+};
+
+} // namespace flowrecon
+
+#endif
