@@ -15,6 +15,7 @@
 
 #include "FlowComplexConversion.h"
 #include "FlowReconNames.h"
+#include "CappedReconstruction.h"
 #include "FlowComplexBuilder.h" // flowrecon diagram calls the core directly
 #include "Persistence.h"
 #include "PersistenceDiagramConversion.h"
@@ -892,9 +893,9 @@ private:
 };
 
 void ReconstructCloud(const std::string& input, double tp, double tr, double twrite, double tdraw,
-  double window, bool betti, flowrecon::Id bettiCells, const FlowComplexOptions& options, vtkUnstructuredGrid* grid, vtkTable* profile,
+  double cap, double window, bool betti, flowrecon::Id bettiCells, const FlowComplexOptions& options, vtkUnstructuredGrid* grid, vtkTable* profile,
   vtkTable* topology, vtkPolyData* undersampling, std::vector<flowrecon::Node>& nodes,
-  PhaseClock& clock)
+  PhaseClock& clock, std::string& work)
 {
   vtkNew<vtkPointCloudReader> reader;
   reader->SetFileName(input.c_str());
@@ -926,36 +927,36 @@ void ReconstructCloud(const std::string& input, double tp, double tr, double twr
     flowrecon::BuildOptions build;
     build.StableManifolds = false;
     build.UnstableManifolds = false;
-    flowrecon::FlowComplex fc = flowrecon::BuildFlowComplex(samples, build, stage(0, 0.5));
-    clock("flow complex");
-    // The 2-3 arcs as computed: the boundaries of the cones to draw.
-    std::vector<flowrecon::Arc> cones;
-    for (const flowrecon::Arc& a : fc.Arcs)
+    const char* advice = "lower --tr (or --tr-max)";
+    // Exact below the cap; the patches that cannot matter below it are walked
+    // only when needed (DESIGN.md, "Cost follows the output").
+    flowrecon::CappedReconstruction r;
+    for (bool defer = true;; defer = false)
     {
-      if (fc.Nodes[a.Lower].Index == 2)
+      try
       {
-        cones.push_back(a);
+        r = flowrecon::ReconstructBelow(samples, build, tp, cap, defer, stage(0, 0.7), advice);
+        clock("flow complex, simplification, reconstruction queue");
+        flowrecon::DrawStableManifolds(samples, build,
+          flowrecon::NodesToDraw(r.Complex.Nodes, r.Carriers, r.Run, tdraw), r.Complex,
+          stage(0.7, 0.9), advice, &r.Cones, r.Triangulation.get());
+        break;
+      }
+      catch (const flowrecon::Degenerate&)
+      {
+        if (!defer)
+        {
+          throw flowrecon::InputError("input too degenerate (a tie in a stable manifold)");
+        }
       }
     }
-    flowrecon::SimplificationResult s;
-    const bool simplify = tp >= 1; // below 1 nothing is cancelled
-    if (simplify)
-    {
-      s = flowrecon::Simplify(fc.Nodes, std::move(fc.Arcs), tp, stage(0.5, 0.6));
-      fc.Arcs = std::move(s.Arcs); // the reconstruction grows on the simplified diagram
-      s.Arcs = {};
-    }
-    clock("simplification");
-    const std::vector<bool> survives = simplify ? s.Survives : std::vector<bool>(fc.Nodes.size(), true);
-    const std::vector<flowrecon::Id> init = flowrecon::InitializationEdges(
-      fc.Nodes, flowrecon::NearestNeighboursFromDiagram(fc.Nodes, fc.Arcs));
-    const flowrecon::ReconstructionResult run =
-      flowrecon::Reconstruct(fc.Nodes, fc.Arcs, survives, init, HUGE_VAL, stage(0.6, 0.7));
-    const std::vector<flowrecon::Id> carriers = flowrecon::CellCarriers(run, simplify ? &s : nullptr);
-    clock("reconstruction queue");
-    flowrecon::DrawStableManifolds(samples, build,
-      flowrecon::NodesToDraw(fc.Nodes, carriers, run, tdraw), fc, stage(0.7, 0.9),
-      "lower --tr (or --tr-max)", &cones);
+    r.Triangulation.reset();
+    work = "patches deferred: " + std::to_string(r.DeferredPatches) + " of " +
+      std::to_string(r.Complex.CountByIndex()[2]) + ", walked late: " + std::to_string(r.WalkedLate) +
+      ", owners found by replays: " + std::to_string(r.ReplayedOwners);
+    flowrecon::FlowComplex& fc = r.Complex;
+    const flowrecon::ReconstructionResult& run = r.Run;
+    const std::vector<flowrecon::Id>& carriers = r.Carriers;
     clock("drawing");
     const flowrecon::CellsByNode triangles(fc.TriangleNode, fc.Nodes.size());
     const flowrecon::CellsByNode tetrahedra(fc.TetrahedronNode, fc.Nodes.size());
@@ -1229,14 +1230,18 @@ int RunReconstruct(const Arguments& args)
   std::vector<flowrecon::Node> nodes; // for --jumps
   PhaseTimes times;
   PhaseClock clock(times);
+  std::string work; // what the output-sensitive path did, for --timings
   if (!complex)
   {
     grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
     profile = vtkSmartPointer<vtkTable>::New();
     topology = vtkSmartPointer<vtkTable>::New();
     undersampling = vtkSmartPointer<vtkPolyData>::New();
-    ReconstructCloud(input, tp, tr, trmax, tdraw, window, betti, bettiCells, options, grid, profile, topology,
-      undersampling, nodes, clock);
+    // The cap of the output-sensitive reconstruction: every t_r a user would
+    // try, as the profile shows them.
+    const double cap = std::max(tdraw, args.Has("--tr-max") ? trmax : 4.0);
+    ReconstructCloud(input, tp, tr, trmax, tdraw, cap, window, betti, bettiCells, options, grid, profile, topology,
+      undersampling, nodes, clock, work);
   }
   else
   {
@@ -1302,6 +1307,10 @@ int RunReconstruct(const Arguments& args)
                 << phase.second << ";";
     }
     std::cout << std::defaultfloat << "\n";
+    if (!work.empty())
+    {
+      std::cout << work << "\n";
+    }
   }
 
   const char* columns[5] = { flowrecon::names::Step, flowrecon::names::NodeId, flowrecon::names::Index, flowrecon::names::Priority, flowrecon::names::Threshold };

@@ -7,6 +7,7 @@
 #include <queue>
 #include <string>
 #include <tuple>
+#include <unordered_map>
 
 namespace flowrecon
 {
@@ -100,12 +101,13 @@ class Reconstructor
 {
 public:
   Reconstructor(const std::vector<Node>& nodes, const std::vector<Arc>& arcs,
-    const std::vector<bool>& survives, double tr)
+    const std::vector<bool>& survives, double tr, const LateArcs* late)
     : Nodes(nodes)
     , Survives(survives)
     , Graph(nodes.size(), arcs)
     , Tr(tr)
     , Best(nodes.size())
+    , Late(late)
   {
   }
 
@@ -178,9 +180,28 @@ private:
   void Extend(Id c)
   {
     const Adjacency& g = this->Graph;
-    for (Id k = g.InOffsets[c]; k < g.InOffsets[c + 1]; ++k)
+    if (this->Late && this->Late->Deferred[c])
     {
-      this->Consider(g.InNodes[k], 1, 0, Extension::Regularization, c);
+      const auto it = this->LateIn.find(c);
+      if (it == this->LateIn.end())
+      {
+        throw InputError("reconstruction: a deferred node entered other than by regularization");
+      }
+      for (const Id x : it->second)
+      {
+        this->Consider(x, 1, 0, Extension::Regularization, c);
+      }
+    }
+    else
+    {
+      if (this->Late && this->Nodes[c].Index == 3)
+      {
+        this->FetchLateArcs(c);
+      }
+      for (Id k = g.InOffsets[c]; k < g.InOffsets[c + 1]; ++k)
+      {
+        this->Consider(g.InNodes[k], 1, 0, Extension::Regularization, c);
+      }
     }
     const double vc = this->Nodes[c].Value;
     // Index-0 nodes have value 0: their upflow ratio is infinite, never < tr.
@@ -215,6 +236,44 @@ private:
     }
   }
 
+  /// The In lists of the deferred faces of maximum `c` that its regularization
+  /// is about to insert (the sorted rows of Adjacency, for the same ties).
+  void FetchLateArcs(Id c)
+  {
+    const Adjacency& g = this->Graph;
+    std::vector<Id> ask;
+    for (Id k = g.InOffsets[c]; k < g.InOffsets[c + 1]; ++k)
+    {
+      const Id y = g.InNodes[k];
+      if (this->Late->Deferred[y] && this->Survives[y] && this->Result.Nodes[y].Step < 0 &&
+        this->LateIn.find(y) == this->LateIn.end())
+      {
+        ask.push_back(y);
+      }
+    }
+    if (ask.empty())
+    {
+      return;
+    }
+    for (const Id y : ask)
+    {
+      this->LateIn[y]; // known from now on, even with no arcs
+    }
+    for (const Arc& a : this->Late->Walk(ask))
+    {
+      if (a.Multiplicity > 0 && this->LateIn.count(a.Upper))
+      {
+        this->LateIn[a.Upper].push_back(a.Lower);
+      }
+    }
+    for (const Id y : ask)
+    {
+      std::vector<Id>& row = this->LateIn[y];
+      std::sort(row.begin(), row.end());
+      row.erase(std::unique(row.begin(), row.end()), row.end());
+    }
+  }
+
   void Consider(Id d, double ratio, int gated, Extension kind, Id sponsor)
   {
     if (this->Result.Nodes[d].Step >= 0 || !this->Survives[d] || this->Nodes[d].IsInfinity())
@@ -245,6 +304,8 @@ private:
   std::priority_queue<Entry> Queue;
   double Running = 1;
   ReconstructionResult Result;
+  const LateArcs* Late;
+  std::unordered_map<Id, std::vector<Id>> LateIn;
 };
 
 } // namespace
@@ -263,7 +324,24 @@ ReconstructionResult Reconstruct(const std::vector<Node>& nodes, const std::vect
       " survival flags for " + std::to_string(nodes.size()) + " nodes");
   }
   CheckArcs(nodes, arcs, &survives);
-  Reconstructor r(nodes, arcs, survives, tr);
+  Reconstructor r(nodes, arcs, survives, tr, nullptr);
+  return r.Run(initializationEdges, progress);
+}
+
+ReconstructionResult Reconstruct(const std::vector<Node>& nodes, const std::vector<Arc>& arcs,
+  const std::vector<bool>& survives, const std::vector<Id>& initializationEdges, double tr,
+  const Progress& progress, const LateArcs& late)
+{
+  if (std::isnan(tr) || !(tr <= late.Ratio))
+  {
+    throw InputError("reconstruction: the threshold must not exceed the deferral ratio");
+  }
+  if (late.Deferred.size() != nodes.size() || survives.size() != nodes.size() || !late.Walk)
+  {
+    throw InputError("reconstruction: deferred flags do not match the diagram");
+  }
+  CheckArcs(nodes, arcs, &survives);
+  Reconstructor r(nodes, arcs, survives, tr, &late);
   return r.Run(initializationEdges, progress);
 }
 

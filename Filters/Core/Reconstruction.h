@@ -8,6 +8,7 @@
 #include "Simplification.h"
 
 #include <cmath>
+#include <functional>
 #include <vector>
 
 namespace flowrecon
@@ -74,6 +75,26 @@ struct ReconstructionResult
 ReconstructionResult Reconstruct(const std::vector<Node>& nodes, const std::vector<Arc>& arcs,
   const std::vector<bool>& survives, const std::vector<Id>& initializationEdges, double tr,
   const Progress& progress);
+
+/// Index-2 nodes whose 1-2 arcs `arcs` lacks (deferred patches, see
+/// DeferredPatches.h), and how to get them: Walk(ids) returns the arcs into
+/// those nodes. Every ratio of their 1-2 arcs is at least Ratio.
+struct LateArcs
+{
+  std::vector<char> Deferred; ///< one flag per node
+  double Ratio = HUGE_VAL;
+  std::function<std::vector<Arc>(const std::vector<Id>&)> Walk;
+};
+
+/// The same run, with the 1-2 arcs of `late.Deferred` nodes asked for when
+/// they are needed: below Ratio such a node only enters by regularization from
+/// a maximum, so their arcs are asked for (all of one maximum at once) when a
+/// maximum is inserted. Needs tr <= late.Ratio (throws InputError otherwise);
+/// then it equals the run on the complete diagram (same steps, priorities,
+/// kinds, sponsors), by the argument of DeferredPatches.h.
+ReconstructionResult Reconstruct(const std::vector<Node>& nodes, const std::vector<Arc>& arcs,
+  const std::vector<bool>& survives, const std::vector<Id>& initializationEdges, double tr,
+  const Progress& progress, const LateArcs& late);
 
 /// The initialization edges: index-1 nodes whose simplex is {v, nn(v)} for an
 /// index-0 node v. `nearestNeighbour[v]` is the index-0 node id of the nearest

@@ -27,6 +27,9 @@ public:
   /// Reports progress from 0 to 0.35 of `progress` (the builder's shares).
   Retriangulation(const std::vector<Point3>& points, const BuildOptions& options,
     const FlowComplex& fc, const Progress& progress, const std::string& advice);
+  /// The triangulation refers to Coords: not copied, not moved.
+  Retriangulation(const Retriangulation&) = delete;
+  Retriangulation& operator=(const Retriangulation&) = delete;
 
   const Triangulation& Tri() const { return *this->Tri_; }
   const CriticalSimplices& Critical() const { return this->Cs; }

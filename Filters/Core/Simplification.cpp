@@ -102,6 +102,7 @@ public:
     {
       result.LowerOffsets.assign(result.Pairs.size() + 1, 0);
     }
+    result.HasLowers = this->RecordLowers;
     ResolveOwners(result, {});
     progress(1, "Simplifying the Hasse diagram");
     return result;

@@ -49,6 +49,7 @@ struct SimplificationResult
   /// empty). With DirectOwners, enough to replay the cancellations on a node
   /// whose In list was not known (DeferredPatches.h).
   std::vector<Id> LowerOffsets, Lowers;
+  bool HasLowers = false; ///< whether Lowers were recorded
 
   const Id* OwnersBegin(Id node) const { return this->Owners.data() + this->OwnerOffsets[node]; }
   const Id* OwnersEnd(Id node) const { return this->Owners.data() + this->OwnerOffsets[node + 1]; }

@@ -1,0 +1,97 @@
+#include "CancellationReplay.h"
+
+#include <algorithm>
+#include <functional>
+#include <queue>
+
+namespace flowrecon
+{
+
+CancellationReplay::CancellationReplay(std::size_t nodeCount, const SimplificationResult& s)
+  : S(s)
+  , LowerPair(nodeCount, -1)
+  , RemovedBy(nodeCount, -1)
+{
+  if (s.Survives.size() != nodeCount || !s.HasLowers || s.LowerOffsets.size() != s.Pairs.size() + 1)
+  {
+    throw InputError("replay: the simplification did not record what a replay needs");
+  }
+  for (std::size_t p = 0; p < s.Pairs.size(); ++p)
+  {
+    const CancelledPair& pair = s.Pairs[p];
+    if (pair.Lower < 0 || pair.Upper < 0 || static_cast<std::size_t>(pair.Lower) >= nodeCount ||
+      static_cast<std::size_t>(pair.Upper) >= nodeCount)
+    {
+      throw InputError("replay: a cancelled pair out of range");
+    }
+    if (pair.PairType == 1)
+    {
+      this->LowerPair[pair.Lower] = static_cast<std::int32_t>(p);
+    }
+    this->RemovedBy[pair.Lower] = this->RemovedBy[pair.Upper] = static_cast<std::int32_t>(p);
+  }
+}
+
+void CancellationReplay::Replay(
+  Id y, std::vector<std::pair<Id, int>>& in, std::vector<std::pair<Id, Id>>& owners) const
+{
+  const SimplificationResult& s = this->S;
+  // Pairs cancelled after y went do not touch it.
+  const Id stop = this->RemovedBy[y] >= 0 ? this->RemovedBy[y] : static_cast<Id>(s.Pairs.size());
+  using Event = std::pair<Id, Id>; // (pair, lower)
+  std::priority_queue<Event, std::vector<Event>, std::greater<Event>> events;
+  auto schedule = [&](Id x) {
+    const Id p = this->LowerPair[x];
+    if (p >= 0 && p < stop)
+    {
+      events.emplace(p, x);
+    }
+  };
+  for (const auto& e : in)
+  {
+    schedule(e.first);
+  }
+  auto find = [&](Id x) {
+    return std::find_if(in.begin(), in.end(), [x](const std::pair<Id, int>& e) { return e.first == x; });
+  };
+  // Cancellations in their order. A lower x of b joins y's list only while x is
+  // alive, so x's own cancellation comes later: the queue only moves on.
+  while (!events.empty())
+  {
+    const Event e = events.top();
+    events.pop();
+    const auto a = find(e.second);
+    if (a == in.end())
+    {
+      continue; // flipped away before its cancellation (or a repeat)
+    }
+    // Every successor of a gets its cells, even arcs too (Simplification.cpp).
+    owners.emplace_back(e.first, y);
+    if (a->second % 2 == 1)
+    {
+      // d'y = dy + <dy, a> db over Z/2: y's incidence with each odd lower of b flips.
+      for (Id k = s.LowerOffsets[e.first]; k < s.LowerOffsets[e.first + 1]; ++k)
+      {
+        const Id x = s.Lowers[k];
+        const auto it = find(x);
+        if (it == in.end())
+        {
+          in.emplace_back(x, 1);
+          schedule(x);
+        }
+        else if (it->second % 2 == 1)
+        {
+          *it = in.back();
+          in.pop_back();
+        }
+        else
+        {
+          it->second = 1;
+        }
+      }
+    }
+    in.erase(find(e.second));
+  }
+}
+
+} // namespace flowrecon

@@ -1,0 +1,123 @@
+#include "CappedReconstruction.h"
+
+#include "DeferredPatches.h"
+
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+
+namespace flowrecon
+{
+
+namespace
+{
+
+CappedReconstruction Attempt(const std::vector<Point3>& points, const BuildOptions& options,
+  double tp, double cap, bool defer, const Progress& progress, const std::string& advice)
+{
+  CappedReconstruction r;
+  BuildOptions build = options;
+  build.StableManifolds = false;
+  build.UnstableManifolds = false;
+  build.DeferPatchesAboveRatio = defer ? cap : HUGE_VAL;
+  r.Complex = BuildFlowComplex(points, build, progress.Range(0, 0.7));
+  FlowComplex& fc = r.Complex;
+  r.DeferredPatches = static_cast<Id>(fc.DeferredPatches.size());
+  for (const Arc& a : fc.Arcs)
+  {
+    if (fc.Nodes[a.Lower].Index == 2)
+    {
+      r.Cones.push_back(a);
+    }
+  }
+  r.Simplified = tp >= 1; // below 1 nothing is cancelled
+  const bool late = !fc.DeferredPatches.empty();
+  if (r.Simplified)
+  {
+    r.Simplification = Simplify(fc.Nodes, std::move(fc.Arcs), tp, progress.Range(0.7, 0.8), late);
+    fc.Arcs = std::move(r.Simplification.Arcs); // the reconstruction grows on the simplified diagram
+    r.Simplification.Arcs = {};
+  }
+  const std::vector<bool> survives =
+    r.Simplified ? r.Simplification.Survives : std::vector<bool>(fc.Nodes.size(), true);
+  const std::vector<Id> init =
+    InitializationEdges(fc.Nodes, NearestNeighboursFromDiagram(fc.Nodes, fc.Arcs));
+  const SimplificationResult* s = r.Simplified ? &r.Simplification : nullptr;
+  if (!late)
+  {
+    r.Run = Reconstruct(fc.Nodes, fc.Arcs, survives, init, cap, progress.Range(0.8, 1.0));
+    r.Carriers = CellCarriers(r.Run, s);
+    return r;
+  }
+  r.Triangulation = std::make_unique<Retriangulation>(points, build, fc, progress.Range(0.8, 0.95), advice);
+  DeferredPatches deferred(fc, s, *r.Triangulation);
+  std::vector<Arc> walked;
+  Progress quiet;
+  quiet.ShouldAbort = progress.ShouldAbort;
+  LateArcs lateArcs;
+  lateArcs.Deferred = deferred.Flags();
+  lateArcs.Ratio = fc.DeferralRatio;
+  lateArcs.Walk = [&](const std::vector<Id>& nodes) {
+    std::vector<Arc> arcs = deferred.Walk(nodes, quiet);
+    walked.insert(walked.end(), arcs.begin(), arcs.end());
+    r.WalkedLate += static_cast<Id>(nodes.size());
+    return arcs;
+  };
+  r.Run = Reconstruct(fc.Nodes, fc.Arcs, survives, init, cap, progress.Range(0.95, 1.0), lateArcs);
+  r.Carriers = CellCarriers(r.Run, s);
+  if (s)
+  {
+    // A 1-2 cancellation hands its cells to every successor of its lower, the
+    // deferred ones too. They matter where they carry cells below the cap: the
+    // inserted ones (walked above) and the cancelled ones whose own owners
+    // (maxima, known) are inserted. Replaying those completes the owners.
+    std::vector<Id> carried;
+    for (const Id y : fc.DeferredPatches)
+    {
+      if (!s->Survives[y] && r.Carriers[y] >= 0)
+      {
+        carried.push_back(y);
+      }
+    }
+    deferred.Walk(carried, quiet);
+    r.WalkedLate += static_cast<Id>(carried.size());
+    const std::vector<std::pair<Id, Id>> extra = deferred.ExtraOwners();
+    r.ReplayedOwners = static_cast<Id>(extra.size());
+    ResolveOwners(r.Simplification, extra);
+    r.Carriers = CellCarriers(r.Run, s);
+  }
+  fc.Arcs.insert(fc.Arcs.end(), walked.begin(), walked.end());
+  std::sort(fc.Arcs.begin(), fc.Arcs.end(), [](const Arc& a, const Arc& b) {
+    return std::tie(a.Lower, a.Upper) < std::tie(b.Lower, b.Upper);
+  });
+  return r;
+}
+
+} // namespace
+
+CappedReconstruction ReconstructBelow(const std::vector<Point3>& points, BuildOptions options,
+  double persistenceThreshold, double cap, bool allowDeferral, const Progress& progress,
+  const std::string& advice)
+{
+  if (!(cap > 1) || std::isnan(persistenceThreshold))
+  {
+    throw InputError("reconstruction: the cap must be above 1 and t_p a number");
+  }
+  const bool defer = allowDeferral && cap < HUGE_VAL && persistenceThreshold < cap;
+  try
+  {
+    return Attempt(points, options, persistenceThreshold, cap, defer, progress, advice);
+  }
+  catch (const Degenerate&)
+  {
+    if (!defer)
+    {
+      throw;
+    }
+  }
+  // A deferred walk met a tie the build never saw: the eager build retries
+  // with another perturbation, as it would have.
+  return Attempt(points, options, persistenceThreshold, cap, false, progress, advice);
+}
+
+} // namespace flowrecon

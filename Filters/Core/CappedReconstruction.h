@@ -1,0 +1,56 @@
+// The reconstruction of a cloud, exact below a cap T_max, whose work follows
+// what lies below the cap (DESIGN.md, "Cost follows the output"): the patches
+// that cannot matter below T_max are walked only if a maximum below it
+// regularizes them (DeferredPatches.h). The eager computation is its oracle.
+#ifndef flowrecon_CappedReconstruction_h
+#define flowrecon_CappedReconstruction_h
+
+#include "FlowComplexBuilder.h"
+#include "Reconstruction.h"
+#include "Retriangulation.h"
+#include "Simplification.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace flowrecon
+{
+
+struct CappedReconstruction
+{
+  /// Nodes and arcs of the simplified diagram (arcs into deferred nodes only
+  /// for those walked), no geometry.
+  FlowComplex Complex;
+  /// The 2-3 arcs as computed, before simplification: the cones' boundaries.
+  std::vector<Arc> Cones;
+  bool Simplified = false;
+  SimplificationResult Simplification; ///< when Simplified (its Arcs moved to Complex)
+  /// The run at t_r = the cap: every node with Threshold < cap, as the run at
+  /// t_r = inf has them.
+  ReconstructionResult Run;
+  std::vector<Id> Carriers; ///< CellCarriers, exact for every carrier below the cap
+  /// The second triangulation when deferred patches needed one (share it with
+  /// DrawStableManifolds); null otherwise.
+  std::unique_ptr<Retriangulation> Triangulation;
+  Id DeferredPatches = 0; ///< patches not walked by the build
+  Id WalkedLate = 0;      ///< deferred patches walked for the reconstruction
+  Id ReplayedOwners = 0;  ///< owners of cancelled pairs found by the replays
+};
+
+/// Builds the Hasse diagram of `points` (`options`: seed, attempts; no geometry),
+/// simplifies it at `persistenceThreshold` (t_p < 1: none) and reconstructs it
+/// up to `cap` (> 1; HUGE_VAL: every step, which is the eager computation).
+/// With a finite cap above t_p, the patches of index-2 nodes at least `cap`
+/// times above the largest Gabriel edge are deferred; a walk that meets a tie
+/// in a deferred patch makes it start again without deferral (drawing a
+/// deferred patch later may meet one too: then call again with
+/// `allowDeferral` false). Throws what the stages throw (InputError, Aborted);
+/// `advice` ends memory errors.
+CappedReconstruction ReconstructBelow(const std::vector<Point3>& points, BuildOptions options,
+  double persistenceThreshold, double cap, bool allowDeferral, const Progress& progress,
+  const std::string& advice);
+
+} // namespace flowrecon
+
+#endif
