@@ -355,9 +355,12 @@ const std::vector<Command>& Commands()
       { { "--output", "-o", "OUT.vtu", "the unstructured grid to write (.vtu)" },
         { "--tr", nullptr, "T", "reconstruction threshold t_r > 1, 'inf' for all steps (2)" },
         { "--tr-max", nullptr, "T", "write every cell with Threshold < T >= t_r, so any t_r <= T\n"
-          "is a selection of the file; only those cells are drawn (t_r)" },
+          "is a selection of the file; only those cells are drawn (t_r). From a cloud, also\n"
+          "the cap below which the run is exact (4 when not given; 'inf': no cap): the\n"
+          "patches that cannot matter below it are walked only when needed" },
         { "--tp", nullptr, "P", "persistence threshold t_p, 0 for none (1.1)" },
-        { "--profile", nullptr, "P.csv", "write the profile of the t_r = inf run as CSV" },
+        { "--profile", nullptr, "P.csv", "write the profile of the t_r = inf run as CSV (from a\n"
+          "cloud: its steps below the cap, see --tr-max)" },
         { "--topology-profile", nullptr, "B.csv", "write the Betti numbers for every t_r up to\n"
           "--tr-max (4 when not given) as CSV: threshold,b0,b1,b2, one row per change" },
         { "--warn-window", nullptr, "F", "warn where the Betti numbers change for a t_r in\n"
@@ -367,7 +370,8 @@ const std::vector<Command>& Commands()
         { "--no-betti", nullptr, nullptr, "skip the Betti numbers, the topology profile and the\n"
           "warnings (on solids of millions of tetrahedra they cost about as much as the rest)" },
         { "--jumps", nullptr, "K", "print the K largest jumps of the profile (tracking back)" },
-        { "--timings", nullptr, nullptr, "print the seconds of each phase" }, ThreadsOption,
+        { "--timings", nullptr, nullptr, "print the seconds of each phase (and, from a cloud,\n"
+          "the patches deferred and walked late)" }, ThreadsOption,
         QuietOption },
       RunReconstruct },
     { "diagram", "write the persistence diagram of the flow complex",
