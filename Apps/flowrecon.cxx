@@ -939,7 +939,7 @@ void ReconstructCloud(const std::string& input, double tp, double tr, double twr
     {
       try
       {
-        r = flowrecon::ReconstructBelow(samples, build, tp, cap, defer, stage(0, 0.7), advice);
+        r = flowrecon::ReconstructBelow(samples, build, tp, cap, defer, stage(0, 0.7));
         clock("flow complex, simplification, reconstruction queue");
         flowrecon::DrawStableManifolds(samples, build,
           flowrecon::NodesToDraw(r.Complex.Nodes, r.Carriers, r.Run, tdraw), r.Complex,
@@ -958,6 +958,15 @@ void ReconstructCloud(const std::string& input, double tp, double tr, double twr
     work = "patches deferred: " + std::to_string(r.DeferredPatches) + " of " +
       std::to_string(r.Complex.CountByIndex()[2]) + ", walked late: " + std::to_string(r.WalkedLate) +
       ", owners found by replays: " + std::to_string(r.ReplayedOwners);
+    {
+      const flowrecon::Timings& t = r.Complex.Time;
+      std::ostringstream phases;
+      phases << std::fixed << std::setprecision(3) << "\nflow complex (s): Delaunay " << t.Delaunay
+             << "; critical points " << t.CriticalPoints << "; stable manifolds "
+             << t.StableManifolds << "; unstable manifolds " << t.UnstableManifolds
+             << "; assembly " << t.Assembly << ";";
+      work += phases.str();
+    }
     flowrecon::FlowComplex& fc = r.Complex;
     const flowrecon::ReconstructionResult& run = r.Run;
     const std::vector<flowrecon::Id>& carriers = r.Carriers;

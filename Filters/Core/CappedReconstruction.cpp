@@ -13,14 +13,16 @@ namespace
 {
 
 CappedReconstruction Attempt(const std::vector<Point3>& points, const BuildOptions& options,
-  double tp, double cap, bool defer, const Progress& progress, const std::string& advice)
+  double tp, double cap, bool defer, const Progress& progress)
 {
   CappedReconstruction r;
   BuildOptions build = options;
   build.StableManifolds = false;
   build.UnstableManifolds = false;
   build.DeferPatchesAboveRatio = defer ? cap : HUGE_VAL;
-  r.Complex = BuildFlowComplex(points, build, progress.Range(0, 0.7));
+  // The build's triangulation is kept: the deferred patches and the drawing
+  // walk on it (computing it again cost a quarter of a torus's run).
+  r.Complex = BuildFlowComplex(points, build, progress.Range(0, 0.7), &r.Triangulation);
   FlowComplex& fc = r.Complex;
   r.DeferredPatches = static_cast<Id>(fc.DeferredPatches.size());
   for (const Arc& a : fc.Arcs)
@@ -49,7 +51,6 @@ CappedReconstruction Attempt(const std::vector<Point3>& points, const BuildOptio
     r.Carriers = CellCarriers(r.Run, s);
     return r;
   }
-  r.Triangulation = std::make_unique<Retriangulation>(points, build, fc, progress.Range(0.8, 0.95), advice);
   DeferredPatches deferred(fc, s, *r.Triangulation);
   std::vector<Arc> walked;
   Progress quiet;
@@ -63,7 +64,7 @@ CappedReconstruction Attempt(const std::vector<Point3>& points, const BuildOptio
     r.WalkedLate += static_cast<Id>(nodes.size());
     return arcs;
   };
-  r.Run = Reconstruct(fc.Nodes, fc.Arcs, survives, init, cap, progress.Range(0.95, 1.0), lateArcs);
+  r.Run = Reconstruct(fc.Nodes, fc.Arcs, survives, init, cap, progress.Range(0.8, 1.0), lateArcs);
   r.Carriers = CellCarriers(r.Run, s);
   if (s)
   {
@@ -96,8 +97,7 @@ CappedReconstruction Attempt(const std::vector<Point3>& points, const BuildOptio
 } // namespace
 
 CappedReconstruction ReconstructBelow(const std::vector<Point3>& points, BuildOptions options,
-  double persistenceThreshold, double cap, bool allowDeferral, const Progress& progress,
-  const std::string& advice)
+  double persistenceThreshold, double cap, bool allowDeferral, const Progress& progress)
 {
   if (!(cap > 1) || std::isnan(persistenceThreshold))
   {
@@ -106,7 +106,7 @@ CappedReconstruction ReconstructBelow(const std::vector<Point3>& points, BuildOp
   const bool defer = allowDeferral && cap < HUGE_VAL && persistenceThreshold < cap;
   try
   {
-    return Attempt(points, options, persistenceThreshold, cap, defer, progress, advice);
+    return Attempt(points, options, persistenceThreshold, cap, defer, progress);
   }
   catch (const Degenerate&)
   {
@@ -117,7 +117,7 @@ CappedReconstruction ReconstructBelow(const std::vector<Point3>& points, BuildOp
   }
   // A deferred walk met a tie the build never saw: the eager build retries
   // with another perturbation, as it would have.
-  return Attempt(points, options, persistenceThreshold, cap, false, progress, advice);
+  return Attempt(points, options, persistenceThreshold, cap, false, progress);
 }
 
 } // namespace flowrecon

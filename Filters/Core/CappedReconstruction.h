@@ -30,8 +30,8 @@ struct CappedReconstruction
   /// t_r = inf has them.
   ReconstructionResult Run;
   std::vector<Id> Carriers; ///< CellCarriers, exact for every carrier below the cap
-  /// The second triangulation when deferred patches needed one (share it with
-  /// DrawStableManifolds); null otherwise.
+  /// The build's triangulation, kept for the walks that follow (share it with
+  /// DrawStableManifolds, then free it).
   std::unique_ptr<Retriangulation> Triangulation;
   Id DeferredPatches = 0; ///< patches not walked by the build
   Id WalkedLate = 0;      ///< deferred patches walked for the reconstruction
@@ -45,11 +45,9 @@ struct CappedReconstruction
 /// times above the largest Gabriel edge are deferred; a walk that meets a tie
 /// in a deferred patch makes it start again without deferral (drawing a
 /// deferred patch later may meet one too: then call again with
-/// `allowDeferral` false). Throws what the stages throw (InputError, Aborted);
-/// `advice` ends memory errors.
+/// `allowDeferral` false). Throws what the stages throw (InputError, Aborted).
 CappedReconstruction ReconstructBelow(const std::vector<Point3>& points, BuildOptions options,
-  double persistenceThreshold, double cap, bool allowDeferral, const Progress& progress,
-  const std::string& advice);
+  double persistenceThreshold, double cap, bool allowDeferral, const Progress& progress);
 
 } // namespace flowrecon
 

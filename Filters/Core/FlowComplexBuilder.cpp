@@ -7,6 +7,7 @@
 #include "InputPreparation.h"
 #include "MemoryGuard.h"
 #include "ParallelSlices.h"
+#include "Retriangulation.h"
 #include "StableManifold.h"
 #include "StableManifoldCone.h"
 #include "StableManifoldGeometry.h"
@@ -84,6 +85,10 @@ public:
   void Run(const std::vector<Point3>& coords, bool first);
 
   int ScaleExponent = 0;
+  /// When set, Run leaves its triangulation and critical simplices here.
+  bool Keep = false;
+  std::unique_ptr<const Triangulation> KeptTriangulation;
+  CriticalSimplices KeptCritical;
 
 private:
   void ScaleBack();
@@ -408,8 +413,11 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
   {
     triangleBegin[cs.Facets.size()] = static_cast<Id>(fc.Triangles.size());
   }
-  // The edge index served the walks only.
-  std::vector<Id>().swap(cs.EdgeOffsets);
+  // The edge index served the walks only (unless the walks go on later).
+  if (!this->Keep)
+  {
+    std::vector<Id>().swap(cs.EdgeOffsets);
+  }
   fc.Time.StableManifolds = Seconds(t);
 
   // Unstable manifolds: the two flow lines of each index-2 point.
@@ -552,13 +560,16 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
   // Everything below needs only the critical simplices: free the triangulation.
   t = Clock::now();
   this->Report(0.9, "Hasse diagram");
-  tri.reset();
-  // The triangulation's blocks came from tbbmalloc and the heap; the nodes below
-  // are one large mapping that cannot reuse them, so hand the freed pages back.
-  scalable_allocation_command(TBBMALLOC_CLEAN_ALL_BUFFERS, nullptr);
+  if (!this->Keep)
+  {
+    tri.reset();
+    // The triangulation's blocks came from tbbmalloc and the heap; the nodes below
+    // are one large mapping that cannot reuse them, so hand the freed pages back.
+    scalable_allocation_command(TBBMALLOC_CLEAN_ALL_BUFFERS, nullptr);
 #ifdef __GLIBC__
-  malloc_trim(0);
+    malloc_trim(0);
 #endif
+  }
 
   // Nodes are independent constructions: fill them in parallel.
   fc.Nodes.clear();
@@ -703,6 +714,11 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
     }
   }
   fc.Time.Assembly = Seconds(t);
+  if (this->Keep)
+  {
+    this->KeptTriangulation = std::move(tri);
+    this->KeptCritical = std::move(cs);
+  }
 }
 
 void Builder::ScaleBack()
@@ -745,6 +761,16 @@ void Builder::ScaleBack()
 FlowComplex BuildFlowComplex(
   const std::vector<Point3>& points, const BuildOptions& options, const Progress& progress)
 {
+  return BuildFlowComplex(points, options, progress, nullptr);
+}
+
+FlowComplex BuildFlowComplex(const std::vector<Point3>& points, const BuildOptions& options,
+  const Progress& progress, std::unique_ptr<Retriangulation>* keep)
+{
+  if (keep && options.StableManifolds)
+  {
+    throw InputError("keeping the triangulation is for builds without geometry");
+  }
   if (options.StableManifolds && options.MaximumGeometryCells >= 0)
   {
     // A budget: the Hasse diagram first, then the nodes that fit are drawn.
@@ -781,12 +807,16 @@ FlowComplex BuildFlowComplex(
   fc.Report.DuplicatePoints = static_cast<Id>(points.size() - in.Unique.size());
   Builder builder(in, points, options, progress, fc);
   builder.ScaleExponent = in.ScaleExponent;
+  builder.Keep = keep != nullptr;
+  std::unique_ptr<const std::vector<Point3>> coords;
   for (int attempt = 1;; ++attempt)
   {
     const double magnitude = PerturbationMagnitude(in, attempt);
     try
     {
-      builder.Run(AttemptCoordinates(in, attempt, options.Seed), attempt == 1);
+      builder.KeptTriangulation.reset(); // refers to the coordinates below
+      coords = std::make_unique<const std::vector<Point3>>(AttemptCoordinates(in, attempt, options.Seed));
+      builder.Run(*coords, attempt == 1);
       fc.Report.Attempts = attempt;
       fc.Report.Seed = options.Seed;
       fc.Report.PerturbationMagnitude = std::ldexp(magnitude, builder.ScaleExponent);
@@ -800,6 +830,11 @@ FlowComplex BuildFlowComplex(
           e.what() + ")");
       }
     }
+  }
+  if (keep)
+  {
+    *keep = std::make_unique<Retriangulation>(std::move(in), options, std::move(coords),
+      std::move(builder.KeptTriangulation), std::move(builder.KeptCritical));
   }
   fc.Time.Total = Seconds(start);
   progress(1.0, "done");

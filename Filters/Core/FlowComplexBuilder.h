@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace flowrecon
@@ -36,6 +37,14 @@ struct BuildOptions
 /// `progress` asks to stop. Degenerate input is perturbed (see Report).
 FlowComplex BuildFlowComplex(
   const std::vector<Point3>& points, const BuildOptions& options, const Progress& progress);
+
+class Retriangulation;
+
+/// The same; with `keep`, the triangulation is handed over there instead of
+/// being freed (for walks after the build: drawing, deferred patches), which
+/// spares computing it again at the cost of holding it meanwhile.
+FlowComplex BuildFlowComplex(const std::vector<Point3>& points, const BuildOptions& options,
+  const Progress& progress, std::unique_ptr<Retriangulation>* keep);
 
 } // namespace flowrecon
 

@@ -50,24 +50,42 @@ Retriangulation::Retriangulation(const std::vector<Point3>& points, const BuildO
   }
   RequireMemory(BytesPerPoint * static_cast<double>(this->In.Unique.size()),
     "the triangulation of " + std::to_string(this->In.Unique.size()) + " points", advice);
-  this->Coords = AttemptCoordinates(this->In, fc.Report.Attempts, options.Seed);
+  this->Coords = std::make_unique<const std::vector<Point3>>(
+    AttemptCoordinates(this->In, fc.Report.Attempts, options.Seed));
   progress(0.0, "Delaunay triangulation");
-  this->Tri_ = std::make_unique<const Triangulation>(this->Coords, progress.Range(0, 0.2));
+  this->Tri_ = std::make_unique<const Triangulation>(*this->Coords, progress.Range(0, 0.2));
   progress(0.2, "critical points");
   this->Cs = FindCriticalSimplices(*this->Tri_, progress);
   const Triangulation& tri = *this->Tri_;
+  this->SetBases();
   const Id m = tri.NumberOfVertices();
   const Id nEdges = static_cast<Id>(this->Cs.Edges.size());
   const Id nFacets = static_cast<Id>(this->Cs.Facets.size());
   const Id nCells = static_cast<Id>(this->Cs.Cells.size());
-  this->Base2_ = m + nEdges;
-  this->Base3_ = this->Base2_ + nFacets;
   if (tri.Dimension() < 3 || m != n[0] || nEdges != n[1] || nFacets != n[2] || nCells != n[3] ||
     fc.InfinityNode != this->Base3_ + nCells)
   {
     throw InputError(Mismatch());
   }
   progress(0.35, "critical points");
+}
+
+Retriangulation::Retriangulation(PreparedInput in, const BuildOptions& options,
+  std::unique_ptr<const std::vector<Point3>> coords, std::unique_ptr<const Triangulation> tri,
+  CriticalSimplices cs)
+  : In(std::move(in))
+  , Opts(options)
+  , Coords(std::move(coords))
+  , Tri_(std::move(tri))
+  , Cs(std::move(cs))
+{
+  this->SetBases();
+}
+
+void Retriangulation::SetBases()
+{
+  this->Base2_ = this->Tri_->NumberOfVertices() + static_cast<Id>(this->Cs.Edges.size());
+  this->Base3_ = this->Base2_ + static_cast<Id>(this->Cs.Facets.size());
 }
 
 bool Retriangulation::SameSimplex(const FlowComplex& fc, Id node, const Id* vertices, int count) const

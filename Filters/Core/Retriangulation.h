@@ -27,6 +27,11 @@ public:
   /// Reports progress from 0 to 0.35 of `progress` (the builder's shares).
   Retriangulation(const std::vector<Point3>& points, const BuildOptions& options,
     const FlowComplex& fc, const Progress& progress, const std::string& advice);
+  /// The builder's own triangulation of the final attempt (`coords`, `tri` and
+  /// `cs`, with the walk tables), kept rather than computed again.
+  Retriangulation(PreparedInput in, const BuildOptions& options,
+    std::unique_ptr<const std::vector<Point3>> coords, std::unique_ptr<const Triangulation> tri,
+    CriticalSimplices cs);
   /// The triangulation refers to Coords: not copied, not moved.
   Retriangulation(const Retriangulation&) = delete;
   Retriangulation& operator=(const Retriangulation&) = delete;
@@ -48,10 +53,12 @@ public:
 private:
   PreparedInput In;
   BuildOptions Opts;
-  std::vector<Point3> Coords; ///< the triangulation refers to them
+  std::unique_ptr<const std::vector<Point3>> Coords; ///< the triangulation refers to them
   std::unique_ptr<const Triangulation> Tri_;
   CriticalSimplices Cs;
   Id Base2_ = 0, Base3_ = 0;
+
+  void SetBases();
 };
 
 } // namespace flowrecon
