@@ -150,32 +150,39 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
   {
     throw Degenerate("perturbation created duplicate points");
   }
-  // Critical points are double constructions (exact combinatorics, rounded
-  // geometry): products of a few edge lengths underflow or cancel when the
-  // spacing is some 1e-20 of the extent, and CGAL's constructions divide by
-  // zero. Refuse such clouds before any construction. Distinct doubles of the
-  // size of the extent are at least 1e-16 of it apart: only clusters near the
-  // origin get closer (no sampled shape has 20 orders of magnitude between its
-  // spacing and its size).
-  {
-    const double tiny = 1e-20 * this->In.Diagonal;
-    const Delaunay& dt = tri->Dt();
-    for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e)
-    {
-      const KPoint& a = e->first->vertex(e->second)->point();
-      const KPoint& b = e->first->vertex(e->third)->point();
-      const double dx = a.x() - b.x(), dy = a.y() - b.y(), dz = a.z() - b.z();
-      if (!(std::sqrt(dx * dx + dy * dy + dz * dz) > tiny))
-      {
-        throw InputError(TooClose);
-      }
-    }
-  }
   fc.Time.Delaunay = Seconds(t0);
 
   auto t = Clock::now();
   this->Report(0.2, "critical points");
   CriticalSimplices cs = FindCriticalSimplices(*tri, this->Report);
+  // Critical points are double constructions (exact combinatorics, rounded
+  // geometry): products of a few edge lengths underflow or cancel when the
+  // spacing is some 1e-20 of the extent, and CGAL's constructions divide by
+  // zero. Refuse such clouds before any construction (the critical simplices
+  // are exact predicates only). Distinct doubles of the size of the extent are
+  // at least 1e-16 of it apart: only clusters near the origin get closer (no
+  // sampled shape has 20 orders of magnitude between its spacing and its
+  // size). The shortest Delaunay edge joins nearest neighbours, so it is a
+  // Gabriel edge: checking those, in parallel, is checking them all.
+  {
+    const double tiny = 1e-20 * this->In.Diagonal;
+    const bool close = tbb::parallel_reduce(tbb::blocked_range<std::size_t>(0, cs.Edges.size()), false,
+      [&](const tbb::blocked_range<std::size_t>& r, bool found) {
+        for (std::size_t i = r.begin(); i != r.end() && !found; ++i)
+        {
+          const Point3& a = coords[cs.Edges[i][0]];
+          const Point3& b = coords[cs.Edges[i][1]];
+          const double dx = a[0] - b[0], dy = a[1] - b[1], dz = a[2] - b[2];
+          found = !(std::sqrt(dx * dx + dy * dy + dz * dz) > tiny);
+        }
+        return found;
+      },
+      [](bool x, bool y) { return x || y; });
+    if (close)
+    {
+      throw InputError(TooClose);
+    }
+  }
   if (first)
   {
     fc.Report.RightAngles = cs.RightAngles;
