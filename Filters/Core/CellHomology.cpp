@@ -2,6 +2,8 @@
 
 #include "MemoryGuard.h"
 
+#include <tbb/parallel_sort.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -67,10 +69,12 @@ struct Layer
   }
 
   /// Sorts and merges the listed simplices; `above` (the layer whose faces were
-  /// listed here, or null) learns the rank of each of its faces.
+  /// listed here, or null) learns the rank of each of its faces. (Sorted in
+  /// parallel: entries equal under the order are copies of one simplex from one
+  /// cell, which get the same rank whichever comes first.)
   void Finish(std::vector<Id>* above)
   {
-    std::sort(this->S.begin(), this->S.end(), [](const Simplex& a, const Simplex& b) {
+    tbb::parallel_sort(this->S.begin(), this->S.end(), [](const Simplex& a, const Simplex& b) {
       return a.V < b.V || (a.V == b.V && (a.Value < b.Value || (a.Value == b.Value && a.Cell < b.Cell)));
     });
     // Equal keys are one simplex, present from its least value (the first).
@@ -99,7 +103,7 @@ struct Layer
     {
       order[i] = { this->S[i].Value, static_cast<Id>(i) };
     }
-    std::sort(order.begin(), order.end());
+    tbb::parallel_sort(order.begin(), order.end());
     this->Order.resize(this->S.size());
     this->Rank.resize(this->S.size());
     for (std::size_t r = 0; r < order.size(); ++r)
@@ -224,7 +228,7 @@ void Cofaces(const Layer<K>& upper, const Layer<K - 1>& lower, std::vector<Id>& 
       pairs.emplace_back(faces[k], r);
     }
   }
-  std::sort(pairs.begin(), pairs.end());
+  tbb::parallel_sort(pairs.begin(), pairs.end());
   offsets.assign(lower.S.size() + 1, 0);
   list.resize(pairs.size());
   for (std::size_t k = 0; k < pairs.size(); ++k)
