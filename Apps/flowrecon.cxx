@@ -964,7 +964,8 @@ void ReconstructCloud(const std::string& input, double tp, double tr, double twr
       phases << std::fixed << std::setprecision(3) << "\nflow complex (s): Delaunay " << t.Delaunay
              << "; critical points " << t.CriticalPoints << "; stable manifolds "
              << t.StableManifolds << "; unstable manifolds " << t.UnstableManifolds
-             << "; assembly " << t.Assembly << ";";
+             << "; assembly " << t.Assembly << "; then simplification "
+             << r.SimplificationSeconds << "; reconstruction queue " << r.QueueSeconds << ";";
       work += phases.str();
     }
     flowrecon::FlowComplex& fc = r.Complex;

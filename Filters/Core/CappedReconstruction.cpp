@@ -3,6 +3,7 @@
 #include "DeferredPatches.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <tuple>
 
@@ -32,6 +33,13 @@ CappedReconstruction Attempt(const std::vector<Point3>& points, const BuildOptio
       r.Cones.push_back(a);
     }
   }
+  auto t = std::chrono::steady_clock::now();
+  auto lap = [&t]() {
+    const auto now = std::chrono::steady_clock::now();
+    const double seconds = std::chrono::duration<double>(now - t).count();
+    t = now;
+    return seconds;
+  };
   r.Simplified = tp >= 1; // below 1 nothing is cancelled
   const bool late = !fc.DeferredPatches.empty();
   if (r.Simplified)
@@ -40,6 +48,7 @@ CappedReconstruction Attempt(const std::vector<Point3>& points, const BuildOptio
     fc.Arcs = std::move(r.Simplification.Arcs); // the reconstruction grows on the simplified diagram
     r.Simplification.Arcs = {};
   }
+  r.SimplificationSeconds = lap();
   const std::vector<bool> survives =
     r.Simplified ? r.Simplification.Survives : std::vector<bool>(fc.Nodes.size(), true);
   const std::vector<Id> init =
@@ -49,6 +58,7 @@ CappedReconstruction Attempt(const std::vector<Point3>& points, const BuildOptio
   {
     r.Run = Reconstruct(fc.Nodes, fc.Arcs, survives, init, cap, progress.Range(0.8, 1.0));
     r.Carriers = CellCarriers(r.Run, s);
+    r.QueueSeconds = lap();
     return r;
   }
   DeferredPatches deferred(fc, s, *r.Triangulation);
@@ -91,6 +101,7 @@ CappedReconstruction Attempt(const std::vector<Point3>& points, const BuildOptio
   std::sort(fc.Arcs.begin(), fc.Arcs.end(), [](const Arc& a, const Arc& b) {
     return std::tie(a.Lower, a.Upper) < std::tie(b.Lower, b.Upper);
   });
+  r.QueueSeconds = lap();
   return r;
 }
 

@@ -36,6 +36,7 @@ struct CappedReconstruction
   Id DeferredPatches = 0; ///< patches not walked by the build
   Id WalkedLate = 0;      ///< deferred patches walked for the reconstruction
   Id ReplayedOwners = 0;  ///< owners of cancelled pairs found by the replays
+  double SimplificationSeconds = 0, QueueSeconds = 0; ///< wall-clock, after the build
 };
 
 /// Builds the Hasse diagram of `points` (`options`: seed, attempts; no geometry),
