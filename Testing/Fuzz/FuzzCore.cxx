@@ -13,6 +13,7 @@
 //                     Hasse diagram) instead of the CLI's path (Hasse diagram
 //                     only, then the reconstruction's cells drawn on demand)
 //           bits 3-4  persistence threshold t_p: 0, 1.05, 1.1, 1.5
+//           bits 5-6  cap T_max of the output-sensitive run: 1.6, 2, 3, 4
 //   byte 1            scale: (signed) s with |s| < 100 means 1, else
 //                     2^(sign(s) * (|s| - 99) * 40), up to 2^±1160 (overflow and
 //                     underflow to denormals and zero)
@@ -37,6 +38,10 @@
 //     is checked too.
 //   - the eager build: every index-2 patch is bounded by its Gabriel edges,
 //     each used as often as the arc's multiplicity.
+//   - without the eager build, the output-sensitive run (ReconstructBelow,
+//     deferred patches) equals the eager one below its cap: the same nodes
+//     with the same Step, Priority, Threshold, Kind and Sponsor, and the same
+//     cell carriers where they are below the cap (-1 elsewhere).
 // Closure through simplification owners (the faces of a cancelled node's cells,
 // carried by its earliest inserted owner) is not checked: parity can remove a
 // face from the owner's boundary (In(b) x Out(a) mod 2), see README.md. Set
@@ -44,6 +49,7 @@
 //
 // Any InputError (non-finite coordinates, fewer than 4 distinct points,
 // coplanar points, too degenerate) is an acceptable outcome.
+#include "CappedReconstruction.h"
 #include "FlowComplexBuilder.h"
 #include "Reconstruction.h"
 #include "Simplification.h"
@@ -402,6 +408,35 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::vector<Id> carriers = CellCarriers(run, tp >= 1 ? &s : nullptr);
   if (!eager)
   {
+    // The output-sensitive run against this eager one, its oracle.
+    static const double caps[4] = { 1.6, 2.0, 3.0, 4.0 };
+    const double cap = caps[(flags >> 5) & 3];
+    CappedReconstruction capped;
+    try
+    {
+      capped = ReconstructBelow(cloud, options, tp, cap, true, Progress());
+    }
+    catch (const InputError& e)
+    {
+      std::fprintf(stderr, "FuzzCore: the capped run refused what the eager one took: %s\n", e.what());
+      std::abort();
+    }
+    REQUIRE(capped.Complex.Nodes.size() == fc.Nodes.size());
+    for (std::size_t i = 0; i < fc.Nodes.size(); ++i)
+    {
+      const Insertion& e = run.Nodes[i];
+      const Insertion& l = capped.Run.Nodes[i];
+      const bool below = run.Contains(static_cast<Id>(i), cap);
+      REQUIRE((l.Step >= 0) == below);
+      if (below)
+      {
+        REQUIRE(l.Step == e.Step && l.Priority == e.Priority && l.Threshold == e.Threshold &&
+          l.Kind == e.Kind && l.Sponsor == e.Sponsor);
+      }
+      const Id c = carriers[i];
+      REQUIRE(capped.Carriers[i] == (c >= 0 && run.Contains(c, cap) ? c : -1));
+    }
+
     // Draw what `flowrecon reconstruct --tr 2` writes.
     const std::vector<Id> draw = NodesToDraw(fc.Nodes, carriers, run, 2.0);
     try
