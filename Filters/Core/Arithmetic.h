@@ -81,18 +81,13 @@ Vec<FT> Circumcenter(const Vec<FT>& a, const Vec<FT>& b, const Vec<FT>& c, const
 }
 
 /// Run f<IntervalFT>() under directed rounding; if an interval comparison is
-/// undecided, run f<ExactFT>(). `fallbacks` counts the exact reruns.
-/// When true (tests), walks skip the interval stage and run in exact arithmetic.
-inline bool& ExactOnly()
-{
-  static bool exact = false; // process-wide: walks run on worker threads too
-  return exact;
-}
-
+/// undecided, run f<ExactFT>(). `fallbacks` counts the exact reruns. With
+/// `exactOnly` (tests of the exact path) the interval stage is skipped. The flag
+/// is passed, not global, so that concurrent builds cannot change each other.
 template <class F>
-auto Filtered(F&& f, Id& fallbacks)
+auto Filtered(F&& f, Id& fallbacks, bool exactOnly)
 {
-  if (!ExactOnly())
+  if (!exactOnly)
   {
     try
     {

@@ -1,8 +1,8 @@
 #include "CancellationReplay.h"
 
-#include <algorithm>
 #include <functional>
 #include <queue>
+#include <unordered_map>
 
 namespace flowrecon
 {
@@ -51,8 +51,22 @@ void CancellationReplay::Replay(
   {
     schedule(e.first);
   }
-  auto find = [&](Id x) {
-    return std::find_if(in.begin(), in.end(), [x](const std::pair<Id, int>& e) { return e.first == x; });
+  // Positions in `in`, so that each flip costs O(1) rather than a scan of the list.
+  std::unordered_map<Id, std::size_t> where;
+  where.reserve(in.size() * 2);
+  for (std::size_t i = 0; i < in.size(); ++i)
+  {
+    where.emplace(in[i].first, i);
+  }
+  auto remove = [&](std::unordered_map<Id, std::size_t>::iterator it) {
+    const std::size_t i = it->second;
+    where.erase(it);
+    if (i + 1 != in.size())
+    {
+      in[i] = in.back();
+      where[in[i].first] = i;
+    }
+    in.pop_back();
   };
   // Cancellations in their order. A lower x of b joins y's list only while x is
   // alive, so x's own cancellation comes later: the queue only moves on.
@@ -60,37 +74,41 @@ void CancellationReplay::Replay(
   {
     const Event e = events.top();
     events.pop();
-    const auto a = find(e.second);
-    if (a == in.end())
+    const auto a = where.find(e.second);
+    if (a == where.end())
     {
       continue; // flipped away before its cancellation (or a repeat)
     }
     // Every successor of a gets its cells, even arcs too (Simplification.cpp).
     owners.emplace_back(e.first, y);
-    if (a->second % 2 == 1)
+    if (in[a->second].second % 2 == 1)
     {
       // d'y = dy + <dy, a> db over Z/2: y's incidence with each odd lower of b flips.
       for (Id k = s.LowerOffsets[e.first]; k < s.LowerOffsets[e.first + 1]; ++k)
       {
         const Id x = s.Lowers[k];
-        const auto it = find(x);
-        if (it == in.end())
+        const auto it = where.find(x);
+        if (it == where.end())
         {
+          where.emplace(x, in.size());
           in.emplace_back(x, 1);
           schedule(x);
         }
-        else if (it->second % 2 == 1)
+        else if (in[it->second].second % 2 == 1)
         {
-          *it = in.back();
-          in.pop_back();
+          remove(it);
         }
         else
         {
-          it->second = 1;
+          in[it->second].second = 1;
         }
       }
     }
-    in.erase(find(e.second));
+    const auto gone = where.find(e.second); // a itself may be among b's lowers
+    if (gone != where.end())
+    {
+      remove(gone);
+    }
   }
 }
 

@@ -57,12 +57,6 @@ std::vector<Arc> DeferredPatches::Walk(const std::vector<Id>& nodes, const Progr
   }
   std::sort(todo.begin(), todo.end());
   todo.erase(std::unique(todo.begin(), todo.end()), todo.end());
-  struct ExactScope
-  {
-    bool Saved = ExactOnly();
-    ~ExactScope() { ExactOnly() = this->Saved; }
-  } exactScope;
-  ExactOnly() = this->Re.Options().ExactOnly;
   const CriticalSimplices& cs = this->Re.Critical();
   const Id base1 = this->Re.Base2() - static_cast<Id>(cs.Edges.size());
   std::vector<std::vector<Id>> arrivals(todo.size());
@@ -72,7 +66,9 @@ std::vector<Arc> DeferredPatches::Walk(const std::vector<Id>& nodes, const Progr
       for (std::size_t k = r.begin(); k != r.end(); ++k)
       {
         const std::size_t f = static_cast<std::size_t>(todo[k] - this->Re.Base2());
-        arrivals[k] = ComputeStableManifold(this->Re.Tri(), cs, f, false, fallbacks[k]).Arrivals;
+        arrivals[k] = ComputeStableManifold(
+          this->Re.Tri(), cs, f, false, fallbacks[k], this->Re.Options().ExactOnly)
+                        .Arrivals;
         std::sort(arrivals[k].begin(), arrivals[k].end());
       }
     });

@@ -297,7 +297,8 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
             continue;
           }
           patch = ComputeStableManifold(
-            *tri, cs, i, this->Options.StableManifolds, batch.Fallbacks[i - begin]);
+            *tri, cs, i, this->Options.StableManifolds, batch.Fallbacks[i - begin],
+            this->Options.ExactOnly);
           // Sorted here, in parallel: equal runs are the 1-2 multiplicities.
           std::sort(patch.Arrivals.begin(), patch.Arrivals.end());
         }
@@ -442,7 +443,8 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
     }
     const double stub = 0.25 * this->In.Diagonal;
     SuccessorForest forest(
-      *tri, maximumOfCell, fc.InfinityNode, stub, this->Options.UnstableManifolds);
+      *tri, maximumOfCell, fc.InfinityNode, stub, this->Options.UnstableManifolds,
+      this->Options.ExactOnly);
     const bool record = this->Options.UnstableManifolds;
     // The two flow lines of index-2 point i: ends[i], and their polylines when
     // recording (which memoises NEXT and shares tails, so runs on this thread).
@@ -801,12 +803,6 @@ FlowComplex BuildFlowComplex(const std::vector<Point3>& points, const BuildOptio
     return fc;
   }
   const auto start = Clock::now();
-  struct ExactScope
-  {
-    bool Saved = ExactOnly();
-    ~ExactScope() { ExactOnly() = this->Saved; }
-  } exactScope;
-  ExactOnly() = options.ExactOnly;
   PreparedInput in = PrepareForTriangulation(points);
   FlowComplex fc;
   fc.Representative = in.Representative;

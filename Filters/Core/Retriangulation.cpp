@@ -28,12 +28,6 @@ Retriangulation::Retriangulation(const std::vector<Point3>& points, const BuildO
   : In(PrepareForTriangulation(points))
   , Opts(options)
 {
-  struct ExactScope
-  {
-    bool Saved = ExactOnly();
-    ~ExactScope() { ExactOnly() = this->Saved; }
-  } exactScope;
-  ExactOnly() = options.ExactOnly;
   const std::array<Id, 4> n = fc.CountByIndex();
   if (static_cast<Id>(this->In.Unique.size()) != n[0])
   {

@@ -102,14 +102,14 @@ Patch Walk(const Triangulation& tri, const CriticalSimplices& cs, const std::arr
 } // namespace
 
 Patch ComputeStableManifold(const Triangulation& tri, const CriticalSimplices& cs,
-  std::size_t facet, bool withGeometry, Id& fallbacks)
+  std::size_t facet, bool withGeometry, Id& fallbacks, bool exactOnly)
 {
   return Filtered(
     [&](auto ft) {
       return Walk<decltype(ft)>(
         tri, cs, Widen(cs.Facets[facet].Vertices), tri.Cell(cs.Facets[facet].Cell), withGeometry);
     },
-    fallbacks);
+    fallbacks, exactOnly);
 }
 
 int PatchFacesSide(const Triangulation& tri, const CriticalSimplices& cs, std::size_t facet)

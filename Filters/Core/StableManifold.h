@@ -24,9 +24,10 @@ struct Patch
 
 /// Stable manifold of the acute Gabriel facet cs.Facets[facet]. With `withGeometry` false
 /// only Arrivals are filled. Throws Degenerate if the walk meets a Voronoi vertex.
-/// `fallbacks` counts walks redone in exact arithmetic.
+/// `fallbacks` counts walks redone in exact arithmetic; `exactOnly` skips the
+/// interval stage (tests).
 Patch ComputeStableManifold(const Triangulation& tri, const CriticalSimplices& cs,
-  std::size_t facet, bool withGeometry, Id& fallbacks);
+  std::size_t facet, bool withGeometry, Id& fallbacks, bool exactOnly);
 
 /// The side of the critical facet cs.Facets[facet] that the normals of its
 /// patch's triangles ((b - a) x (c - a)) face: 0 toward the vertex opposite the

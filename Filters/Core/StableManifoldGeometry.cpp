@@ -86,12 +86,6 @@ void DrawStableManifolds(const std::vector<Point3>& points, const BuildOptions& 
   const std::vector<Id>& draw, FlowComplex& fc, const Progress& progress, const std::string& advice,
   const std::vector<Arc>* unsimplifiedArcs, const Retriangulation* retriangulation)
 {
-  struct ExactScope
-  {
-    bool Saved = ExactOnly();
-    ~ExactScope() { ExactOnly() = this->Saved; }
-  } exactScope;
-  ExactOnly() = options.ExactOnly;
   const std::string mismatch = Retriangulation::Mismatch();
   fc.Points = points;
   fc.NumberOfInputPoints = static_cast<Id>(points.size());
@@ -194,7 +188,7 @@ void DrawStableManifolds(const std::vector<Point3>& points, const BuildOptions& 
   std::optional<SuccessorForest> forest;
   if (!cones.empty())
   {
-    forest.emplace(tri, maximumOfCell, fc.InfinityNode, 0, false);
+    forest.emplace(tri, maximumOfCell, fc.InfinityNode, 0, false, options.ExactOnly);
   }
   auto endsOf = [&](Id i) {
     const CellHandle cell = tri.Cell(cs.Facets[i].Cell);
@@ -299,7 +293,8 @@ void DrawStableManifolds(const std::vector<Point3>& points, const BuildOptions& 
         for (std::size_t k = r.begin(); k != r.end(); ++k)
         {
           batch[k - begin] = ComputeStableManifold(
-            tri, cs, static_cast<std::size_t>(facets[k]), true, batchFallbacks[k - begin]);
+            tri, cs, static_cast<std::size_t>(facets[k]), true, batchFallbacks[k - begin],
+            options.ExactOnly);
         }
       });
     for (std::size_t k = begin; k < last; ++k)

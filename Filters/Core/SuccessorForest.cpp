@@ -120,12 +120,14 @@ WalkEnd FacetWalk(const Triangulation& tri, EdgePoint<FT> x, Id a, Id b, std::ve
 } // namespace
 
 SuccessorForest::SuccessorForest(const Triangulation& tri,
-  const std::vector<std::int32_t>& maximumOfCell, Id infinity, double stub, bool record)
+  const std::vector<std::int32_t>& maximumOfCell, Id infinity, double stub, bool record,
+  bool exactOnly)
   : Tri(tri)
   , MaximumOfCell(maximumOfCell)
   , Infinity(infinity)
   , Stub(stub)
   , Record(record)
+  , ExactOnly(exactOnly)
   , Steps(record ? static_cast<std::size_t>(tri.NumberOfCells()) : 0)
   , Roots(static_cast<std::size_t>(tri.NumberOfCells()))
 {
@@ -253,7 +255,7 @@ SuccessorForest::Step SuccessorForest::ComputeNext(Id id)
       start.Lambda = (centre - frame.C).Dot(frame.N) / frame.N.SquaredLength();
       return FacetWalk<FT>(this->Tri, start, a, b, excl, c, this->Record);
     },
-    fallbacks);
+    fallbacks, this->ExactOnly);
   if (fallbacks > 0)
   {
     this->Fallbacks += fallbacks;

@@ -22,9 +22,9 @@ public:
   /// (else -1); `infinity` the node id of the maximum at infinity; `stub` the
   /// length of the segment drawn for a flow line that escapes to infinity;
   /// `record` keeps the points of the flow lines (for AppendPath), else only the
-  /// maxima reached are computed.
+  /// maxima reached are computed; `exactOnly` walks in exact arithmetic only (tests).
   SuccessorForest(const Triangulation& tri, const std::vector<std::int32_t>& maximumOfCell,
-    Id infinity, double stub, bool record);
+    Id infinity, double stub, bool record, bool exactOnly);
 
   /// The maximum reached by the flow from the Voronoi vertex of finite cell `cell`.
   /// Thread-safe when the forest does not record polylines.
@@ -66,6 +66,7 @@ private:
   Id Infinity;
   double Stub;
   bool Record;
+  bool ExactOnly;
   std::vector<Step> Steps; // memoised NEXT, only when recording
   std::vector<std::atomic<std::int32_t>> Roots;
   std::atomic<Id> Fallbacks{ 0 };
