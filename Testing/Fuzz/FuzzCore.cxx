@@ -42,10 +42,12 @@
 //     deferred patches) equals the eager one below its cap: the same nodes
 //     with the same Step, Priority, Threshold, Kind and Sponsor, and the same
 //     cell carriers where they are below the cap (-1 elsewhere).
-// Closure through simplification owners (the faces of a cancelled node's cells,
-// carried by its earliest inserted owner) is not checked: parity can remove a
-// face from the owner's boundary (In(b) x Out(a) mod 2), see README.md. Set
-// FLOWRECON_FUZZ_CARRIER_REPORT=1 to print how often that happens.
+//   - the eager build, closure as a set (CheckSetClosure): a face of a drawn
+//     cell that is not drawn by then lies inside that cell's drawn geometry.
+//     Through simplification owners the node-level closure holds on the
+//     simplified diagram only (parity can turn a face into a seam inside the
+//     merged stable manifold), see regressions/core/README.md; set
+//     FLOWRECON_FUZZ_CARRIER_REPORT=1 to print how often.
 //
 // Any InputError (non-finite coordinates, fewer than 4 distinct points,
 // coplanar points, too degenerate) is an acceptable outcome.
@@ -249,6 +251,74 @@ void CheckPatches(const FlowComplex& fc)
       REQUIRE(edgeUse.count(static_cast<Id>(i)) == 1);
 }
 
+/// The reconstruction at t is closed as a set: a face x of a drawn cell u (an
+/// original arc x -> u) that is not drawn itself by then lies inside u's drawn
+/// geometry. (Through simplification owners the node-level closure holds on the
+/// simplified diagram only: parity can take x out of the merged boundary, where
+/// it becomes a seam of the merged stable manifold; see regressions/core/README.md.)
+void CheckSetClosure(const FlowComplex& fc, const ReconstructionResult& run,
+  const std::vector<Id>& carriers, double t, Id& seams)
+{
+  auto drawnAt = [&](Id node) {
+    const Id c = carriers[node];
+    return c >= 0 && (std::isinf(t) ? run.Nodes[c].Step >= 0 : run.Contains(c, t));
+  };
+  std::map<Id, std::vector<std::array<Id, 3>>> triangles;
+  std::map<Id, std::vector<std::array<Id, 4>>> tetrahedra;
+  for (std::size_t i = 0; i < fc.Triangles.size(); ++i)
+  {
+    std::array<Id, 3> tr = fc.Triangles[i];
+    std::sort(tr.begin(), tr.end());
+    triangles[fc.TriangleNode[i]].push_back(tr);
+  }
+  for (std::size_t i = 0; i < fc.Tetrahedra.size(); ++i)
+  {
+    std::array<Id, 4> te = fc.Tetrahedra[i];
+    std::sort(te.begin(), te.end());
+    tetrahedra[fc.TetrahedronNode[i]].push_back(te);
+  }
+  auto contains = [](const auto& big, const auto& small) {
+    return std::includes(big.begin(), big.end(), small.begin(), small.end());
+  };
+  for (const Arc& a : fc.Arcs)
+  {
+    const Node& x = fc.Nodes[a.Lower];
+    const Node& u = fc.Nodes[a.Upper];
+    if (u.IsInfinity() || !drawnAt(a.Upper))
+      continue;
+    const Id cu = carriers[a.Upper], cx = carriers[a.Lower];
+    if (cx >= 0 && drawnAt(a.Lower) && run.Nodes[cx].Threshold <= run.Nodes[cu].Threshold)
+      continue;
+    ++seams;
+    if (x.Index == 0)
+    {
+      REQUIRE(x.Simplex[0] == u.Simplex[0] || x.Simplex[0] == u.Simplex[1]);
+    }
+    else if (x.Index == 1)
+    {
+      // The sample segment is an edge of one of u's triangles.
+      const std::array<Id, 2> edge{ { std::min(x.Simplex[0], x.Simplex[1]),
+        std::max(x.Simplex[0], x.Simplex[1]) } };
+      bool found = false;
+      for (const auto& tr : triangles[a.Upper])
+        found = found || contains(tr, edge);
+      REQUIRE(found);
+    }
+    else
+    {
+      // Every triangle of x's patch is a face of one of u's tetrahedra.
+      REQUIRE(!triangles[a.Lower].empty());
+      for (const auto& tr : triangles[a.Lower])
+      {
+        bool found = false;
+        for (const auto& te : tetrahedra[a.Upper])
+          found = found || contains(te, tr);
+        REQUIRE(found);
+      }
+    }
+  }
+}
+
 void CheckSimplification(const FlowComplex& fc, const SimplificationResult& s, double tp)
 {
   REQUIRE(s.Survives.size() == fc.Nodes.size() && s.Survives.back());
@@ -313,7 +383,7 @@ void CheckReconstruction(const FlowComplex& fc, const std::vector<Arc>& arcs,
     }
   }
 
-  // Closure through owners: report only (see the comment at the top).
+  // Node-level closure through owners: a report (see CheckSetClosure).
   static const bool report = std::getenv("FLOWRECON_FUZZ_CARRIER_REPORT") != nullptr;
   if (report)
   {
@@ -406,7 +476,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     REQUIRE((at2.Nodes[i].Step >= 0) == run.Contains(static_cast<Id>(i), 2.0));
   }
   const std::vector<Id> carriers = CellCarriers(run, tp >= 1 ? &s : nullptr);
-  if (!eager)
+  if (eager)
+  {
+    Id seams = 0;
+    for (const double t : { HUGE_VAL, 2.0 })
+      CheckSetClosure(fc, run, carriers, t, seams);
+    if (std::getenv("FLOWRECON_FUZZ_CARRIER_REPORT"))
+      std::fprintf(stderr, "set closure: t_p %g, %lld faces not drawn with their cell, all inside it\n",
+        tp, static_cast<long long>(seams));
+  }
+  else
   {
     // The output-sensitive run against this eager one, its oracle.
     static const double caps[4] = { 1.6, 2.0, 3.0, 4.0 };
