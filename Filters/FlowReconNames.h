@@ -36,6 +36,7 @@ constexpr const char* Priority = "Priority";
 constexpr const char* Threshold = "Threshold";
 constexpr const char* Extension = "Extension";
 constexpr const char* Sponsor = "Sponsor";
+constexpr const char* Direction = "Direction";
 
 // Persistence pairs and diagrams (TTK's layout).
 constexpr const char* Birth = "Birth";

@@ -363,6 +363,11 @@ void ReconstructionToVTK(const FlowComplex& fc, const std::vector<Id>& carriers,
   arrowPoints->SetDataTypeToDouble();
   vtkNew<vtkCellArray> lines;
   InsertionArrays arrowInsertion;
+  // Direction (node - sponsor at the sponsor's end, 0 at the node's) draws each
+  // line as an arrow glyph of its own length; glyphs take point colours, hence
+  // the point copy of Priority.
+  auto direction = NamedArray<vtkDoubleArray>(flowrecon::names::Direction, 3);
+  auto pointPriority = NamedArray<vtkDoubleArray>(flowrecon::names::Priority);
   for (const Id node : run.Order)
   {
     const flowrecon::Insertion& in = steps[node];
@@ -370,10 +375,16 @@ void ReconstructionToVTK(const FlowComplex& fc, const std::vector<Id>& carriers,
     {
       continue;
     }
-    const vtkIdType ids[2] = { arrowPoints->InsertNextPoint(fc.Nodes[in.Sponsor].Location.data()),
-      arrowPoints->InsertNextPoint(fc.Nodes[node].Location.data()) };
+    const auto& from = fc.Nodes[in.Sponsor].Location;
+    const auto& to = fc.Nodes[node].Location;
+    const vtkIdType ids[2] = { arrowPoints->InsertNextPoint(from.data()),
+      arrowPoints->InsertNextPoint(to.data()) };
     lines->InsertNextCell(2, ids);
     arrowInsertion.Append(in.Step, node, in);
+    direction->InsertNextTuple3(to[0] - from[0], to[1] - from[1], to[2] - from[2]);
+    direction->InsertNextTuple3(0, 0, 0);
+    pointPriority->InsertNextValue(in.Priority);
+    pointPriority->InsertNextValue(in.Priority);
   }
   arrows->Initialize();
   arrows->SetPoints(arrowPoints);
@@ -383,6 +394,8 @@ void ReconstructionToVTK(const FlowComplex& fc, const std::vector<Id>& carriers,
     arrows->GetCellData()->AddArray(a);
   }
   arrows->GetCellData()->SetActiveScalars(flowrecon::names::Priority);
+  arrows->GetPointData()->AddArray(pointPriority);
+  arrows->GetPointData()->SetVectors(direction);
 }
 
 FilteredCells ReconstructionCells(const FlowComplex& fc, const std::vector<Id>& carriers,

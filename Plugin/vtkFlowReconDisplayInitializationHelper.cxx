@@ -76,6 +76,42 @@ void vtkFlowReconDisplayInitializationHelper::PostInitializeProxy(
     }
   }
 
+  // Lines drawn as arrows: one glyph per point, oriented and scaled by a point
+  // vector that is the line itself at its start and zero at its end.
+  const char* glyphs = xml->GetAttribute("glyph_vectors");
+  vtkSMProperty* representation = repr->GetProperty("Representation");
+  if (glyphs && IsFree(repr, representation, "Representation", ts))
+  {
+    vtkSMPropertyHelper(representation).Set("3D Glyphs");
+    const struct
+    {
+      const char* Name;
+      int Value;
+    } flags[] = { { "Orient", 1 }, { "Scaling", 1 }, { "ScaleMode", 1 /* magnitude */ } };
+    for (const auto& flag : flags)
+    {
+      if (vtkSMProperty* p = repr->GetProperty(flag.Name))
+      {
+        vtkSMPropertyHelper(p).Set(flag.Value);
+      }
+    }
+    for (const char* name : { "SelectOrientationVectors", "SelectScaleArray" })
+    {
+      if (vtkSMProperty* p = repr->GetProperty(name))
+      {
+        vtkSMPropertyHelper(p).Set(glyphs);
+      }
+    }
+    if (vtkSMProperty* p = repr->GetProperty("ScaleFactor"))
+    {
+      // 1 is also the XML default, which Set leaves unmodified; marked
+      // modified, the bounds domain (a tenth of the data) does not replace it.
+      vtkSMPropertyHelper(p).Set(1.0);
+      p->Modified();
+    }
+    changed = true;
+  }
+
   if (changed)
   {
     repr->UpdateVTKObjects();

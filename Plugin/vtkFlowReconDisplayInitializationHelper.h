@@ -6,7 +6,7 @@
 
 /**
  * @class vtkFlowReconDisplayInitializationHelper
- * @brief Chooses the colouring and the visible blocks of a new display.
+ * @brief Chooses the colouring, the visible blocks or the arrow glyphs of a new display.
  *
  * Named by the hint of the representation FlowReconMultiBlockRepresentation
  * (FlowComplex.xml), which Flow Complex and Flow Complex Simplification ask for
@@ -21,7 +21,9 @@
  * A property is left alone when it was set since the display's creation or when
  * a setting (representations.<display>.<property>) gives it, and the colouring
  * only when the data has the array. `blocks` is a space-separated list of
- * selectors.
+ * selectors. `glyph_vectors="Direction"` (FlowReconArrowsRepresentation, the
+ * sponsor arrows of Flow Reconstruction) shows the data as 3D Glyphs, arrows
+ * oriented by that point vector and scaled by its magnitude times 1.
  *
  * Not Python- or ClientServer-wrapped: FlowReconDisplayDefaults() registers the
  * class with the ClientServer interpreter, which is how ParaView creates it.

@@ -23,6 +23,18 @@ if (FLOWRECON_BUILD_PARAVIEW_PLUGIN AND TARGET FlowRecon)
       SKIP_RETURN_CODE 77
       LABELS "paraview;gui"
       TIMEOUT 180)
+    # The defaults a user gets from the Filters menu and the Apply button, and the
+    # sponsor arrows drawn as arrows (issue #10).
+    add_test(NAME gui.apply_defaults
+      COMMAND sh "${_need_x}" "${FLOWRECON_PARAVIEW_GUI}" --dr
+              "--script=${CMAKE_CURRENT_LIST_DIR}/test_apply_gui.py")
+    set_tests_properties(gui.apply_defaults PROPERTIES
+      ENVIRONMENT "FLOWRECON_EXIT=1;FLOWRECON_PLUGIN=$<TARGET_FILE:FlowRecon>;FLOWRECON_DATA=${_data_dir}/torus.xyz;FLOWRECON_OUT=${CMAKE_CURRENT_BINARY_DIR}/apply_gui;FLOWRECON_TEST_DIR=${CMAKE_CURRENT_LIST_DIR}"
+      PASS_REGULAR_EXPRESSION "test_apply_gui: PASS"
+      FAIL_REGULAR_EXPRESSION "test_apply_gui: FAIL"
+      SKIP_RETURN_CODE 77
+      LABELS "paraview;gui"
+      TIMEOUT 240)
   endif ()
   if (FLOWRECON_PVBATCH)
     # the demo script of .ci/demo on the hemispheres: pipeline, .vtu, pictures, profile

@@ -217,6 +217,37 @@ def simplification(reader, fc, cloud_bounds):
     return simp
 
 
+def check_direction(arrows):
+    """Each sponsor line carries Direction = its end - its start at the start and
+    0 at the end, and Priority on both points equals the line's."""
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    lines = arrows.GetNumberOfCells()
+    check(lines > 0, "Flow Reconstruction: no sponsor arrow to check")
+    pts = vtk_to_numpy(arrows.GetPoints().GetData())
+    direction = arrows.GetPointData().GetArray("Direction")
+    priority = arrows.GetPointData().GetArray("Priority")
+    vectors = arrows.GetPointData().GetVectors()
+    check(vectors is not None and vectors.GetName() == "Direction" and priority is not None,
+          "Flow Reconstruction: the sponsor arrows lack the point vectors Direction or the "
+          "point copy of Priority")
+    if direction is None or priority is None:
+        return
+    d = vtk_to_numpy(direction)
+    p = vtk_to_numpy(priority)
+    cell_priority = vtk_to_numpy(arrows.GetCellData().GetArray("Priority"))
+    bad = 0
+    for c in range(lines):
+        ids = arrows.GetCell(c).GetPointIds()
+        a, b = ids.GetId(0), ids.GetId(1)
+        if not (np.allclose(d[a], pts[b] - pts[a], rtol=0, atol=1e-12 * (1 + np.abs(pts).max()))
+                and np.all(d[b] == 0) and p[a] == p[b] == cell_priority[c]):
+            bad += 1
+    print("Flow Reconstruction: %d sponsor arrows, %d with a wrong Direction or Priority" % (
+        lines, bad), flush=True)
+    check(bad == 0, "Flow Reconstruction: %d of %d sponsor arrows have a wrong Direction or "
+          "point Priority" % (bad, lines))
+
+
 def reconstruction(work):
     # A sphere whose cap lost half of its points: output 4 has warning points.
     base = gen.make("sphere_qu", size=1500)
@@ -259,11 +290,19 @@ def reconstruction(work):
           "Flow Reconstruction: the Index colour map spans %s, expected 0 to 3" % (rng,))
     check_categorical("Flow Reconstruction", "Index", INDEX_NAMES)
     check_camera("Flow Reconstruction", view, cloud_bounds)
-    # The sponsor arrows are one click away, coloured by Priority.
+    # The sponsor arrows are one click away: arrows from sponsor to node
+    # (3D Glyphs of the point vector Direction at magnitude x 1), by Priority.
     arrows = simple.Show(simple.OutputPort(recon, 2), view)
-    check(colouring(arrows) == ("CELLS", "Priority"),
+    check(colouring(arrows) == ("POINTS", "Priority"),
           "Flow Reconstruction: shown on request, the sponsor arrows are coloured by %s" % (
               colouring(arrows),))
+    glyphs = (arrows.Representation, arrows.Orient, arrows.SelectOrientationVectors,
+              arrows.Scaling, arrows.ScaleMode, arrows.SelectScaleArray, arrows.ScaleFactor,
+              arrows.GlyphType.GetXMLName())
+    check(glyphs == ("3D Glyphs", 1, "Direction", 1, "Magnitude", "Direction", 1.0, "ArrowSource"),
+          "Flow Reconstruction: the sponsor arrows are shown as %s, expected arrow glyphs "
+          "oriented and scaled by Direction" % (glyphs,))
+    check_direction(servermanager.Fetch(recon, idx=2))
     # Colouring them by Extension names how each node entered the reconstruction.
     simple.ColorBy(arrows, ("CELLS", "Extension"))
     check_categorical("Flow Reconstruction", "Extension", EXTENSION_NAMES)
