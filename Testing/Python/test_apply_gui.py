@@ -14,7 +14,8 @@ through Python's Show(); this is the GUI's own path:
   * Flow Complex and Flow Complex Simplification: shown in the render view with only
     the block CriticalPoints, coloured by the point array Index, one legend (Index);
   * Flow Reconstruction: outputs 0 (coloured by Index) and 4 in the render view, one
-    legend; 2 (sponsor arrows) not shown; 1 and 3 (the profiles) in line charts.
+    legend; 2 (sponsor arrows) not shown; 1 and 3 (the profiles) in line charts, the
+    reconstruction profile's with a logarithmic left axis.
 Then the sponsor arrows are shown (the eye: Show() in the render view): 3D Glyphs
 oriented and scaled by Direction, and the picture must have clearly more drawn pixels
 than the same lines drawn as a wireframe (the arrows have heads and a width).
@@ -194,9 +195,11 @@ def main():
     check(colouring(shown[0]) == ("CELLS", "Index"),
           "Flow Reconstruction is coloured by %s" % (colouring(shown[0]),))
     check(legends(view) == ["Index"], "Flow Reconstruction: legends %s" % legends(view))
-    for port in (1, 3):
-        check(("XYChartView", port) in where,
-              "Flow Reconstruction: output %d is not in a line chart (%s)" % (port, where))
+    for view_type, port in (("FlowReconLogChartView", 1), ("XYChartView", 3)):
+        check((view_type, port) in where,
+              "Flow Reconstruction: output %d is not in a %s (%s)" % (port, view_type, where))
+    log_axis = [v.LeftAxisLogScale for v in GetViews() if v.GetXMLName() == "FlowReconLogChartView"]
+    check(log_axis == [1], "the profile's chart has Left Axis Log Scale %s" % log_axis)
     check(all(p != 2 for _, p in where), "the sponsor arrows are shown on Apply (%s)" % where)
     layout = GetLayout(view)
     SaveScreenshot(out + "_layout.png", layout, ImageResolution=[1200, 700])

@@ -145,14 +145,18 @@ def main():
     controller = vtkSMParaViewPipelineControllerWithRendering()
     preferred = [controller.GetPreferredViewType(recon.SMProxy, k) for k in range(5)]
     print("preferred views:", preferred, flush=True)
-    check(preferred[1] == preferred[3] == "XYChartView",
-          "ports 1 and 3 prefer %s and %s, expected XYChartView" % (preferred[1], preferred[3]))
+    check(preferred[1] == "FlowReconLogChartView" and preferred[3] == "XYChartView",
+          "ports 1 and 3 prefer %s and %s, expected FlowReconLogChartView (a line chart "
+          "with a log left axis) and XYChartView" % (preferred[1], preferred[3]))
     # As Apply does in an empty layout frame: no view given, the preferred one is made.
     views = {k: controller.ShowInPreferredView(recon.SMProxy, k, None) for k in (1, 3)}
     names = {k: v.GetXMLName() if v else None for k, v in views.items()}
-    if not check(names == {1: "XYChartView", 3: "XYChartView"},
+    if not check(names == {1: "FlowReconLogChartView", 3: "XYChartView"},
                  "ports 1 and 3 open in %s" % names):
         return
+    log_axis = [views[k].GetProperty("LeftAxisLogScale").GetElement(0) for k in (1, 3)]
+    check(log_axis == [1, 0], "Left Axis Log Scale of the two charts: %s, expected on for "
+          "the reconstruction profile only" % log_axis)
     render_view = simple.CreateView("RenderView")
     again = controller.ShowInPreferredView(recon.SMProxy, 3, render_view.SMProxy)
     check(again is not None and again.GetXMLName() == "XYChartView",

@@ -84,10 +84,14 @@ def main():
     views = {k: controller.ShowInPreferredView(recon.SMProxy, k, None) for k in (1, 3)}
     names = {k: v.GetXMLName() if v else None for k, v in views.items()}
     print("views:", names, flush=True)
-    if not check(names == {1: "XYChartView", 3: "XYChartView"},
-                 "ports 1 and 3 open in %s, expected XYChartView" % names):
+    if not check(names == {1: "FlowReconLogChartView", 3: "XYChartView"},
+                 "ports 1 and 3 open in %s, expected FlowReconLogChartView and XYChartView"
+                 % names):
         return
     pview, tview = (simple.servermanager._getPyProxy(views[k]) for k in (1, 3))
+    check(pview.LeftAxisLogScale == 1 and tview.LeftAxisLogScale == 0,
+          "the profile's chart opens with Left Axis Log Scale %d, the topology's with %d" % (
+              pview.LeftAxisLogScale, tview.LeftAxisLogScale))
     prep = simple.GetDisplayProperties(simple.OutputPort(recon, 1), pview)
     trep = simple.GetDisplayProperties(simple.OutputPort(recon, 3), tview)
     check(prep.GetXMLName() == "ReconstructionProfileRepresentation" and
