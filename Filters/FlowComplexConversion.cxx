@@ -87,6 +87,68 @@ vtkSmartPointer<vtkPolyData> CriticalPointsBlock(const FlowComplex& fc)
   pd->GetPointData()->AddArray(value);
   pd->GetPointData()->AddArray(simplex);
   pd->GetPointData()->SetActiveScalars(flowrecon::names::Index);
+  // Index on the vertex cells too: a display coloured by the cell array Index
+  // draws these points and the GabrielEdges lines in one legend.
+  auto cellIndex = NamedArray<vtkIntArray>(flowrecon::names::Index);
+  for (const Node& n : fc.Nodes)
+  {
+    if (!n.IsInfinity())
+    {
+      cellIndex->InsertNextValue(n.Index);
+    }
+  }
+  pd->GetCellData()->AddArray(cellIndex);
+  return pd;
+}
+
+/// The Gabriel edges (the index-1 stable manifolds) as lines between the
+/// samples, a light block a display can show by default: point k is index-0
+/// node k, as in CriticalPoints.
+vtkSmartPointer<vtkPolyData> GabrielEdgesBlock(const FlowComplex& fc)
+{
+  std::vector<Point3> samples;
+  std::vector<vtkIdType> pointOfInput;
+  for (std::size_t i = 0; i < fc.Nodes.size() && fc.Nodes[i].Index == 0; ++i)
+  {
+    const Id input = fc.Nodes[i].Simplex[0];
+    if (input >= static_cast<Id>(pointOfInput.size()))
+    {
+      pointOfInput.resize(static_cast<std::size_t>(input) + 1, -1);
+    }
+    pointOfInput[input] = static_cast<vtkIdType>(samples.size());
+    samples.push_back(fc.Nodes[i].Location);
+  }
+  auto nodeId = NamedArray<vtkIdTypeArray>(flowrecon::names::NodeId);
+  auto index = NamedArray<vtkIntArray>(flowrecon::names::Index);
+  auto value = NamedArray<vtkDoubleArray>(flowrecon::names::CriticalValue);
+  vtkNew<vtkCellArray> lines;
+  for (std::size_t i = 0; i < fc.Nodes.size(); ++i)
+  {
+    const Node& n = fc.Nodes[i];
+    if (n.Index != 1)
+    {
+      continue;
+    }
+    const Id a = n.Simplex[0], b = n.Simplex[1];
+    const bool known = a >= 0 && b >= 0 && a < static_cast<Id>(pointOfInput.size()) &&
+      b < static_cast<Id>(pointOfInput.size()) && pointOfInput[a] >= 0 && pointOfInput[b] >= 0;
+    if (!known)
+    {
+      throw InputError("an index-1 node whose vertices are not samples");
+    }
+    const vtkIdType ends[2] = { pointOfInput[a], pointOfInput[b] };
+    lines->InsertNextCell(2, ends);
+    nodeId->InsertNextValue(static_cast<vtkIdType>(i));
+    index->InsertNextValue(1);
+    value->InsertNextValue(n.Value);
+  }
+  vtkNew<vtkPolyData> pd;
+  pd->SetPoints(MakePoints(samples));
+  pd->SetLines(lines);
+  pd->GetCellData()->AddArray(nodeId);
+  pd->GetCellData()->AddArray(index);
+  pd->GetCellData()->AddArray(value);
+  pd->GetCellData()->SetActiveScalars(flowrecon::names::Index);
   return pd;
 }
 
@@ -416,7 +478,7 @@ void ToMultiBlock(const FlowComplex& fc, vtkMultiBlockDataSet* output, const Pro
   const double at[4] = { 0, share[0] / total, (share[0] + share[1]) / total,
     (share[0] + share[1] + share[2]) / total };
   progress(at[0], "VTK output: critical points");
-  vtkSmartPointer<vtkDataObject> blocks[4];
+  vtkSmartPointer<vtkDataObject> blocks[5];
   blocks[0] = CriticalPointsBlock(fc);
   progress(at[1], "VTK output: Hasse diagram");
   blocks[1] = HasseDiagramBlock(fc);
@@ -424,10 +486,12 @@ void ToMultiBlock(const FlowComplex& fc, vtkMultiBlockDataSet* output, const Pro
   blocks[2] = StableManifoldsBlock(fc, progress.Range(at[2], at[3]));
   progress(at[3], "VTK output: unstable manifolds");
   blocks[3] = UnstableManifoldsBlock(fc);
-  const char* names[4] = { flowrecon::names::CriticalPoints, flowrecon::names::HasseDiagram, flowrecon::names::StableManifolds,
-    flowrecon::names::UnstableManifolds };
-  output->SetNumberOfBlocks(4);
-  for (unsigned int b = 0; b < 4; ++b)
+  blocks[4] = GabrielEdgesBlock(fc);
+  const char* names[5] = { flowrecon::names::CriticalPoints, flowrecon::names::HasseDiagram,
+    flowrecon::names::StableManifolds, flowrecon::names::UnstableManifolds,
+    flowrecon::names::GabrielEdges };
+  output->SetNumberOfBlocks(5);
+  for (unsigned int b = 0; b < 5; ++b)
   {
     output->SetBlock(b, blocks[b]);
     output->GetMetaData(b)->Set(vtkCompositeDataSet::NAME(), names[b]);
@@ -769,7 +833,7 @@ void SetDefaultScalars(vtkMultiBlockDataSet* output)
     {
       block->GetPointData()->SetActiveScalars(names::Index);
     }
-    else if (blockName == names::StableManifolds)
+    else if (blockName == names::StableManifolds || blockName == names::GabrielEdges)
     {
       block->GetCellData()->SetActiveScalars(names::Index);
     }
@@ -841,6 +905,20 @@ void AddSimplification(const FlowComplex& fc, const SimplificationResult& s, dou
       cancelled->SetValue(i, s.Survives[IdValue(nodeId, i)] ? 0 : 1);
     }
     cp->GetPointData()->AddArray(cancelled);
+  }
+  auto* ge = vtkPolyData::SafeDownCast(NamedBlock(output, flowrecon::names::GabrielEdges));
+  vtkDataArray* edgeNode = ge ? ge->GetCellData()->GetArray(flowrecon::names::NodeId) : nullptr;
+  if (edgeNode && edgeNode->GetNumberOfTuples() == ge->GetNumberOfCells())
+  {
+    auto cancelled = NamedArray<vtkUnsignedCharArray>(flowrecon::names::Cancelled);
+    cancelled->SetNumberOfTuples(ge->GetNumberOfCells());
+    for (vtkIdType c = 0; c < ge->GetNumberOfCells(); ++c)
+    {
+      const Id node = IdValue(edgeNode, c);
+      const bool known = node >= 0 && node < static_cast<Id>(s.Survives.size());
+      cancelled->SetValue(c, known && !s.Survives[node] ? 1 : 0);
+    }
+    ge->GetCellData()->AddArray(cancelled);
   }
   if (sm)
   {

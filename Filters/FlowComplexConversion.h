@@ -64,8 +64,8 @@ void AddSimplification(const FlowComplex& fc, const SimplificationResult& s, dou
 bool SimplificationFromMultiBlock(vtkMultiBlockDataSet* input, Id nodeCount,
   SimplificationResult& s, std::string& error);
 
-/// Makes Index the active scalars of CriticalPoints (points) and StableManifolds
-/// (cells), and PersistencePairs have none: what a VTK mapper, or ParaView once a
+/// Makes Index the active scalars of CriticalPoints (points), StableManifolds and
+/// GabrielEdges (cells), and PersistencePairs have none: what a VTK mapper, or ParaView once a
 /// block is extracted, colours by. (On the whole multiblock ParaView 5.11 picks
 /// no default: it merges the blocks' active scalars, which are empty unless
 /// every block agrees; without this PersistencePairs' Ratio was the only one.)

@@ -13,6 +13,7 @@ constexpr const char* CriticalPoints = "CriticalPoints";
 constexpr const char* HasseDiagram = "HasseDiagram";
 constexpr const char* StableManifolds = "StableManifolds";
 constexpr const char* UnstableManifolds = "UnstableManifolds";
+constexpr const char* GabrielEdges = "GabrielEdges";
 constexpr const char* PersistencePairs = "PersistencePairs";
 
 // Nodes, arcs and cells.

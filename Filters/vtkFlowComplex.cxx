@@ -24,7 +24,8 @@ vtkFlowComplex::~vtkFlowComplex() = default;
 const char* vtkFlowComplex::BlockName(int block)
 {
   static const char* names[NUMBER_OF_BLOCKS] = { flowrecon::names::CriticalPoints, flowrecon::names::HasseDiagram,
-    flowrecon::names::StableManifolds, flowrecon::names::UnstableManifolds };
+    flowrecon::names::StableManifolds, flowrecon::names::UnstableManifolds,
+    flowrecon::names::GabrielEdges };
   return (block >= 0 && block < NUMBER_OF_BLOCKS) ? names[block] : nullptr;
 }
 

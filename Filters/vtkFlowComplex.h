@@ -92,7 +92,8 @@ public:
     HASSE_DIAGRAM = 1,
     STABLE_MANIFOLDS = 2,
     UNSTABLE_MANIFOLDS = 3,
-    NUMBER_OF_BLOCKS = 4
+    GABRIEL_EDGES = 4,
+    NUMBER_OF_BLOCKS = 5
   };
 
 protected:

@@ -93,6 +93,16 @@ void CheckOutput(vtkMultiBlockDataSet* mb)
   CHECK(infinite == 1);
   CHECK(n[0] - n[1] + n[2] - n[3] == 1);
   CHECK(cp->GetNumberOfVerts() == cp->GetNumberOfPoints() - 1); // infinity is not drawn
+  // Index on the vertex cells too (the default display colours by the cell array).
+  auto* vertexIndex = vtkIntArray::SafeDownCast(cp->GetCellData()->GetArray("Index"));
+  CHECK(vertexIndex && vertexIndex->GetNumberOfTuples() == cp->GetNumberOfVerts());
+  // GabrielEdges: one line per index-1 node, with its NodeId and Index 1.
+  auto* ge = vtkPolyData::SafeDownCast(Block(mb, "GabrielEdges"));
+  CHECK(ge && ge->GetNumberOfLines() == n[1] && ge->GetNumberOfCells() == n[1]);
+  auto* edgeIndex = ge ? vtkIntArray::SafeDownCast(ge->GetCellData()->GetArray("Index")) : nullptr;
+  CHECK(edgeIndex && edgeIndex->GetNumberOfTuples() == n[1]);
+  for (vtkIdType c = 0; edgeIndex && c < edgeIndex->GetNumberOfTuples(); ++c)
+    CHECK(edgeIndex->GetValue(c) == 1);
   auto* counts = vtkIdTypeArray::SafeDownCast(mb->GetFieldData()->GetArray("NodeCountByIndex"));
   CHECK(counts && counts->GetNumberOfComponents() == 4);
   for (int k = 0; counts && k < 4; ++k)
@@ -247,7 +257,7 @@ int main(int argc, char* argv[])
     CHECK(delaunay >= 4);
     CHECK(vtkOutput >= 2);
     CHECK(monotone);
-    CHECK(blocks == 4);
+    CHECK(blocks == vtkFlowComplex::NUMBER_OF_BLOCKS && blocks == 5);
   }
   {
     // Abort inside the Delaunay phase: nothing after it runs.

@@ -21,7 +21,8 @@ from vtkmodules.vtkCommonDataModel import (
     VTK_LINE, VTK_TETRA, VTK_TRIANGLE, VTK_VERTEX, vtkCellArray, vtkCompositeDataSet,
     vtkMultiBlockDataSet, vtkPolyData)
 
-BLOCK_NAMES = ("CriticalPoints", "HasseDiagram", "StableManifolds", "UnstableManifolds")
+BLOCK_NAMES = ("CriticalPoints", "HasseDiagram", "StableManifolds", "UnstableManifolds",
+               "GabrielEdges")
 
 
 def import_filter():

@@ -11,8 +11,9 @@ The filters are made by pqFiltersMenuReaction::createFilter (what the menu does)
 applied by a click on the Properties panel's Apply button (pqApplyBehavior), both
 reached through ctypes (gui_qt.py). test_default_display.py checks the same defaults
 through Python's Show(); this is the GUI's own path:
-  * Flow Complex and Flow Complex Simplification: shown in the render view with only
-    the block CriticalPoints, coloured by the point array Index, one legend (Index);
+  * Flow Complex and Flow Complex Simplification: shown in the render view with the
+    blocks CriticalPoints and GabrielEdges, coloured by the cell array Index, one
+    legend (Index);
   * Flow Reconstruction: outputs 0 (coloured by Index) and 4 in the render view, one
     legend; 2 (sponsor arrows) not shown; 1 and 3 (the profiles) in line charts, the
     reconstruction profile's with a logarithmic left axis.
@@ -179,8 +180,8 @@ def main():
         d = shown[0]
         say("test_apply_gui: %s after Apply: colouring %s, blocks %s, legends %s" % (
             name, colouring(d), list(d.BlockSelectors), legends(view)))
-        check(colouring(d) == ("POINTS", "Index"), "%s is coloured by %s" % (name, colouring(d)))
-        check(list(d.BlockSelectors) == ["/Root/CriticalPoints"],
+        check(colouring(d) == ("CELLS", "Index"), "%s is coloured by %s" % (name, colouring(d)))
+        check(list(d.BlockSelectors) == ["/Root/CriticalPoints", "/Root/GabrielEdges"],
               "%s shows the blocks %s" % (name, list(d.BlockSelectors)))
         check(legends(view) == ["Index"], "%s: legends %s" % (name, legends(view)))
 

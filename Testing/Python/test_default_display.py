@@ -129,14 +129,14 @@ def check_categorical(label, array, names):
 
 
 def check_plugin_display(label, display, view):
-    """What the plugin's display chooses: CriticalPoints only, coloured by the
-    point array Index (categorical, named), one colour legend."""
+    """What the plugin's display chooses: CriticalPoints and GabrielEdges,
+    coloured by the cell array Index (categorical, named), one colour legend."""
     check(display.GetXMLName() == "FlowReconMultiBlockRepresentation",
           "%s: the display is a %s" % (label, display.GetXMLName()))
-    check(colouring(display) == ("POINTS", "Index"),
-          "%s opens coloured by %s, expected POINTS Index" % (label, colouring(display)))
-    check(list(display.BlockSelectors) == ["/Root/CriticalPoints"],
-          "%s opens with the blocks %s, expected CriticalPoints only" % (
+    check(colouring(display) == ("CELLS", "Index"),
+          "%s opens coloured by %s, expected CELLS Index" % (label, colouring(display)))
+    check(list(display.BlockSelectors) == ["/Root/CriticalPoints", "/Root/GabrielEdges"],
+          "%s opens with the blocks %s, expected CriticalPoints and GabrielEdges" % (
               label, list(display.BlockSelectors)))
     check(display.LookupTable is not None and
           display.LookupTable.SMProxy.GetGlobalID() ==
@@ -148,10 +148,12 @@ def check_plugin_display(label, display, view):
 
 
 def check_active_scalars(label, source):
-    """Index is the active scalars of CriticalPoints (points) and StableManifolds
-    (cells); no other block has any."""
+    """Index is the active scalars of CriticalPoints (points), StableManifolds and
+    GabrielEdges (cells); no other block has any."""
     out = blocks(servermanager.Fetch(source))
-    expected = {"CriticalPoints": ("Index", None), "StableManifolds": (None, "Index")}
+    expected = {"CriticalPoints": ("Index", None), "StableManifolds": (None, "Index"),
+                "GabrielEdges": (None, "Index")}
+    check("GabrielEdges" in out, "%s: no block GabrielEdges (%s)" % (label, sorted(out)))
     for name, block in out.items():
         got = (active_name(block.GetPointData()), active_name(block.GetCellData()))
         want = expected.get(name, (None, None))
@@ -209,7 +211,7 @@ def simplification(reader, fc, cloud_bounds):
     shown2 = apply(simp, view2, fc)
     print("Simplification after Flow Complex by Index: colouring %s, legends %s" % (
         colouring(shown2[0]), legends(view2)), flush=True)
-    check(colouring(shown2[0]) == ("POINTS", "Index"),
+    check(colouring(shown2[0])[1] == "Index",
           "Simplification applied after a Flow Complex coloured by Index is coloured by %s" % (
               colouring(shown2[0]),))
     check(legends(view2) == ["Index"],
@@ -333,7 +335,7 @@ def user_settings(xyz):
     check(list(display.BlockSelectors) == ["/Root/CriticalPoints", "/Root/StableManifolds"],
           "user settings: the display shows the blocks %s, not the user's" % list(
               display.BlockSelectors))
-    check(colouring(display) == ("POINTS", "Index"),
+    check(colouring(display) == ("CELLS", "Index"),
           "user settings: the display is coloured by %s" % (colouring(display),))
     check(lut.InterpretValuesAsCategories == 0,
           "user settings: the Index colour map is still categorical")

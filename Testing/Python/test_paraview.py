@@ -19,6 +19,7 @@ BLOCKS = {
     "HasseDiagram": ("vtkPolyData", "cell", ("Multiplicity", "Ratio")),
     "StableManifolds": ("vtkUnstructuredGrid", "cell", ("NodeId", "Index", "CriticalValue")),
     "UnstableManifolds": ("vtkPolyData", "cell", ("NodeId", "TargetNodeId")),
+    "GabrielEdges": ("vtkPolyData", "cell", ("NodeId", "Index", "CriticalValue")),
 }
 
 

@@ -35,6 +35,7 @@ EXPECTED_BLOCKS = [
     ("StableManifolds", "vtkUnstructuredGrid", {"cell": ["NodeId", "Index", "CriticalValue"],
                                                 "point": ["vtkOriginalPointIds"]}),
     ("UnstableManifolds", "vtkPolyData", {"cell": ["NodeId", "TargetNodeId"]}),
+    ("GabrielEdges", "vtkPolyData", {"cell": ["NodeId", "Index", "CriticalValue"]}),
 ]
 INTEGER_ARRAYS = {"NodeId", "Index", "Multiplicity", "LowerNodeId", "UpperNodeId", "TargetNodeId",
                   "vtkOriginalPointIds"}
@@ -147,6 +148,34 @@ def check_contract():
     if np.all(rows >= 0):
         CHK.check(np.array_equal(res.index[rows], cindex) and np.array_equal(res.value[rows], cval),
                   "StableManifolds Index/CriticalValue disagree with the node of the cell")
+
+    # GabrielEdges: one line per index-1 node, between the two input points of
+    # its Gabriel edge (the input coordinates), Index 1, CriticalValue half the
+    # edge's length (the distance function at its midpoint).
+    ge = fio.get_block(out, "GabrielEdges")
+    gnode = fio.array(ge.GetCellData(), "NodeId").astype(np.int64)
+    gval = fio.array(ge.GetCellData(), "CriticalValue")
+    gindex = fio.array(ge.GetCellData(), "Index")
+    ends = np.array([[ge.GetPoint(ge.GetCell(c).GetPointId(k)) for k in (0, 1)]
+                     for c in range(ge.GetNumberOfCells())]).reshape(-1, 2, 3)
+    CHK.check(ge.GetNumberOfLines() == ge.GetNumberOfCells() == res.counts()[1] and
+              np.all(gindex == 1),
+              "GabrielEdges: %d cells (%d lines) for %d index-1 nodes" % (
+                  ge.GetNumberOfCells(), ge.GetNumberOfLines(), res.counts()[1]))
+    grows = np.array([res.row.get(int(x), -1) for x in gnode])
+    CHK.check(len(grows) == 0 or (np.all(grows >= 0) and np.all(res.index[grows] == 1) and
+                                  len(np.unique(gnode)) == len(gnode)),
+              "GabrielEdges: NodeIds that are not the index-1 nodes, once each")
+    on_input = [bool(np.any(np.all(P == e, axis=1))) for e in ends.reshape(-1, 3)]
+    CHK.check(all(on_input), "GabrielEdges: %d line ends are not input points" % (
+        len(on_input) - sum(on_input)))
+    half = 0.5 * np.linalg.norm(ends[:, 0] - ends[:, 1], axis=1)
+    CHK.check(np.allclose(gval, half, rtol=1e-12, atol=0),
+              "GabrielEdges: CriticalValue is not half the edge's length (max error %.3g)" % (
+                  float(np.abs(gval - half).max()) if len(half) else 0.0))
+    if np.all(grows >= 0):
+        CHK.check(np.array_equal(res.value[grows], gval),
+                  "GabrielEdges: CriticalValue disagrees with the node's")
 
     # Ratio = V(upper)/V(lower)
     lo = np.array([res.row[int(x)] for x in res.lower])
