@@ -459,11 +459,6 @@ void RequireMemoryForVTK(const FlowComplex& fc)
 
 void ToMultiBlock(const FlowComplex& fc, vtkMultiBlockDataSet* output, const Progress& progress)
 {
-  if (!fc.DeferredPatches.empty())
-  {
-    // A stored HasseDiagram block promises every arc.
-    throw InputError("a flow complex with deferred patches has no complete Hasse diagram to store");
-  }
   // Each block's share of the progress: its number of items (nodes, arcs,
   // cells, flow-line points), which is what its copy costs.
   double points = 0;
@@ -498,6 +493,24 @@ void ToMultiBlock(const FlowComplex& fc, vtkMultiBlockDataSet* output, const Pro
   }
   AddReport(fc, blocks[0]->GetFieldData());
   AddReport(fc, output->GetFieldData());
+  if (!fc.DeferredPatches.empty())
+  {
+    // The HasseDiagram block then lacks the 1-2 arcs into these nodes, every
+    // one of ratio >= DeferralRatio (FlowComplex::DeferredPatches).
+    auto* cp = vtkPolyData::SafeDownCast(blocks[0]);
+    auto deferred = NamedArray<vtkUnsignedCharArray>(flowrecon::names::Deferred);
+    deferred->SetNumberOfTuples(static_cast<vtkIdType>(fc.Nodes.size()));
+    deferred->FillValue(0);
+    for (const Id node : fc.DeferredPatches)
+    {
+      deferred->SetValue(node, 1);
+    }
+    cp->GetPointData()->AddArray(deferred);
+    auto ratio = NamedArray<vtkDoubleArray>(flowrecon::names::DeferralRatio);
+    ratio->InsertNextValue(fc.DeferralRatio);
+    cp->GetFieldData()->AddArray(ratio);
+    output->GetFieldData()->AddArray(ratio);
+  }
   progress(1, "VTK output");
 }
 
@@ -618,6 +631,65 @@ bool ReadNodes(vtkPolyData* cp, FlowComplex& fc, std::string& error)
       fc.InfinityNode = id;
     }
   }
+  return true;
+}
+
+/// The deferred patches of a complex built with them (point array Deferred and
+/// field data DeferralRatio of CriticalPoints): index-2 nodes only, none with an
+/// arc in the HasseDiagram block.
+bool ReadDeferred(vtkPolyData* cp, FlowComplex& fc, std::string& error)
+{
+  const char* block = flowrecon::names::CriticalPoints;
+  vtkDataArray* flags = cp->GetPointData()->GetArray(flowrecon::names::Deferred);
+  if (!flags)
+  {
+    return true;
+  }
+  const vtkIdType n = static_cast<vtkIdType>(fc.Nodes.size());
+  vtkDataArray* nodeId = cp->GetPointData()->GetArray(flowrecon::names::NodeId);
+  vtkDataArray* ratio = cp->GetFieldData()->GetArray(flowrecon::names::DeferralRatio);
+  if (flags->GetNumberOfTuples() != n || flags->GetNumberOfComponents() != 1 || !nodeId)
+  {
+    error = std::string("block ") + block + ": array Deferred does not have one value per node";
+    return false;
+  }
+  if (!ratio || ratio->GetNumberOfTuples() < 1 || !(ratio->GetComponent(0, 0) > 1) ||
+    !std::isfinite(ratio->GetComponent(0, 0)))
+  {
+    error = std::string("block ") + block +
+      ": a complex with deferred patches needs a finite DeferralRatio above 1";
+    return false;
+  }
+  std::vector<char> deferred(fc.Nodes.size(), 0);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    if (flags->GetComponent(i, 0) != 0)
+    {
+      const Id node = IdValue(nodeId, i);
+      if (fc.Nodes[node].Index != 2)
+      {
+        error = std::string("block ") + block + ": a deferred node that is not of index 2";
+        return false;
+      }
+      deferred[node] = 1;
+    }
+  }
+  for (const Arc& a : fc.Arcs)
+  {
+    if (deferred[a.Upper])
+    {
+      error = "block HasseDiagram: an arc into a deferred node (DeferralRatio promises none)";
+      return false;
+    }
+  }
+  for (std::size_t i = 0; i < deferred.size(); ++i)
+  {
+    if (deferred[i])
+    {
+      fc.DeferredPatches.push_back(static_cast<Id>(i));
+    }
+  }
+  fc.DeferralRatio = fc.DeferredPatches.empty() ? HUGE_VAL : ratio->GetComponent(0, 0);
   return true;
 }
 
@@ -887,6 +959,11 @@ bool FromMultiBlock(vtkMultiBlockDataSet* input, FlowComplex& fc, std::string& e
     return false;
   }
   ReadReport(cp->GetFieldData(), fc);
+  if (!ReadDeferred(cp, fc, error))
+  {
+    fc = FlowComplex();
+    return false;
+  }
   return true;
 }
 
@@ -947,10 +1024,33 @@ void AddSimplification(const FlowComplex& fc, const SimplificationResult& s, dou
   tp->InsertNextValue(threshold);
   auto pairs = NamedArray<vtkIdTypeArray>("CancelledPairCount");
   pairs->InsertNextValue(static_cast<vtkIdType>(s.Pairs.size()));
+  // What a replay of the cancellations on deferred patches needs (recorded when
+  // the complex has some): per pair, its odd lowers and its direct owners.
+  std::vector<vtkSmartPointer<vtkIdTypeArray>> replay;
+  if (s.HasLowers)
+  {
+    for (const auto& rows : { std::make_pair(flowrecon::names::PairLowerOffsets, &s.LowerOffsets),
+           std::make_pair(flowrecon::names::PairLowers, &s.Lowers),
+           std::make_pair(flowrecon::names::PairOwnerOffsets, &s.DirectOwnerOffsets),
+           std::make_pair(flowrecon::names::PairOwners, &s.DirectOwners) })
+    {
+      auto a = NamedArray<vtkIdTypeArray>(rows.first);
+      a->SetNumberOfTuples(static_cast<vtkIdType>(rows.second->size()));
+      for (std::size_t k = 0; k < rows.second->size(); ++k)
+      {
+        a->SetValue(static_cast<vtkIdType>(k), (*rows.second)[k]);
+      }
+      replay.push_back(a);
+    }
+  }
   for (vtkFieldData* fd : { cp ? cp->GetFieldData() : nullptr, output->GetFieldData() })
   {
     if (fd)
     {
+      for (const auto& a : replay)
+      {
+        fd->AddArray(a);
+      }
       fd->AddArray(offsets);
       fd->AddArray(owners);
       fd->AddArray(tp);
@@ -962,6 +1062,105 @@ void AddSimplification(const FlowComplex& fc, const SimplificationResult& s, dou
   output->SetBlock(b, PersistencePairsBlock(fc, s));
   output->GetMetaData(b)->Set(vtkCompositeDataSet::NAME(), flowrecon::names::PersistencePairs);
 }
+
+namespace
+{
+
+/// Compressed rows of `fd` named `offsetsName` (`rows` + 1 increasing values
+/// from 0) and `valuesName` (node ids), into `offsets` and `values`.
+bool ReadRows(vtkFieldData* fd, const char* offsetsName, const char* valuesName, Id rows,
+  Id nodeCount, std::vector<Id>& offsets, std::vector<Id>& values, std::string& error)
+{
+  vtkDataArray* o = fd->GetArray(offsetsName);
+  vtkDataArray* v = fd->GetArray(valuesName);
+  const std::string where = std::string("block CriticalPoints: ") + offsetsName + "/" + valuesName;
+  if (!o || !v || o->GetNumberOfComponents() != 1 || v->GetNumberOfComponents() != 1 ||
+    o->GetNumberOfTuples() != rows + 1)
+  {
+    error = where + " missing or not one row per cancelled pair";
+    return false;
+  }
+  offsets.resize(static_cast<std::size_t>(rows + 1));
+  for (vtkIdType k = 0; k <= rows; ++k)
+  {
+    offsets[k] = IdValue(o, k);
+    if ((k == 0 && offsets[k] != 0) || (k > 0 && offsets[k] < offsets[k - 1]))
+    {
+      error = where + " offsets do not increase from 0";
+      return false;
+    }
+  }
+  if (offsets.back() != v->GetNumberOfTuples())
+  {
+    error = where + " offsets do not match the values";
+    return false;
+  }
+  values.resize(static_cast<std::size_t>(v->GetNumberOfTuples()));
+  for (vtkIdType k = 0; k < v->GetNumberOfTuples(); ++k)
+  {
+    values[k] = IdValue(v, k);
+    if (values[k] < 0 || values[k] >= nodeCount)
+    {
+      error = where + " names a node that does not exist";
+      return false;
+    }
+  }
+  return true;
+}
+
+bool ReadReplay(vtkMultiBlockDataSet* input, vtkFieldData* fd, Id nodeCount,
+  SimplificationResult& s, std::string& error)
+{
+  if (!fd->GetArray(flowrecon::names::PairLowerOffsets))
+  {
+    return true; // a simplification of a complete complex: nothing to replay
+  }
+  auto* pp = vtkPolyData::SafeDownCast(NamedBlock(input, flowrecon::names::PersistencePairs));
+  vtkDataArray* count = fd->GetArray("CancelledPairCount");
+  if (!pp || !count || count->GetNumberOfTuples() < 1)
+  {
+    error = "block PersistencePairs: missing, but the replay arrays need its pairs";
+    return false;
+  }
+  const Id pairs = static_cast<Id>(count->GetComponent(0, 0));
+  const char* block = flowrecon::names::PersistencePairs;
+  vtkCellData* cd = pp->GetCellData();
+  vtkDataArray* lower = Required(cd, block, flowrecon::names::LowerNodeId, 1, pairs, error);
+  vtkDataArray* upper = lower ? Required(cd, block, flowrecon::names::UpperNodeId, 1, pairs, error) : nullptr;
+  vtkDataArray* type = upper ? Required(cd, block, flowrecon::names::PairType, 1, pairs, error) : nullptr;
+  vtkDataArray* ratio = type ? Required(cd, block, flowrecon::names::Ratio, 1, pairs, error) : nullptr;
+  if (!ratio || pp->GetNumberOfCells() != pairs)
+  {
+    error = error.empty() ? std::string(block) + ": not one line per cancelled pair" : error;
+    return false;
+  }
+  s.Pairs.resize(static_cast<std::size_t>(pairs));
+  for (vtkIdType p = 0; p < pairs; ++p)
+  {
+    CancelledPair& c = s.Pairs[p];
+    c.Lower = IdValue(lower, p);
+    c.Upper = IdValue(upper, p);
+    c.PairType = static_cast<int>(IdValue(type, p));
+    c.Ratio = ratio->GetComponent(p, 0);
+    if (c.Lower < 0 || c.Lower >= nodeCount || c.Upper < 0 || c.Upper >= nodeCount ||
+      s.Survives[c.Lower] || s.Survives[c.Upper] || c.PairType < 1 || c.PairType > 2)
+    {
+      error = std::string("block ") + block + ": a pair whose nodes are not cancelled ones";
+      return false;
+    }
+  }
+  if (!ReadRows(fd, flowrecon::names::PairLowerOffsets, flowrecon::names::PairLowers, pairs,
+        nodeCount, s.LowerOffsets, s.Lowers, error) ||
+    !ReadRows(fd, flowrecon::names::PairOwnerOffsets, flowrecon::names::PairOwners, pairs,
+      nodeCount, s.DirectOwnerOffsets, s.DirectOwners, error))
+  {
+    return false;
+  }
+  s.HasLowers = true;
+  return true;
+}
+
+} // namespace
 
 bool SimplificationFromMultiBlock(vtkMultiBlockDataSet* input, Id nodeCount,
   SimplificationResult& s, std::string& error)
@@ -1012,7 +1211,7 @@ bool SimplificationFromMultiBlock(vtkMultiBlockDataSet* input, Id nodeCount,
       return false;
     }
   }
-  return true;
+  return ReadReplay(input, cp->GetFieldData(), nodeCount, s, error);
 }
 
 } // namespace flowrecon

@@ -60,7 +60,9 @@ void AddSimplification(const FlowComplex& fc, const SimplificationResult& s, dou
 
 /// Reads back what AddSimplification stored. Returns false (with `error` empty)
 /// when `input` is not simplified: then every node survives and owns nothing.
-/// Returns false with `error` set when the stored arrays are inconsistent.
+/// Returns false with `error` set when the stored arrays are inconsistent. The
+/// pairs and what a replay on deferred patches needs (HasLowers) are read when
+/// the simplification stored them.
 bool SimplificationFromMultiBlock(vtkMultiBlockDataSet* input, Id nodeCount,
   SimplificationResult& s, std::string& error);
 

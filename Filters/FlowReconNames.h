@@ -28,6 +28,14 @@ constexpr const char* UpperNodeId = "UpperNodeId";
 constexpr const char* TargetNodeId = "TargetNodeId";
 constexpr const char* Cancelled = "Cancelled";
 constexpr const char* Owner = "Owner";
+// Deferred patches (point array, field data) and what replaying the
+// cancellations on them needs (field data, compressed rows per pair).
+constexpr const char* Deferred = "Deferred";
+constexpr const char* DeferralRatio = "DeferralRatio";
+constexpr const char* PairLowerOffsets = "PairLowerOffsets";
+constexpr const char* PairLowers = "PairLowers";
+constexpr const char* PairOwnerOffsets = "PairOwnerOffsets";
+constexpr const char* PairOwners = "PairOwners";
 constexpr const char* NodeCountByIndex = "NodeCountByIndex";
 constexpr const char* OriginalPointIds = "vtkOriginalPointIds";
 

@@ -12,6 +12,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
+#include <cmath>
 #include <string>
 
 vtkStandardNewMacro(vtkFlowComplex);
@@ -80,6 +81,7 @@ int vtkFlowComplex::RequestData(
   options.StableManifolds = this->ComputeStableManifolds;
   options.MaximumGeometryCells = this->MaximumStableManifoldCells;
   options.UnstableManifolds = this->ComputeUnstableManifolds;
+  options.DeferPatchesAboveRatio = this->DeferPatchesAbove > 1 ? this->DeferPatchesAbove : HUGE_VAL;
   options.Seed = static_cast<std::uint64_t>(static_cast<unsigned int>(this->PerturbationSeed));
   // The copy into VTK data takes about a fifth of the time when cells are drawn.
   const flowrecon::Progress progress = flowrecon::AlgorithmProgress(this);
@@ -102,5 +104,6 @@ void vtkFlowComplex::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ComputeStableManifolds: " << this->ComputeStableManifolds << "\n";
   os << indent << "MaximumStableManifoldCells: " << this->MaximumStableManifoldCells << "\n";
   os << indent << "ComputeUnstableManifolds: " << this->ComputeUnstableManifolds << "\n";
+  os << indent << "DeferPatchesAbove: " << this->DeferPatchesAbove << "\n";
   os << indent << "PerturbationSeed: " << this->PerturbationSeed << "\n";
 }

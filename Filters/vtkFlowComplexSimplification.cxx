@@ -60,12 +60,23 @@ int vtkFlowComplexSimplification::RequestData(
     return 0;
   }
 
+  const bool deferred = !fc.DeferredPatches.empty();
+  if (deferred && !(this->PersistenceThreshold < fc.DeferralRatio))
+  {
+    // Cancellations at t_p could then use the arcs the complex does not have.
+    vtkErrorMacro(<< "Persistence Threshold (t_p) " << this->PersistenceThreshold
+                  << " must be below the input's Defer Patches Above (" << fc.DeferralRatio
+                  << "): lower t_p, or raise Defer Patches Above in Flow Complex");
+    return 0;
+  }
   const flowrecon::Progress progress = flowrecon::AlgorithmProgress(this);
   return flowrecon::CallCore(
     this, "simplification",
     [&]() {
-      const flowrecon::SimplificationResult s =
-        flowrecon::Simplify(fc.Nodes, fc.Arcs, this->PersistenceThreshold, progress.Range(0, 0.6));
+      // With deferred patches, what a replay on them needs is recorded too.
+      const flowrecon::SimplificationResult s = flowrecon::Simplify(fc.Nodes,
+        std::vector<flowrecon::Arc>(fc.Arcs), this->PersistenceThreshold, progress.Range(0, 0.6),
+        deferred);
       fc.Arcs = s.Arcs; // the HasseDiagram block shows the simplified diagram
       flowrecon::ToMultiBlock(fc, output, progress.Range(0.6, 1));
       flowrecon::AddSimplification(fc, s, this->PersistenceThreshold, output);

@@ -1,9 +1,11 @@
 #include "vtkFlowReconstruction.h"
 
 #include "CoreCall.h"
+#include "DeferredReconstruction.h"
 #include "FlowComplexConversion.h"
 #include "FlowReconNames.h"
 #include "ReconstructionConversion.h"
+#include "Retriangulation.h"
 #include "Reconstruction.h"
 #include "Simplification.h"
 #include "StableManifoldGeometry.h"
@@ -53,6 +55,9 @@ struct vtkFlowReconstruction::Cache
   std::vector<flowrecon::Bar> Bars;
   std::vector<Id> CellNodes; ///< node of each cell the bars refer to
   std::string TopologyError;
+  /// With deferred patches: the triangulation their walks used, kept for the
+  /// first drawing (then freed).
+  std::unique_ptr<flowrecon::Retriangulation> Re;
 };
 
 
@@ -135,6 +140,14 @@ int vtkFlowReconstruction::RequestData(
       return 0;
     }
     const auto& nodes = cache->FC.Nodes;
+    flowrecon::FlowComplex& fc = cache->FC;
+    const bool deferred = !fc.DeferredPatches.empty();
+    if (deferred && cache->Simplified && !s.HasLowers)
+    {
+      vtkErrorMacro(<< "the input's simplification lacks what its deferred patches need "
+                       "(PairLowers, PairOwners): simplify it again with this version");
+      return 0;
+    }
     // The queue is 30% of the work, drawing 60%, the selection the rest.
     const flowrecon::Progress progress = flowrecon::AlgorithmProgress(this, 0.3);
     bool finished = false;
@@ -142,10 +155,36 @@ int vtkFlowReconstruction::RequestData(
       this, "reconstruction",
       [&]() {
         const std::vector<Id> init = flowrecon::InitializationEdges(
-          nodes, flowrecon::NearestNeighboursFromDiagram(nodes, cache->FC.Arcs));
+          nodes, flowrecon::NearestNeighboursFromDiagram(nodes, fc.Arcs));
         ++this->NumberOfQueueRuns;
-        cache->Run =
-          flowrecon::Reconstruct(nodes, cache->FC.Arcs, s.Survives, init, HUGE_VAL, progress);
+        if (!deferred)
+        {
+          cache->Run = flowrecon::Reconstruct(nodes, fc.Arcs, s.Survives, init, HUGE_VAL, progress);
+          cache->Carrier = flowrecon::CellCarriers(cache->Run, &s);
+          finished = true;
+          return;
+        }
+        // The run up to the deferral ratio, exact for every T_max below it: the
+        // deferred patches it needs are walked on the recomputed triangulation.
+        const std::vector<flowrecon::Point3> samples(
+          fc.Points.begin(), fc.Points.begin() + fc.NumberOfInputPoints);
+        flowrecon::BuildOptions options;
+        options.Seed = fc.Report.Seed;
+        cache->Re = std::make_unique<flowrecon::Retriangulation>(samples, options, fc,
+          progress.Range(0, 0.5), "lower Defer Patches Above in Flow Complex, or the cloud's size");
+        try
+        {
+          flowrecon::DeferredReconstruction late = flowrecon::ReconstructDeferred(fc,
+            cache->Simplified ? &s : nullptr, *cache->Re, init, fc.DeferralRatio,
+            progress.Range(0.5, 1));
+          cache->Run = std::move(late.Run);
+          cache->Carrier = std::move(late.Carriers);
+        }
+        catch (const flowrecon::Degenerate&)
+        {
+          throw flowrecon::InputError("a deferred patch met a tie the flow complex did not "
+                                      "see: set Defer Patches Above to 0 in Flow Complex");
+        }
         finished = true;
       },
       [&]() {
@@ -157,10 +196,22 @@ int vtkFlowReconstruction::RequestData(
     {
       return ok; // failed (0) or aborted (1, nothing cached)
     }
-    cache->Carrier = flowrecon::CellCarriers(cache->Run, &s);
     this->Cached = std::move(cache);
   }
   const double tmax = this->MaximumThreshold >= VTK_DOUBLE_MAX ? HUGE_VAL : this->MaximumThreshold;
+  if (!(tmax <= this->Cached->FC.DeferralRatio))
+  {
+    // The GUI's labels, which also name the Python properties once spaces go.
+    vtkErrorMacro(<< "Maximum Threshold (T_max) " << tmax << " is above the input's Defer "
+                  << "Patches Above (" << this->Cached->FC.DeferralRatio
+                  << "): lower T_max, or raise Defer Patches Above in Flow Complex");
+    grid->Initialize();
+    profile->Initialize();
+    arrows->Initialize();
+    topology->Initialize();
+    undersampling->Initialize();
+    return 0;
+  }
   if (this->Cached->GeometryThreshold != tmax && !this->DrawGeometry(tmax))
   {
     grid->Initialize();
@@ -260,7 +311,7 @@ bool vtkFlowReconstruction::DrawGeometry(double tmax)
       [&]() {
         flowrecon::DrawStableManifolds(samples, options, draw, fc, progress,
           "lower MaximumThreshold (flowrecon --tr-max), or the cloud's size",
-          cache.Simplified ? nullptr : &fc.Arcs);
+          cache.Simplified ? nullptr : &fc.Arcs, cache.Re.get());
         finished = true;
       },
       []() {});
@@ -270,6 +321,7 @@ bool vtkFlowReconstruction::DrawGeometry(double tmax)
       return false;
     }
   }
+  cache.Re.reset(); // about 1.5 KB per point; a later drawing computes it again
   cache.TriangleGroups = flowrecon::CellsByNode(fc.TriangleNode, fc.Nodes.size());
   cache.TetraGroups = flowrecon::CellsByNode(fc.TetrahedronNode, fc.Nodes.size());
   // The Betti numbers of every t_r <= T_max at once: one barcode of the family.

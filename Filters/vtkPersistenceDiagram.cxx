@@ -1,6 +1,8 @@
 #include "vtkPersistenceDiagram.h"
 
 #include "CoreCall.h"
+#include "DeferredPatches.h"
+#include "Retriangulation.h"
 #include "FlowComplexConversion.h"
 #include "PersistenceDiagramConversion.h"
 #include "Simplification.h"
@@ -99,7 +101,27 @@ int vtkPersistenceDiagram::RequestData(
   this->UpdateProgress(0.2);
   std::vector<flowrecon::PersistencePair> pairs;
   const int ok = flowrecon::CallCore(
-    this, "persistence", [&]() { pairs = flowrecon::DiagramPairs(fc); }, empty);
+    this, "persistence",
+    [&]() {
+      if (!fc.DeferredPatches.empty())
+      {
+        // The diagram needs every arc: the deferred patches are walked here, on
+        // the recomputed triangulation (what a complex without deferral costs).
+        const std::vector<flowrecon::Point3> samples(
+          fc.Points.begin(), fc.Points.begin() + fc.NumberOfInputPoints);
+        flowrecon::BuildOptions options;
+        options.Seed = fc.Report.Seed;
+        const flowrecon::Retriangulation re(samples, options, fc, flowrecon::Progress(),
+          "set Defer Patches Above to 0 in Flow Complex, or use fewer points");
+        flowrecon::DeferredPatches walker(fc, nullptr, re);
+        std::vector<flowrecon::Arc> more = walker.Walk(fc.DeferredPatches, flowrecon::Progress());
+        fc.Arcs.insert(fc.Arcs.end(), more.begin(), more.end());
+        fc.DeferredPatches.clear();
+        fc.DeferralRatio = HUGE_VAL;
+      }
+      pairs = flowrecon::DiagramPairs(fc);
+    },
+    empty);
   if (!ok)
   {
     return 0;

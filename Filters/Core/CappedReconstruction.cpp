@@ -1,6 +1,6 @@
 #include "CappedReconstruction.h"
 
-#include "DeferredPatches.h"
+#include "DeferredReconstruction.h"
 
 #include <algorithm>
 #include <chrono>
@@ -61,46 +61,13 @@ CappedReconstruction Attempt(const std::vector<Point3>& points, const BuildOptio
     r.QueueSeconds = lap();
     return r;
   }
-  DeferredPatches deferred(fc, s, *r.Triangulation);
-  std::vector<Arc> walked;
-  Progress quiet;
-  quiet.ShouldAbort = progress.ShouldAbort;
-  LateArcs lateArcs;
-  lateArcs.Deferred = deferred.Flags();
-  lateArcs.Ratio = fc.DeferralRatio;
-  lateArcs.Walk = [&](const std::vector<Id>& nodes) {
-    std::vector<Arc> arcs = deferred.Walk(nodes, quiet);
-    walked.insert(walked.end(), arcs.begin(), arcs.end());
-    r.WalkedLate += static_cast<Id>(nodes.size());
-    return arcs;
-  };
-  r.Run = Reconstruct(fc.Nodes, fc.Arcs, survives, init, cap, progress.Range(0.8, 1.0), lateArcs);
-  r.Carriers = CellCarriers(r.Run, s);
-  if (s)
-  {
-    // A 1-2 cancellation hands its cells to every successor of its lower, the
-    // deferred ones too. They matter where they carry cells below the cap: the
-    // inserted ones (walked above) and the cancelled ones whose own owners
-    // (maxima, known) are inserted. Replaying those completes the owners.
-    std::vector<Id> carried;
-    for (const Id y : fc.DeferredPatches)
-    {
-      if (!s->Survives[y] && r.Carriers[y] >= 0)
-      {
-        carried.push_back(y);
-      }
-    }
-    deferred.Walk(carried, quiet);
-    r.WalkedLate += static_cast<Id>(carried.size());
-    const std::vector<std::pair<Id, Id>> extra = deferred.ExtraOwners();
-    r.ReplayedOwners = static_cast<Id>(extra.size());
-    ResolveOwners(r.Simplification, extra);
-    r.Carriers = CellCarriers(r.Run, s);
-  }
-  fc.Arcs.insert(fc.Arcs.end(), walked.begin(), walked.end());
-  std::sort(fc.Arcs.begin(), fc.Arcs.end(), [](const Arc& a, const Arc& b) {
-    return std::tie(a.Lower, a.Upper) < std::tie(b.Lower, b.Upper);
-  });
+  DeferredReconstruction walked = ReconstructDeferred(fc,
+    r.Simplified ? &r.Simplification : nullptr, *r.Triangulation, init, cap,
+    progress.Range(0.8, 1.0));
+  r.Run = std::move(walked.Run);
+  r.Carriers = std::move(walked.Carriers);
+  r.WalkedLate = walked.WalkedLate;
+  r.ReplayedOwners = walked.ReplayedOwners;
   r.QueueSeconds = lap();
   return r;
 }

@@ -793,8 +793,14 @@ FlowComplex BuildFlowComplex(const std::vector<Point3>& points, const BuildOptio
       second.Report = [&](double f, const char* phase) { progress.Report(0.7 + 0.3 * f, phase); };
     }
     FlowComplex fc = BuildFlowComplex(points, hasse, first);
-    const std::vector<Id> draw = NodesWithinBudget(
-      fc.Nodes, StableManifoldCellCounts(fc.Nodes, fc.Arcs), options.MaximumGeometryCells);
+    std::vector<Id> counts = StableManifoldCellCounts(fc.Nodes, fc.Arcs);
+    for (const Id node : fc.DeferredPatches)
+    {
+      // Not walked, so of unknown size (a patch across a tube): the drawing
+      // stops below the first of them, keeping the budget a bound.
+      counts[node] = std::numeric_limits<Id>::max() / 4;
+    }
+    const std::vector<Id> draw = NodesWithinBudget(fc.Nodes, counts, options.MaximumGeometryCells);
     const auto t = Clock::now();
     DrawStableManifolds(points, options, draw, fc, second, "lower the cell budget");
     fc.Time.StableManifolds += Seconds(t);
