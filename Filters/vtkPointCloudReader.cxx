@@ -1816,6 +1816,10 @@ void CheckXmlCounts(const std::string& file, int depth = 0)
   std::string_view section;
   double declared = 0;
   std::size_t tag = 0;
+  // The element VTKFile's type names must come first inside it: without it
+  // VTK 9.2's composite readers dereference a null primary element.
+  std::string_view primary;
+  std::size_t primaryLine = 0;
   while ((tag = header.find('<', tag)) != std::string_view::npos)
   {
     const std::size_t close = header.find('>', tag);
@@ -1827,6 +1831,16 @@ void CheckXmlCounts(const std::string& file, int depth = 0)
     const std::size_t line = 1 + std::count(header.begin(), header.begin() + tag, '\n');
     tag = close;
     const std::string_view name = element.substr(0, element.find_first_of(" \t\r\n/"));
+    if (!primary.empty() && !name.empty() && name[0] != '!' && name[0] != '?')
+    {
+      if (name != primary)
+      {
+        Fail(file, line,
+          "expected the element <" + std::string(primary) + "> inside VTKFile, found " +
+            Quote(name) + " (corrupt or truncated file?)");
+      }
+      primary = {};
+    }
     static const char* const sections[] = { "PointData", "CellData", "Points", "Verts", "Lines",
       "Strips", "Polys", "Cells", "Coordinates", "FieldData" };
     section = std::find(std::begin(sections), std::end(sections), name) != std::end(sections)
@@ -1898,6 +1912,8 @@ void CheckXmlCounts(const std::string& file, int depth = 0)
             "unsupported VTK XML file type " + Quote(value) +
               " (expected a dataset with points or a multiblock of them)");
         }
+        primary = value;
+        primaryLine = line;
       }
       else if ((attribute == "type" && (name == "DataArray" || name == "Array")) ||
         attribute == "header_type")
@@ -2011,6 +2027,12 @@ void CheckXmlCounts(const std::string& file, int depth = 0)
           "data array " + Quote(arrayName) + ": " + problem + " (corrupt or truncated file?)");
       }
     }
+  }
+  if (!primary.empty())
+  {
+    Fail(file, primaryLine,
+      "VTKFile of type " + Quote(primary) + " holds no <" + std::string(primary) +
+        "> element (corrupt or truncated file?)");
   }
   CheckParsedXml(file, text, limit);
 }

@@ -121,6 +121,10 @@ flowrecon_add_cli_test(CorruptComplexPiece EXIT 1 STDERR_LINES 1
   STDERR "^flowrecon: [^\n]*/corrupt/tetrahedron/tetrahedron_2\\.vtu: piece 0, Cells: array 'offsets' announces [0-9]+ connectivity values"
   FIXTURES_REQUIRED flowrecon_cli_corrupt
   ARGS reconstruct "${_w}/corrupt/tetrahedron.vtm" -o "${_w}/corrupt.vtu")
+flowrecon_add_cli_test(CorruptComplexNoPrimary EXIT 1 STDERR_LINES 1
+  STDERR "^flowrecon: [^\n]*/corrupt/noprimary\\.vtm:[0-9]+: VTKFile of type 'vtkMultiBlockDataSet' holds no <vtkMultiBlockDataSet> element"
+  FIXTURES_REQUIRED flowrecon_cli_corrupt
+  ARGS reconstruct "${_w}/corrupt/noprimary.vtm" -o "${_w}/corrupt.vtu")
 
 # A full disk is named as such (/dev/full fails every write with ENOSPC; the
 # .vtu and .csv outputs are links to it).

@@ -7,7 +7,8 @@ its last cell offset raised by 2^32, and OUTDIR/cloud.vtp, a copy of the
 CriticalPoints piece with its last vertex offset raised the same way. VTK 9.2's
 reader sizes the connectivity by that offset: 32 GB. The pieces are LZ4
 compressed, but an LZ4 block always ends with 5 literal bytes, so the high
-bytes of the last offset can be edited in place.
+bytes of the last offset can be edited in place. And OUTDIR/noprimary.vtm, the
+.vtm with its <vtkMultiBlockDataSet> element renamed.
 """
 import os
 import re
@@ -44,3 +45,10 @@ raise_last_offset(os.path.join(outdir, name, name + "_2.vtu"), b"Cells")
 cloud = os.path.join(outdir, "cloud.vtp")
 shutil.copy(os.path.join(outdir, name, name + "_0.vtp"), cloud)
 raise_last_offset(cloud, b"Verts")
+# A .vtm whose <vtkMultiBlockDataSet> element lost its name (a fuzzer's find):
+# VTK 9.2's reader dereferenced the missing element (SEGV at 0xbc).
+vtm = open(os.path.join(outdir, name + ".vtm")).read()
+if "<vtkMultiBlockDataSet>" not in vtm:
+    sys.exit(source + ": expected a <vtkMultiBlockDataSet> element")
+open(os.path.join(outdir, "noprimary.vtm"), "w").write(
+    vtm.replace("<vtkMultiBlockDataSet>", "<AppendedDatakDataSet>", 1))
