@@ -607,6 +607,9 @@ vtkSmartPointer<vtkMultiBlockDataSet> ComputeFlowComplex(
   filter->SetComputeStableManifolds(options.Stable);
   filter->SetMaximumStableManifoldCells(options.MaxCells);
   filter->SetComputeUnstableManifolds(options.Unstable);
+  // complex, diagram and info give the whole Hasse diagram; reconstruct of a
+  // cloud defers patches by itself (CappedReconstruction).
+  filter->SetDeferPatchesAbove(0);
   RunFilter(filter, file, options, "flow complex computation");
   auto* output = vtkMultiBlockDataSet::SafeDownCast(filter->GetOutputDataObject(0));
   if (!output || output->GetNumberOfBlocks() == 0)

@@ -74,7 +74,8 @@ public:
    * the field data DeferralRatio). On samples of surfaces with tubes those
    * patches hold most of the arcs (~n^1.5). Flow Reconstruction walks the ones
    * it needs, exactly, for any Maximum Threshold up to this value; Persistence
-   * Diagram walks them all. 0 (default) or anything up to 1: every patch.
+   * Diagram walks them all. Default 4, Flow Reconstruction's default Maximum
+   * Threshold; 0 or anything up to 1: every patch.
    */
   vtkSetClampMacro(DeferPatchesAbove, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(DeferPatchesAbove, double);
@@ -120,7 +121,7 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   bool ComputeStableManifolds = true;
-  double DeferPatchesAbove = 0;
+  double DeferPatchesAbove = 4;
   vtkIdType MaximumStableManifoldCells = 2000000;
   bool ComputeUnstableManifolds = true;
   int PerturbationSeed = 1;

@@ -94,6 +94,9 @@ vtkSmartPointer<vtkMultiBlockDataSet> FlowComplexOf(
   fc->SetComputeUnstableManifolds(false);
   fc->SetComputeStableManifolds(cells != -2);
   fc->SetMaximumStableManifoldCells(std::max<vtkIdType>(cells, -1));
+  // Every patch walked: these runs go to t_r = infinity, above any deferral
+  // ratio (deferred patches are pv.deferred_pipeline's subject).
+  fc->SetDeferPatchesAbove(0);
   fc->SetPerturbationSeed(seed);
   fc->Update();
   return fc->GetOutput();
