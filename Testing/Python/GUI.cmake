@@ -22,6 +22,9 @@ if (FLOWRECON_BUILD_PARAVIEW_PLUGIN AND TARGET FlowRecon)
       FAIL_REGULAR_EXPRESSION "gui_pipeline: FAIL"
       SKIP_RETURN_CODE 77
       LABELS "paraview;gui"
+      # One GUI window at a time: gui.abort clicks at a screen position, which
+      # another test's window opened on the same X server can cover.
+      RESOURCE_LOCK flowrecon_x_screen
       TIMEOUT 180)
     # The defaults a user gets from the Filters menu and the Apply button, and the
     # sponsor arrows drawn as arrows (issue #10).
@@ -34,6 +37,9 @@ if (FLOWRECON_BUILD_PARAVIEW_PLUGIN AND TARGET FlowRecon)
       FAIL_REGULAR_EXPRESSION "test_apply_gui: FAIL"
       SKIP_RETURN_CODE 77
       LABELS "paraview;gui"
+      # One GUI window at a time: gui.abort clicks at a screen position, which
+      # another test's window opened on the same X server can cover.
+      RESOURCE_LOCK flowrecon_x_screen
       TIMEOUT 240)
   endif ()
   if (FLOWRECON_PVBATCH)

@@ -69,6 +69,9 @@ if (FLOWRECON_BUILD_PARAVIEW_PLUGIN AND TARGET FlowRecon AND FLOWRECON_PVPYTHON)
       FAIL_REGULAR_EXPRESSION "FAIL"
       SKIP_RETURN_CODE 77
       LABELS "paraview;gui"
+      # One GUI window at a time: gui.abort clicks at a screen position, which
+      # another test's window opened on the same X server can cover.
+      RESOURCE_LOCK flowrecon_x_screen
       TIMEOUT 300)
   endif ()
 endif ()

@@ -6,6 +6,7 @@ Qt 5 and ParaView's pqCore / pqApplicationComponents.
 
 import ctypes
 import os
+import traceback
 
 
 def say(message):
@@ -164,3 +165,18 @@ def x_click(x, y):
     x11.XFlush(dpy)
     x11.XCloseDisplay(dpy)
     return True
+
+
+def run_in_gui(main, name):
+    """Runs main() in the GUI's Python, prints "NAME: PASS"/"FAIL" (with the
+    traceback) to the terminal and, unless FLOWRECON_EXIT=0, leaves the GUI with
+    os._exit(), since the GUI has no quit from Python."""
+    try:
+        main()
+        status = 0
+    except Exception:  # noqa: BLE001 - report anything, then leave the GUI
+        say(traceback.format_exc())
+        say("%s: FAIL" % name)
+        status = 1
+    if os.environ.get("FLOWRECON_EXIT", "1") == "1":
+        os._exit(status)

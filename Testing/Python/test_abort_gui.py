@@ -41,7 +41,6 @@ Messages window) and os._exit()s (the GUI has no quit from Python).
 import os
 import sys
 import time
-import traceback
 
 from paraview import servermanager
 from paraview.simple import *  # noqa: F401,F403
@@ -53,7 +52,7 @@ ABORT_LATENCY = 3.0   # s from the request to the end of the run (the longest st
 
 
 sys.path.insert(0, os.environ.get("FLOWRECON_TEST_DIR", "."))
-from gui_qt import Qt, check, say, x_click  # noqa: E402
+from gui_qt import Qt, check, run_in_gui, say, x_click  # noqa: E402
 
 
 def n_cells(proxy):
@@ -223,12 +222,4 @@ def main():
     say("test_abort_gui: PASS")
 
 
-try:
-    main()
-    status = 0
-except Exception:  # noqa: BLE001 - report anything, then leave the GUI
-    say(traceback.format_exc())
-    say("test_abort_gui: FAIL")
-    status = 1
-if os.environ.get("FLOWRECON_EXIT", "1") == "1":
-    os._exit(status)
+run_in_gui(main, "test_abort_gui")

@@ -26,12 +26,11 @@ Prints "test_apply_gui: PASS"/"FAIL" with os.write and os._exit()s.
 
 import os
 import sys
-import traceback
 
 import numpy as np
 
 sys.path.insert(0, os.environ.get("FLOWRECON_TEST_DIR", "."))
-from gui_qt import Qt, check, say  # noqa: E402
+from gui_qt import Qt, check, run_in_gui, say  # noqa: E402
 
 from paraview import servermanager  # noqa: E402
 from paraview.simple import *  # noqa: E402,F401,F403
@@ -241,12 +240,4 @@ def main():
     say("test_apply_gui: PASS")
 
 
-try:
-    main()
-    status = 0
-except Exception:  # noqa: BLE001 - report anything, then leave the GUI
-    say(traceback.format_exc())
-    say("test_apply_gui: FAIL")
-    status = 1
-if os.environ.get("FLOWRECON_EXIT", "1") == "1":
-    os._exit(status)
+run_in_gui(main, "test_apply_gui")
