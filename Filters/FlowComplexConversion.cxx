@@ -107,15 +107,11 @@ vtkSmartPointer<vtkPolyData> CriticalPointsBlock(const FlowComplex& fc)
 vtkSmartPointer<vtkPolyData> GabrielEdgesBlock(const FlowComplex& fc)
 {
   std::vector<Point3> samples;
-  std::vector<vtkIdType> pointOfInput;
+  // Input id -> point: a map, since the ids of a stored complex are not trusted.
+  std::unordered_map<Id, vtkIdType> pointOfInput;
   for (std::size_t i = 0; i < fc.Nodes.size() && fc.Nodes[i].Index == 0; ++i)
   {
-    const Id input = fc.Nodes[i].Simplex[0];
-    if (input >= static_cast<Id>(pointOfInput.size()))
-    {
-      pointOfInput.resize(static_cast<std::size_t>(input) + 1, -1);
-    }
-    pointOfInput[input] = static_cast<vtkIdType>(samples.size());
+    pointOfInput.emplace(fc.Nodes[i].Simplex[0], static_cast<vtkIdType>(samples.size()));
     samples.push_back(fc.Nodes[i].Location);
   }
   auto nodeId = NamedArray<vtkIdTypeArray>(flowrecon::names::NodeId);
@@ -129,14 +125,12 @@ vtkSmartPointer<vtkPolyData> GabrielEdgesBlock(const FlowComplex& fc)
     {
       continue;
     }
-    const Id a = n.Simplex[0], b = n.Simplex[1];
-    const bool known = a >= 0 && b >= 0 && a < static_cast<Id>(pointOfInput.size()) &&
-      b < static_cast<Id>(pointOfInput.size()) && pointOfInput[a] >= 0 && pointOfInput[b] >= 0;
-    if (!known)
+    const auto a = pointOfInput.find(n.Simplex[0]), b = pointOfInput.find(n.Simplex[1]);
+    if (a == pointOfInput.end() || b == pointOfInput.end())
     {
       throw InputError("an index-1 node whose vertices are not samples");
     }
-    const vtkIdType ends[2] = { pointOfInput[a], pointOfInput[b] };
+    const vtkIdType ends[2] = { a->second, b->second };
     lines->InsertNextCell(2, ends);
     nodeId->InsertNextValue(static_cast<vtkIdType>(i));
     index->InsertNextValue(1);
