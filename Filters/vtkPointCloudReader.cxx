@@ -1114,20 +1114,36 @@ public:
   }
 
   // Skips the METADATA block vtkDataReader::ReadArray reads after an array's
-  // values, if one follows: lines up to an empty one.
+  // values, if one follows, as it reads it: lines of spaces are popped, then
+  // "metadata" must start right there; its lines end at the first one that is
+  // empty for strlen (a NUL first counts: VTK reads lines into a C string).
+  // VTK's component-name and information readers may read past such a line;
+  // stopping here instead only checks more of the file, never less.
   void SkipMetadata()
   {
-    std::size_t p = this->Text.find_first_not_of(" \r\n", this->Pos);
-    if (p == std::string_view::npos || ToLower(this->Text.substr(p, 8)) != "metadata")
+    for (;;)
+    {
+      const std::size_t p = this->Text.find_first_not_of(' ', this->Pos);
+      if (p == std::string_view::npos)
+      {
+        return;
+      }
+      if (this->Text[p] != '\n')
+      {
+        break;
+      }
+      this->Pos = p + 1;
+    }
+    if (ToLower(this->Text.substr(this->Pos, 8)) != "metadata")
     {
       return;
     }
-    this->Pos = p;
     while (this->SkipLine())
     {
-      const std::size_t end = std::min(this->Text.find('\n', this->Pos), this->Text.size());
-      if (Trim(this->Text.substr(this->Pos, end - this->Pos)).empty())
+      if (this->Pos >= this->Text.size() || this->Text[this->Pos] == '\n' ||
+        this->Text[this->Pos] == '\0')
       {
+        this->SkipLine();
         break;
       }
     }
