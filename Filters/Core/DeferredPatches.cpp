@@ -38,7 +38,9 @@ DeferredPatches::DeferredPatches(const FlowComplex& fc, const SimplificationResu
   {
     // A deferred node as the upper of a 1-2 pair means a threshold at or above
     // the deferral ratio: its lowers were never known.
-    if (this->Deferred[pair.Upper] && pair.PairType == 1)
+    // So does any pair of ratio >= the deferral ratio (a stored file may say
+    // so): such a cancellation could have used the arcs the complex lacks.
+    if ((this->Deferred[pair.Upper] && pair.PairType == 1) || !(pair.Ratio < fc.DeferralRatio))
     {
       throw InputError("deferred patches: a cancellation at or above the deferral ratio");
     }

@@ -8,7 +8,8 @@ both give the same reconstruction cell by cell (points, cells, NodeId, Index,
 Step, Priority, Threshold, Extension, Sponsor), the same profile below T, the
 same topology profile and sponsor arrows; the Persistence Diagram of the deferred
 complex (which walks every deferred patch) equals the eager one. Wrong settings
-give errors naming the GUI's properties.
+give errors naming the GUI's properties, and a stored simplification whose pairs
+claim a ratio at T is refused.
 
 Run: pvpython test_deferred_pipeline.py PLUGIN WORKDIR   (no X server needed)
 """
@@ -152,6 +153,22 @@ def wrong_settings(lazy):
           "T_max above Defer Patches Above: errors %s" % errors.messages)
     check(servermanager.Fetch(recon).GetNumberOfCells() == 0,
           "T_max above Defer Patches Above: the output is not empty")
+    recon.MaximumThreshold = ratio
+    # A stored simplification whose pairs claim a ratio at or above T (an edited
+    # file): the replays could not be exact, so the reconstruction refuses it.
+    edited = servermanager.Fetch(simp)
+    for b in range(edited.GetNumberOfBlocks()):
+        if edited.GetMetaData(b).Get(edited.NAME()) == "PersistencePairs":
+            pairs = edited.GetBlock(b).GetCellData().GetArray("Ratio")
+            check(pairs.GetNumberOfTuples() > 0, "no cancelled pair to edit")
+            pairs.SetValue(0, ratio)
+    producer = servermanager.sources.PVTrivialProducer()
+    producer.GetClientSideObject().SetOutput(edited)
+    again = FlowReconstruction(Input=producer, MaximumThreshold=ratio)  # noqa: F821
+    errors = Errors(again)
+    again.UpdatePipeline()
+    check(any("deferral ratio" in m for m in errors.messages),
+          "a stored pair at the deferral ratio: errors %s" % errors.messages)
 
 
 def main():
