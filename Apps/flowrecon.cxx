@@ -16,6 +16,7 @@
 #include "FlowComplexConversion.h"
 #include "FlowReconNames.h"
 #include "CappedReconstruction.h"
+#include "DeferredPatches.h"
 #include "FlowComplexBuilder.h" // flowrecon diagram calls the core directly
 #include "Persistence.h"
 #include "PersistenceDiagramConversion.h"
@@ -1415,6 +1416,16 @@ int RunDiagram(const Arguments& args)
     if (!flowrecon::FromMultiBlock(stored, fc, error))
     {
       throw Failure(input + ": " + error);
+    }
+    try
+    {
+      // A complex saved from ParaView defers its far patches by default.
+      flowrecon::WalkEveryDeferredPatch(
+        fc, flowrecon::Progress(), "use the cloud itself, or fewer points");
+    }
+    catch (const flowrecon::InputError& e)
+    {
+      throw Failure(input + ": " + e.what());
     }
   }
   else

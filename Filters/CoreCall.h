@@ -4,7 +4,8 @@
 #ifndef CoreCall_h
 #define CoreCall_h
 
-#include "Progress.h" // core progress and exceptions
+#include "MemoryGuard.h" // core: ReleaseFreedMemory
+#include "Progress.h"    // core progress and exceptions
 
 #include "vtkAlgorithm.h"
 #include "vtkSetGet.h"
@@ -34,9 +35,15 @@ inline Progress AlgorithmProgress(vtkAlgorithm* algorithm, double scale = 1.0)
 /// an empty output in ParaView is explained) and returns 1, since an abort is not an
 /// error; on any other exception reports it (prefixed by `what` unless it is bad
 /// input) and returns 0.
+/// Whatever the outcome, the memory the core freed is handed back to the system
+/// (ReleaseFreedMemory): ParaView holds every stage's output for the session.
 template <class Work, class OnAbort>
 int CallCore(vtkAlgorithm* algorithm, const char* what, Work&& work, OnAbort&& onAbort)
 {
+  struct Release
+  {
+    ~Release() { ReleaseFreedMemory(); }
+  } release;
   try
   {
     work();

@@ -146,15 +146,17 @@ vtkSmartPointer<vtkPolyData> GabrielEdgesBlock(const FlowComplex& fc)
   return pd;
 }
 
+/// The samples' bounding-box diagonal, from the index-0 nodes (the distinct
+/// samples), so that it needs no geometry.
 double Diagonal(const FlowComplex& fc)
 {
   double lo[3] = { HUGE_VAL, HUGE_VAL, HUGE_VAL }, hi[3] = { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
-  for (Id i = 0; i < fc.NumberOfInputPoints; ++i)
+  for (const Node& node : fc.Nodes)
   {
-    for (int k = 0; k < 3; ++k)
+    for (int k = 0; node.Index == 0 && k < 3; ++k)
     {
-      lo[k] = std::min(lo[k], fc.Points[i][k]);
-      hi[k] = std::max(hi[k], fc.Points[i][k]);
+      lo[k] = std::min(lo[k], node.Location[k]);
+      hi[k] = std::max(hi[k], node.Location[k]);
     }
   }
   if (!(hi[0] >= lo[0]))
@@ -716,12 +718,14 @@ bool ReadArcs(vtkPolyData* hd, FlowComplex& fc, std::string& error)
   return true;
 }
 
-bool ReadStableManifolds(vtkUnstructuredGrid* ug, FlowComplex& fc, std::string& error)
+/// Checks the block and, with `store`, reads its geometry into fc (a stage that
+/// passes the block through checks it without the copy's memory).
+bool ReadStableManifolds(vtkUnstructuredGrid* ug, FlowComplex& fc, std::string& error, bool store)
 {
   const char* block = flowrecon::names::StableManifolds;
   const vtkIdType np = ug->GetNumberOfPoints();
-  fc.Points.resize(static_cast<std::size_t>(np));
-  for (vtkIdType i = 0; i < np; ++i)
+  fc.Points.resize(store ? static_cast<std::size_t>(np) : 0);
+  for (vtkIdType i = 0; store && i < np; ++i)
   {
     ug->GetPoint(i, fc.Points[i].data());
   }
@@ -769,6 +773,10 @@ bool ReadStableManifolds(vtkUnstructuredGrid* ug, FlowComplex& fc, std::string& 
       error = "block StableManifolds: cell " + std::to_string(c) + " has an invalid node or point";
       return false;
     }
+    if (!store)
+    {
+      continue;
+    }
     if (type == VTK_TRIANGLE)
     {
       fc.Triangles.push_back({ { pts[0], pts[1], pts[2] } });
@@ -779,6 +787,10 @@ bool ReadStableManifolds(vtkUnstructuredGrid* ug, FlowComplex& fc, std::string& 
       fc.Tetrahedra.push_back({ { pts[0], pts[1], pts[2], pts[3] } });
       fc.TetrahedronNode.push_back(node);
     }
+  }
+  if (!store)
+  {
+    return true; // fc.NumberOfInputPoints still says how many samples there are
   }
   // Critical points of nodes of index >= 1 are constructed points.
   std::unordered_map<Point3, Id, PointHash> constructed;
@@ -803,7 +815,8 @@ bool ReadStableManifolds(vtkUnstructuredGrid* ug, FlowComplex& fc, std::string& 
   return true;
 }
 
-bool ReadFlowLines(vtkPolyData* um, FlowComplex& fc, std::string& error)
+/// Checks the block and, with `store`, reads the flow lines into fc.
+bool ReadFlowLines(vtkPolyData* um, FlowComplex& fc, std::string& error, bool store)
 {
   vtkDataArray* nodeId = um->GetCellData()->GetArray(flowrecon::names::NodeId);
   vtkDataArray* target = um->GetCellData()->GetArray(flowrecon::names::TargetNodeId);
@@ -833,13 +846,16 @@ bool ReadFlowLines(vtkPolyData* um, FlowComplex& fc, std::string& error)
       error = "block UnstableManifolds: cell " + std::to_string(c) + " has an invalid node or point";
       return false;
     }
-    for (vtkIdType k = 0; k < npts; ++k)
+    for (vtkIdType k = 0; store && k < npts; ++k)
     {
       Point3 p;
       um->GetPoint(pts[k], p.data());
       line.Points.push_back(p);
     }
-    fc.FlowLines.push_back(std::move(line));
+    if (store)
+    {
+      fc.FlowLines.push_back(std::move(line));
+    }
   }
   return true;
 }
@@ -928,7 +944,8 @@ vtkDataObject* NamedBlock(vtkMultiBlockDataSet* input, const char* name)
   return nullptr;
 }
 
-bool FromMultiBlock(vtkMultiBlockDataSet* input, FlowComplex& fc, std::string& error)
+bool FromMultiBlock(
+  vtkMultiBlockDataSet* input, FlowComplex& fc, std::string& error, bool diagramOnly)
 {
   fc = FlowComplex();
   auto* cp = vtkPolyData::SafeDownCast(NamedBlock(input, flowrecon::names::CriticalPoints));
@@ -941,13 +958,13 @@ bool FromMultiBlock(vtkMultiBlockDataSet* input, FlowComplex& fc, std::string& e
     return false;
   }
   if (!ReadNodes(cp, fc, error) || !ReadArcs(hd, fc, error) ||
-    !ReadStableManifolds(sm, fc, error))
+    !ReadStableManifolds(sm, fc, error, !diagramOnly))
   {
     fc = FlowComplex();
     return false;
   }
   auto* um = vtkPolyData::SafeDownCast(NamedBlock(input, flowrecon::names::UnstableManifolds));
-  if (um && !ReadFlowLines(um, fc, error))
+  if (um && !ReadFlowLines(um, fc, error, !diagramOnly))
   {
     fc = FlowComplex();
     return false;
@@ -959,6 +976,35 @@ bool FromMultiBlock(vtkMultiBlockDataSet* input, FlowComplex& fc, std::string& e
     return false;
   }
   return true;
+}
+
+void ReplaceHasseDiagram(
+  vtkMultiBlockDataSet* input, const FlowComplex& fc, vtkMultiBlockDataSet* output)
+{
+  output->Initialize();
+  output->GetFieldData()->ShallowCopy(input->GetFieldData());
+  output->SetNumberOfBlocks(input->GetNumberOfBlocks());
+  for (unsigned int b = 0; b < input->GetNumberOfBlocks(); ++b)
+  {
+    vtkInformation* meta = input->HasMetaData(b) ? input->GetMetaData(b) : nullptr;
+    const char* name = meta ? meta->Get(vtkCompositeDataSet::NAME()) : nullptr;
+    vtkDataObject* block = input->GetBlock(b);
+    vtkSmartPointer<vtkDataObject> copy;
+    if (name && std::strcmp(name, flowrecon::names::HasseDiagram) == 0)
+    {
+      copy = HasseDiagramBlock(fc);
+    }
+    else if (block)
+    {
+      copy = vtk::TakeSmartPointer(block->NewInstance());
+      copy->ShallowCopy(block);
+    }
+    output->SetBlock(b, copy);
+    if (meta)
+    {
+      output->GetMetaData(b)->Copy(meta);
+    }
+  }
 }
 
 void AddSimplification(const FlowComplex& fc, const SimplificationResult& s, double threshold,

@@ -47,7 +47,17 @@ void AddReport(const FlowComplex& fc, vtkFieldData* fd);
 /// NodeId; UnstableManifolds polylines) and the report arrays. The arcs are the
 /// ones stored, i.e. the simplified ones for a simplified complex. Returns false
 /// and sets `error` (one line) when a block or an array is missing or invalid.
-bool FromMultiBlock(vtkMultiBlockDataSet* input, FlowComplex& fc, std::string& error);
+/// With `diagramOnly`, the manifold geometry and the flow lines are checked but
+/// not read (fc.Points, Triangles, Tetrahedra, FlowLines stay empty): what a
+/// stage that works on the Hasse diagram alone needs, without the geometry's copy.
+bool FromMultiBlock(vtkMultiBlockDataSet* input, FlowComplex& fc, std::string& error,
+  bool diagramOnly = false);
+
+/// `output` as `input` with the HasseDiagram block made from fc.Arcs: every
+/// other block (and the field data) is a shallow copy, so a stage that changes
+/// only the arcs costs what the arcs cost, not what the drawn geometry costs.
+void ReplaceHasseDiagram(
+  vtkMultiBlockDataSet* input, const FlowComplex& fc, vtkMultiBlockDataSet* output);
 
 /// What vtkFlowComplexSimplification adds to a flow complex: the point array
 /// `Cancelled` of CriticalPoints, the field arrays `OwnerOffsets`, `Owners`

@@ -15,6 +15,7 @@
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
+#include <stdexcept>
 #include <array>
 #include <cmath>
 #include <initializer_list>
@@ -70,6 +71,11 @@ struct DiagramCells
 
 std::vector<PersistencePair> DiagramPairs(const FlowComplex& fc)
 {
+  if (!fc.DeferredPatches.empty())
+  {
+    // Their arcs are missing: the pairs would be wrong without a word.
+    throw std::logic_error("persistence of a complex with deferred patches (walk them first)");
+  }
   std::vector<PersistencePair> pairs = ComputePersistence(fc.Nodes, fc.Arcs);
   pairs.erase(std::remove_if(pairs.begin(), pairs.end(),
                 [](const PersistencePair& p) { return !(p.DeathValue > p.BirthValue); }),

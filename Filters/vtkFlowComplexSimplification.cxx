@@ -45,7 +45,9 @@ int vtkFlowComplexSimplification::RequestData(
   flowrecon::FlowComplex fc;
   flowrecon::SimplificationResult previous;
   std::string error;
-  if (!flowrecon::FromMultiBlock(input, fc, error))
+  // The simplification changes the arcs only: the drawn geometry is neither
+  // read nor copied (ReplaceHasseDiagram shares it with the input).
+  if (!flowrecon::FromMultiBlock(input, fc, error, /*diagramOnly=*/true))
   {
     vtkErrorMacro(<< error);
     return 0;
@@ -78,7 +80,7 @@ int vtkFlowComplexSimplification::RequestData(
         std::vector<flowrecon::Arc>(fc.Arcs), this->PersistenceThreshold, progress.Range(0, 0.6),
         deferred);
       fc.Arcs = s.Arcs; // the HasseDiagram block shows the simplified diagram
-      flowrecon::ToMultiBlock(fc, output, progress.Range(0.6, 1));
+      flowrecon::ReplaceHasseDiagram(input, fc, output);
       flowrecon::AddSimplification(fc, s, this->PersistenceThreshold, output);
       flowrecon::SetDefaultScalars(output);
     },

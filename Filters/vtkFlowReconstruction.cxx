@@ -4,6 +4,7 @@
 #include "DeferredReconstruction.h"
 #include "FlowComplexConversion.h"
 #include "FlowReconNames.h"
+#include "MemoryGuard.h"
 #include "ReconstructionConversion.h"
 #include "Retriangulation.h"
 #include "Reconstruction.h"
@@ -166,12 +167,8 @@ int vtkFlowReconstruction::RequestData(
         }
         // The run up to the deferral ratio, exact for every T_max below it: the
         // deferred patches it needs are walked on the recomputed triangulation.
-        const std::vector<flowrecon::Point3> samples(
-          fc.Points.begin(), fc.Points.begin() + fc.NumberOfInputPoints);
-        flowrecon::BuildOptions options;
-        options.Seed = fc.Report.Seed;
-        cache->Re = std::make_unique<flowrecon::Retriangulation>(samples, options, fc,
-          progress.Range(0, 0.5), "lower Defer Patches Above in Flow Complex, or the cloud's size");
+        cache->Re = flowrecon::Retriangulation::OfStoredComplex(fc, progress.Range(0, 0.5),
+          "lower Defer Patches Above in Flow Complex, or the cloud's size");
         try
         {
           flowrecon::DeferredReconstruction late = flowrecon::ReconstructDeferred(fc,
@@ -243,6 +240,7 @@ int vtkFlowReconstruction::RequestData(
 
   flowrecon::ReconstructionToVTK(fc, c.Carrier, c.Run, t, c.TriangleGroups, c.TetraGroups,
     grid, profile, arrows);
+  flowrecon::ReleaseFreedMemory(); // the previous output's arrays, replaced just now
   if (!this->ComputeTopology)
   {
     topology->Initialize();
@@ -322,6 +320,7 @@ bool vtkFlowReconstruction::DrawGeometry(double tmax)
     }
   }
   cache.Re.reset(); // about 1.5 KB per point; a later drawing computes it again
+  flowrecon::ReleaseFreedMemory();
   cache.TriangleGroups = flowrecon::CellsByNode(fc.TriangleNode, fc.Nodes.size());
   cache.TetraGroups = flowrecon::CellsByNode(fc.TetrahedronNode, fc.Nodes.size());
   // The Betti numbers of every t_r <= T_max at once: one barcode of the family.

@@ -2,7 +2,6 @@
 
 #include "CoreCall.h"
 #include "DeferredPatches.h"
-#include "Retriangulation.h"
 #include "FlowComplexConversion.h"
 #include "PersistenceDiagramConversion.h"
 #include "Simplification.h"
@@ -103,22 +102,10 @@ int vtkPersistenceDiagram::RequestData(
   const int ok = flowrecon::CallCore(
     this, "persistence",
     [&]() {
-      if (!fc.DeferredPatches.empty())
-      {
-        // The diagram needs every arc: the deferred patches are walked here, on
-        // the recomputed triangulation (what a complex without deferral costs).
-        const std::vector<flowrecon::Point3> samples(
-          fc.Points.begin(), fc.Points.begin() + fc.NumberOfInputPoints);
-        flowrecon::BuildOptions options;
-        options.Seed = fc.Report.Seed;
-        const flowrecon::Retriangulation re(samples, options, fc, flowrecon::Progress(),
-          "set Defer Patches Above to 0 in Flow Complex, or use fewer points");
-        flowrecon::DeferredPatches walker(fc, nullptr, re);
-        std::vector<flowrecon::Arc> more = walker.Walk(fc.DeferredPatches, flowrecon::Progress());
-        fc.Arcs.insert(fc.Arcs.end(), more.begin(), more.end());
-        fc.DeferredPatches.clear();
-        fc.DeferralRatio = HUGE_VAL;
-      }
+      // The diagram needs every arc: the deferred patches are walked here, on
+      // the recomputed triangulation (what a complex without deferral costs).
+      flowrecon::WalkEveryDeferredPatch(fc, flowrecon::Progress(),
+        "set Defer Patches Above to 0 in Flow Complex, or use fewer points");
       pairs = flowrecon::DiagramPairs(fc);
     },
     empty);

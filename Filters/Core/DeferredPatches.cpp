@@ -8,6 +8,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace flowrecon
@@ -124,6 +125,21 @@ std::vector<std::pair<Id, Id>> DeferredPatches::ExtraOwners() const
   std::sort(owners.begin(), owners.end());
   owners.erase(std::unique(owners.begin(), owners.end()), owners.end());
   return owners;
+}
+
+void WalkEveryDeferredPatch(FlowComplex& fc, const Progress& progress, const std::string& advice)
+{
+  if (fc.DeferredPatches.empty())
+  {
+    return;
+  }
+  const std::unique_ptr<Retriangulation> re =
+    Retriangulation::OfStoredComplex(fc, progress.Range(0, 0.5), advice);
+  DeferredPatches walker(fc, nullptr, *re);
+  const std::vector<Arc> more = walker.Walk(fc.DeferredPatches, progress.Range(0.5, 1));
+  fc.Arcs.insert(fc.Arcs.end(), more.begin(), more.end());
+  fc.DeferredPatches.clear();
+  fc.DeferralRatio = HUGE_VAL;
 }
 
 } // namespace flowrecon

@@ -13,6 +13,7 @@
 #include "Simplification.h"
 
 #include <memory>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -57,6 +58,13 @@ private:
   std::unique_ptr<CancellationReplay> Replayer; ///< with a simplification
   std::vector<std::pair<Id, Id>> Owners;
 };
+
+/// Makes `fc` the whole (unsimplified) flow complex: every deferred patch is
+/// walked on the triangulation of fc's samples, recomputed with the stored seed
+/// (Retriangulation::OfStoredComplex), and its arcs are added. What the
+/// persistence diagram needs; a no-op without deferred patches. `advice` says
+/// what to do when the triangulation would not fit in memory.
+void WalkEveryDeferredPatch(FlowComplex& fc, const Progress& progress, const std::string& advice);
 
 } // namespace flowrecon
 

@@ -17,13 +17,9 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
-#include <tbb/scalable_allocator.h>
 #include <tbb/task_group.h>
 
 #include <algorithm>
-#ifdef __GLIBC__
-#include <malloc.h>
-#endif
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -573,11 +569,8 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
   {
     tri.reset();
     // The triangulation's blocks came from tbbmalloc and the heap; the nodes below
-    // are one large mapping that cannot reuse them, so hand the freed pages back.
-    scalable_allocation_command(TBBMALLOC_CLEAN_ALL_BUFFERS, nullptr);
-#ifdef __GLIBC__
-    malloc_trim(0);
-#endif
+    // are one large mapping that cannot reuse them.
+    ReleaseFreedMemory();
   }
 
   // Nodes are independent constructions: fill them in parallel.

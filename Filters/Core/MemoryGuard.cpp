@@ -3,6 +3,10 @@
 #include "Progress.h"
 
 #include <sys/resource.h>
+#include <tbb/scalable_allocator.h>
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 
 #include <algorithm>
 #include <cmath>
@@ -78,6 +82,14 @@ void RequireMemory(double bytes, const std::string& what, const std::string& adv
     throw InputError(what + " needs about " + Gigabytes(bytes) + " of memory, " +
       Gigabytes(available) + " are available; " + advice);
   }
+}
+
+void ReleaseFreedMemory()
+{
+  scalable_allocation_command(TBBMALLOC_CLEAN_ALL_BUFFERS, nullptr);
+#ifdef __GLIBC__
+  malloc_trim(0);
+#endif
 }
 
 } // namespace flowrecon

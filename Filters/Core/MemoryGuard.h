@@ -21,6 +21,12 @@ double AvailableMemory();
 /// when `bytes` exceeds AvailableMemory().
 void RequireMemory(double bytes, const std::string& what, const std::string& advice);
 
+/// Hands the pages of freed blocks back to the system (tbbmalloc's buffers and
+/// the C heap): after a phase frees gigabytes, the process's resident size would
+/// otherwise keep them, which a long-lived process (ParaView) pays for in every
+/// later stage, and the next large mapping cannot reuse.
+void ReleaseFreedMemory();
+
 } // namespace flowrecon
 
 #endif

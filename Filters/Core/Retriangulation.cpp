@@ -64,6 +64,19 @@ Retriangulation::Retriangulation(const std::vector<Point3>& points, const BuildO
   progress(0.35, "critical points");
 }
 
+std::unique_ptr<Retriangulation> Retriangulation::OfStoredComplex(
+  const FlowComplex& fc, const Progress& progress, const std::string& advice)
+{
+  if (fc.NumberOfInputPoints < 0 || fc.NumberOfInputPoints > static_cast<Id>(fc.Points.size()))
+  {
+    throw InputError(Mismatch());
+  }
+  const std::vector<Point3> samples(fc.Points.begin(), fc.Points.begin() + fc.NumberOfInputPoints);
+  BuildOptions options;
+  options.Seed = fc.Report.Seed;
+  return std::make_unique<Retriangulation>(samples, options, fc, progress, advice);
+}
+
 Retriangulation::Retriangulation(PreparedInput in, const BuildOptions& options,
   std::unique_ptr<const std::vector<Point3>> coords, std::unique_ptr<const Triangulation> tri,
   CriticalSimplices cs)

@@ -27,6 +27,12 @@ public:
   /// Reports progress from 0 to 0.35 of `progress` (the builder's shares).
   Retriangulation(const std::vector<Point3>& points, const BuildOptions& options,
     const FlowComplex& fc, const Progress& progress, const std::string& advice);
+  /// The triangulation of a stored complex's samples (the first
+  /// fc.NumberOfInputPoints of fc.Points) with its stored seed: what a later
+  /// stage recomputes instead of carrying geometry (DESIGN.md, "Cost follows the
+  /// output"). Throws as the constructor above.
+  static std::unique_ptr<Retriangulation> OfStoredComplex(
+    const FlowComplex& fc, const Progress& progress, const std::string& advice);
   /// The builder's own triangulation of the final attempt (`coords`, `tri` and
   /// `cs`, with the walk tables), kept rather than computed again.
   Retriangulation(PreparedInput in, const BuildOptions& options,

@@ -23,6 +23,7 @@
 #include "vtkMultiBlockDataSet.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
+#include "vtkPointSet.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
@@ -357,6 +358,74 @@ void CheckBetti(const std::string& label, vtkUnstructuredGrid* g, std::array<lon
   }
 }
 
+/// Lines (points of both ends) and cell arrays of a polydata, cell by cell.
+std::vector<Row> LineRows(vtkPolyData* pd)
+{
+  std::vector<Row> rows;
+  for (vtkIdType c = 0; c < pd->GetNumberOfCells(); ++c)
+  {
+    Row row;
+    vtkNew<vtkIdList> ids;
+    pd->GetCellPoints(c, ids);
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+    {
+      double x[3];
+      pd->GetPoint(ids->GetId(k), x);
+      row.insert(row.end(), x, x + 3);
+    }
+    for (int a = 0; a < pd->GetCellData()->GetNumberOfArrays(); ++a)
+    {
+      row.push_back(pd->GetCellData()->GetArray(a)->GetComponent(c, 0));
+    }
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+/// The simplification changes the arcs only: every other block of its output
+/// shares its input's points and arrays (no copy of the drawn geometry), the
+/// input is left as it was, and at t_p 0 the HasseDiagram block is rebuilt with
+/// the input's arcs, stubs toward infinity included.
+void CheckPassThrough(vtkMultiBlockDataSet* complex, vtkMultiBlockDataSet* simplified, double tp)
+{
+  CHECK(simplified->GetNumberOfBlocks() == complex->GetNumberOfBlocks() + 1);
+  for (unsigned int b = 0; b < complex->GetNumberOfBlocks(); ++b)
+  {
+    const std::string name = complex->GetMetaData(b)->Get(vtkCompositeDataSet::NAME());
+    auto* in = vtkPointSet::SafeDownCast(complex->GetBlock(b));
+    auto* out = vtkPointSet::SafeDownCast(Block(simplified, name));
+    CHECK(in && out && in != out);
+    if (!in || !out || name == "HasseDiagram")
+    {
+      continue;
+    }
+    CHECK(in->GetPoints() == out->GetPoints());
+    for (vtkFieldData* fd : { static_cast<vtkFieldData*>(in->GetPointData()),
+           static_cast<vtkFieldData*>(in->GetCellData()) })
+    {
+      vtkFieldData* other = fd == in->GetPointData() ? static_cast<vtkFieldData*>(out->GetPointData())
+                                                      : out->GetCellData();
+      for (int a = 0; a < fd->GetNumberOfArrays(); ++a)
+      {
+        CHECK(other->GetAbstractArray(fd->GetArrayName(a)) == fd->GetAbstractArray(a));
+      }
+    }
+  }
+  auto* cp = vtkPolyData::SafeDownCast(Block(complex, "CriticalPoints"));
+  CHECK(cp && !cp->GetPointData()->GetArray("Cancelled"));
+  auto* hdIn = vtkPolyData::SafeDownCast(Block(complex, "HasseDiagram"));
+  auto* hdOut = vtkPolyData::SafeDownCast(Block(simplified, "HasseDiagram"));
+  CHECK(hdIn && hdOut && hdIn != hdOut);
+  if (hdIn && hdOut && tp == 0.0)
+  {
+    // The same arcs; the simplification lists them in its own order.
+    std::vector<Row> before = LineRows(hdIn), after = LineRows(hdOut);
+    std::sort(before.begin(), before.end());
+    std::sort(after.begin(), after.end());
+    CHECK(before == after);
+  }
+}
+
 void TestShape(const std::string& name, const Cloud& cloud, std::array<long, 4> betti,
   const std::string& dir)
 {
@@ -367,6 +436,7 @@ void TestShape(const std::string& name, const Cloud& cloud, std::array<long, 4> 
   {
     const std::string label = name + ", t_p " + std::to_string(tp);
     vtkSmartPointer<vtkMultiBlockDataSet> simplified = Simplified(complex, tp);
+    CheckPassThrough(complex, simplified, tp);
     CHECK(Block(simplified, "PersistencePairs") != nullptr);
     auto* cp = vtkPolyData::SafeDownCast(Block(simplified, "CriticalPoints"));
     CHECK(cp && cp->GetPointData()->GetArray("Cancelled"));

@@ -11,10 +11,14 @@ complex (which walks every deferred patch) equals the eager one. Wrong settings
 give errors naming the GUI's properties, and a stored simplification whose pairs
 claim a ratio at T is refused.
 
-Run: pvpython test_deferred_pipeline.py PLUGIN WORKDIR   (no X server needed)
+The CLI's `flowrecon diagram` of the deferred complex, saved as a .vtm, must give
+the pairs of the cloud itself.
+
+Run: pvpython test_deferred_pipeline.py PLUGIN WORKDIR [FLOWRECON]   (no X server needed)
 """
 
 import os
+import subprocess
 import sys
 
 import numpy as np
@@ -30,6 +34,7 @@ from vtkmodules.vtkCommonCore import vtkCommand  # noqa: E402
 from checks import check, failures, finish  # noqa: E402,F401
 
 PLUGIN, WORK = sys.argv[1:3]
+CLI = sys.argv[3] if len(sys.argv) > 3 else None  # the flowrecon program
 simple.LoadPlugin(PLUGIN, ns=globals())
 
 
@@ -132,6 +137,21 @@ def compare_cloud(name, points, ratio, least):
     for port in (0, 1):
         states = [dataset_state(servermanager.Fetch(d, idx=port)) for d in diagrams]
         same("%s, persistence diagram output %d" % (name, port), *states)
+    if CLI:
+        # `flowrecon diagram` of the deferred complex saved from ParaView walks
+        # every patch too: its pairs are those of the cloud itself.
+        vtm = os.path.join(WORK, name.replace(" ", "_") + "_deferred.vtm")
+        simple.SaveData(vtm, proxy=lazy[0])
+        rows = []
+        for source in (vtm, xyz):
+            csv = source + ".diagram.csv"
+            run = subprocess.run([CLI, "diagram", source, "-o", csv, "--quiet"],
+                                 capture_output=True, text=True)
+            check(run.returncode == 0, "flowrecon diagram %s: %s" % (source, run.stderr))
+            rows.append(sorted(open(csv).read().splitlines()[1:]) if run.returncode == 0 else [])
+        check(rows[0] == rows[1] and len(rows[0]) > 0,
+              "%s: flowrecon diagram of the deferred .vtm differs from the cloud's "
+              "(%d against %d pairs)" % (name, len(rows[0]), len(rows[1])))
     return reader, lazy
 
 
