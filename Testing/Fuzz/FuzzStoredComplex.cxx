@@ -3,27 +3,36 @@
 //
 // A .vtm names several files, which a fuzzer cannot mutate together, so one
 // file of a valid saved complex is substituted at a time. At start-up the
-// target computes the flow complex of 7 fixed points and writes four templates
-// into a temporary directory:
+// target computes the flow complexes of 7 and of 20 fixed points and writes six
+// templates into a temporary directory:
 //   0  ASCII, unsimplified, with stable and unstable manifolds
 //   1  ASCII, simplified (t_p = 1.5, so it has cancelled pairs, Owner arrays and
 //      a PersistencePairs block)
 //   2  ASCII, unsimplified, without stable manifolds (the reconstruction draws
 //      them from the stored samples, which must match the stored nodes)
 //   3  appended raw binary, LZ4 compressed: what `flowrecon complex` writes
-// Input layout: byte 0 picks the template (byte & 3) and the file of it
-// ((byte >> 2) modulo its number of files; file 0 is the .vtm, then the pieces
-// in name order); the remaining bytes replace that file. Then, as the CLI does:
+//   4  ASCII, with deferred patches (Defer Patches Above 2.5, ParaView's way)
+//      on a ring of 20 points, whose saddles across the ring are far above its
+//      Gabriel edges: the Deferred and DeferralRatio arrays
+//   5  template 4 simplified at t_p 1.5: the pairs' odd lowers and direct owners
+//      (PairLowerOffsets, PairLowers, PairOwnerOffsets, PairOwners)
+// Input layout: byte 0 picks the template and the file of it (file 0 is the
+// .vtm, then the pieces in name order): below 128, template byte & 3 and file
+// (byte >> 2) modulo its number of files; from 128, template 4 + (byte & 1) and
+// file ((byte & 127) >> 1) modulo its number of files. The remaining bytes
+// replace that file. Then, as the CLI does:
 // vtkPointCloudReader checks the .vtm (it refuses corrupt sizes VTK's readers
 // would abort on); vtkXMLMultiBlockDataReader reads it; FromMultiBlock and
 // SimplificationFromMultiBlock convert it (these are fuzzed directly); the
-// persistence diagram of an unsimplified complex is computed (`diagram`); an
+// persistence diagram of an unsimplified complex is computed, its deferred
+// patches walked first (`diagram`); an
 // unsimplified complex is simplified at t_p = 1.1 by vtkFlowComplexSimplification
 // and vtkFlowReconstruction runs at t_r = 2 (`reconstruct`). Any outcome but a
 // crash, a sanitizer report, a hang or a huge allocation is fine.
 //
 // FLOWRECON_FUZZ_WRITE_SEEDS=DIR makes the target write one seed per file of
 // every template into DIR and exit (that is how corpus/stored_complex was made).
+#include "DeferredPatches.h"
 #include "FlowComplexConversion.h"
 #include "Persistence.h"
 #include "Simplification.h"
@@ -42,6 +51,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPointData.h"
+#include "vtkDataArray.h"
 #include "vtkSmartPointer.h"
 #include "vtkXMLMultiBlockDataReader.h"
 #include "vtkXMLMultiBlockDataWriter.h"
@@ -49,6 +59,7 @@
 #include <tbb/global_control.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -160,6 +171,39 @@ void MakeTemplates()
   Templates.push_back(WriteTemplate(simplification->GetOutputDataObject(0), "simplified", true));
   Templates.push_back(WriteTemplate(complexOf(false), "nostable", true));
   Templates.push_back(WriteTemplate(plain, "binary", false));
+
+  // A ring of 20 points (radius about 1, unevenly spaced and a little off its
+  // plane, so that it is in general position): its saddles across the ring are
+  // about six times its longest Gabriel edge's value.
+  vtkNew<vtkPoints> ringPoints;
+  ringPoints->SetDataTypeToDouble();
+  for (int k = 0; k < 20; ++k)
+  {
+    const double a = 2 * 3.14159265358979 * (k + 0.05 * std::sin(1.7 * k)) / 20;
+    const double r = 1 + 0.01 * std::cos(3.1 * k);
+    ringPoints->InsertNextPoint(r * std::cos(a), r * std::sin(a), 0.03 * std::sin(2.3 * k + 0.4));
+  }
+  vtkNew<vtkPolyData> ring;
+  ring->SetPoints(ringPoints);
+  vtkNew<vtkFlowComplex> deferred;
+  deferred->SetInputData(ring);
+  deferred->SetDeferPatchesAbove(2.5);
+  deferred->Update();
+  vtkMultiBlockDataSet* withDeferred = deferred->GetOutput();
+  auto* nodes = vtkPolyData::SafeDownCast(flowrecon::NamedBlock(withDeferred, "CriticalPoints"));
+  vtkDataArray* flags = nodes ? nodes->GetPointData()->GetArray("Deferred") : nullptr;
+  if (!flags || flags->GetRange()[1] != 1)
+  {
+    std::fprintf(stderr, "FuzzStoredComplex: the ring template has no deferred patch\n");
+    std::abort();
+  }
+  vtkNew<vtkFlowComplexSimplification> deferredSimplified;
+  deferredSimplified->SetInputData(withDeferred);
+  deferredSimplified->SetPersistenceThreshold(1.5);
+  deferredSimplified->Update();
+  Templates.push_back(WriteTemplate(withDeferred, "deferred", true));
+  Templates.push_back(
+    WriteTemplate(deferredSimplified->GetOutputDataObject(0), "deferred_simplified", true));
 }
 
 void RemoveRoot()
@@ -201,6 +245,7 @@ void ReadAsTheCliDoes(const std::string& vtm)
       // flowrecon diagram
       try
       {
+        flowrecon::WalkEveryDeferredPatch(fc, flowrecon::Progress(), "");
         flowrecon::ComputePersistence(fc.Nodes, fc.Arcs);
       }
       catch (const std::exception&)
@@ -254,7 +299,7 @@ extern "C" int LLVMFuzzerInitialize(int*, char***)
       for (std::size_t f = 0; f < Templates[t].Files.size(); ++f)
       {
         const std::string name = fs::path(Templates[t].Files[f]).filename().string();
-        std::string seed(1, static_cast<char>(t | (f << 2)));
+        std::string seed(1, static_cast<char>(t < 4 ? t | (f << 2) : 128 | (t - 4) | (f << 1)));
         seed += Templates[t].Content[f];
         const std::string path = (fs::path(seeds) / (std::to_string(t) + "-" +
           (f == 0 ? std::string("vtm") : name))).string();
@@ -272,8 +317,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   {
     return 0;
   }
-  Template& t = Templates[data[0] & 3];
-  const std::size_t file = (data[0] >> 2) % t.Files.size();
+  const bool deferred = data[0] >= 128;
+  Template& t = Templates[deferred ? 4 + (data[0] & 1) : data[0] & 3];
+  const std::size_t file = (deferred ? (data[0] & 127) >> 1 : data[0] >> 2) % t.Files.size();
   WriteAll(t.Files[file], reinterpret_cast<const char*>(data + 1), size - 1);
   ReadAsTheCliDoes(t.Vtm);
   WriteAll(t.Files[file], t.Content[file].data(), t.Content[file].size());
