@@ -23,7 +23,9 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <cstring>
 #include <limits>
+#include <stdexcept>
 #include <utility>
 
 namespace flowrecon
@@ -204,9 +206,114 @@ CellsByNode::CellsByNode(const std::vector<Id>& cellNode, std::size_t nodes)
   }
 }
 
-void ReconstructionToVTK(const FlowComplex& fc, const std::vector<Id>& carriers,
+namespace
+{
+
+/// A view of the first `tuples` tuples of `a`: the same reference-counted buffer
+/// (vtkAOSDataArrayTemplate::ShallowCopy), whose smaller size does not
+/// reallocate it. No tuples: a new empty array (a zero size would reallocate
+/// the shared buffer).
+vtkSmartPointer<vtkDataArray> Prefix(vtkDataArray* a, vtkIdType tuples)
+{
+  auto p = vtk::TakeSmartPointer(a->NewInstance());
+  if (tuples > 0)
+  {
+    p->ShallowCopy(a);
+    p->SetNumberOfTuples(tuples);
+  }
+  else
+  {
+    p->SetName(a->GetName());
+    p->SetNumberOfComponents(a->GetNumberOfComponents());
+  }
+  return p;
+}
+
+} // namespace
+
+void MarkProfile(vtkTable* profile, double t)
+{
+  // The mark of t_r in the profile's chart: a horizontal line, so t on every row.
+  auto mark = Sized<vtkDoubleArray>("t_r", profile->GetNumberOfRows());
+  mark->FillValue(t < Unbounded ? t : std::numeric_limits<double>::quiet_NaN());
+  profile->RemoveColumnByName("t_r");
+  profile->AddColumn(mark);
+}
+
+void GridBelow(
+  vtkUnstructuredGrid* full, double t, const std::vector<int>& multiplicity, vtkUnstructuredGrid* out)
+{
+  auto* threshold =
+    vtkDoubleArray::SafeDownCast(full->GetCellData()->GetArray(flowrecon::names::Threshold));
+  auto* nodeId = vtkIntArray::SafeDownCast(full->GetCellData()->GetArray(flowrecon::names::NodeId));
+  auto* index = vtkIntArray::SafeDownCast(full->GetCellData()->GetArray(flowrecon::names::Index));
+  vtkCellArray* cells = full->GetCells();
+  if (!threshold || !nodeId || !index || !cells || !full->GetPoints())
+  {
+    throw std::logic_error("GridBelow: not a grid of ReconstructionToVTK");
+  }
+  const vtkIdType n = full->GetNumberOfCells();
+  const double* th = threshold->GetPointer(0);
+  const vtkIdType kept = std::lower_bound(th, th + n, t) - th; // first Threshold >= t
+  vtkDataArray* offsets = cells->GetOffsetsArray();
+  vtkDataArray* connectivity = cells->GetConnectivityArray();
+  const vtkIdType corners = static_cast<vtkIdType>(offsets->GetTuple1(kept));
+  vtkIdType points = 0;
+  if (auto* narrow = vtkTypeInt32Array::SafeDownCast(connectivity))
+  {
+    const std::int32_t* ids = narrow->GetPointer(0);
+    points = corners > 0 ? *std::max_element(ids, ids + corners) + vtkIdType(1) : 0;
+  }
+  else
+  {
+    for (vtkIdType k = 0; k < corners; ++k)
+    {
+      points = std::max(points, static_cast<vtkIdType>(connectivity->GetTuple1(k)) + 1);
+    }
+  }
+  vtkNew<vtkPoints> pts;
+  pts->SetData(Prefix(full->GetPoints()->GetData(), points));
+  vtkNew<vtkCellArray> cellArray;
+  cellArray->SetData(Prefix(offsets, kept + 1), Prefix(connectivity, corners));
+  const vtkSmartPointer<vtkDataArray> types = Prefix(full->GetCellTypesArray(), kept);
+  out->Initialize();
+  out->SetPoints(pts);
+  out->SetCells(vtkUnsignedCharArray::SafeDownCast(types), cellArray);
+  vtkPointData* pd = full->GetPointData();
+  for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
+  {
+    out->GetPointData()->AddArray(Prefix(pd->GetArray(a), points));
+  }
+  vtkCellData* cd = full->GetCellData();
+  for (int a = 0; a < cd->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* array = cd->GetArray(a);
+    if (std::strcmp(array->GetName(), flowrecon::names::Multiplicity) != 0)
+    {
+      out->GetCellData()->AddArray(Prefix(array, kept));
+      continue;
+    }
+    auto mult = Sized<vtkIntArray>(flowrecon::names::Multiplicity, kept);
+    const int* nodes = nodeId->GetPointer(0);
+    const int* indices = index->GetPointer(0);
+    for (vtkIdType c = 0; c < kept; ++c)
+    {
+      mult->SetValue(c, indices[c] == 1 ? multiplicity[nodes[c]] : 0);
+    }
+    out->GetCellData()->AddArray(mult);
+  }
+  if (vtkDataArray* scalars = cd->GetScalars())
+  {
+    out->GetCellData()->SetActiveScalars(scalars->GetName());
+  }
+}
+
+namespace
+{
+
+void ReconstructionGrid(const FlowComplex& fc, const std::vector<Id>& carriers,
   const ReconstructionResult& run, double t, const CellsByNode& triangles,
-  const CellsByNode& tetrahedra, vtkUnstructuredGrid* grid, vtkTable* profile, vtkPolyData* arrows)
+  const CellsByNode& tetrahedra, vtkUnstructuredGrid* grid)
 {
   const auto& steps = run.Nodes;
   const std::vector<Id> selected = SelectedNodes(fc, carriers, run, t);
@@ -333,8 +440,12 @@ void ReconstructionToVTK(const FlowComplex& fc, const std::vector<Id>& carriers,
     grid->GetCellData()->AddArray(a);
   }
   grid->GetCellData()->SetActiveScalars(flowrecon::names::CriticalValue);
+}
 
-  // Port 1: the profile of the whole run.
+/// Port 1: the profile of the whole run.
+void ProfileTable(const FlowComplex& fc, const ReconstructionResult& run, double t, vtkTable* profile)
+{
+  const auto& steps = run.Nodes;
   InsertionArrays rowInsertion;
   auto pIndex = NamedArray<vtkIntArray>(flowrecon::names::Index);
   auto pThreshold = NamedArray<vtkDoubleArray>(flowrecon::names::Threshold);
@@ -346,9 +457,6 @@ void ReconstructionToVTK(const FlowComplex& fc, const std::vector<Id>& carriers,
     pIndex->InsertNextValue(fc.Nodes[node].Index);
     pThreshold->InsertNextValue(in.Threshold);
   }
-  // The mark of t_r in the profile's chart: a horizontal line, so t on every row.
-  auto mark = Sized<vtkDoubleArray>("t_r", static_cast<vtkIdType>(run.Order.size()));
-  mark->FillValue(t < Unbounded ? t : std::numeric_limits<double>::quiet_NaN());
   profile->Initialize();
   for (vtkDataArray* a : rowInsertion.All())
   {
@@ -356,9 +464,13 @@ void ReconstructionToVTK(const FlowComplex& fc, const std::vector<Id>& carriers,
   }
   profile->AddColumn(pIndex);
   profile->AddColumn(pThreshold);
-  profile->AddColumn(mark);
+  MarkProfile(profile, t);
+}
 
-  // Port 2: sponsor -> node arrows of the current reconstruction.
+/// Port 2: sponsor -> node arrows of the current reconstruction.
+void SponsorArrows(const FlowComplex& fc, const ReconstructionResult& run, double t, vtkPolyData* arrows)
+{
+  const auto& steps = run.Nodes;
   vtkNew<vtkPoints> arrowPoints;
   arrowPoints->SetDataTypeToDouble();
   vtkNew<vtkCellArray> lines;
@@ -396,6 +508,26 @@ void ReconstructionToVTK(const FlowComplex& fc, const std::vector<Id>& carriers,
   arrows->GetCellData()->SetActiveScalars(flowrecon::names::Priority);
   arrows->GetPointData()->AddArray(pointPriority);
   arrows->GetPointData()->SetVectors(direction);
+}
+
+} // namespace
+
+void ReconstructionToVTK(const FlowComplex& fc, const std::vector<Id>& carriers,
+  const ReconstructionResult& run, double t, const CellsByNode& triangles,
+  const CellsByNode& tetrahedra, vtkUnstructuredGrid* grid, vtkTable* profile, vtkPolyData* arrows)
+{
+  if (grid)
+  {
+    ReconstructionGrid(fc, carriers, run, t, triangles, tetrahedra, grid);
+  }
+  if (profile)
+  {
+    ProfileTable(fc, run, t, profile);
+  }
+  if (arrows)
+  {
+    SponsorArrows(fc, run, t, arrows);
+  }
 }
 
 FilteredCells ReconstructionCells(const FlowComplex& fc, const std::vector<Id>& carriers,

@@ -33,9 +33,24 @@ struct CellsByNode
 /// (a horizontal mark in its chart; NaN, no mark, for t >= 1e308: every step);
 /// port 2 (`arrows`) the sponsor arrows at `t`. `fc` holds the drawn
 /// geometry of those nodes, grouped by `triangles` and `tetrahedra`.
+/// A null `grid`, `profile` or `arrows` is skipped.
 void ReconstructionToVTK(const FlowComplex& fc, const std::vector<Id>& carriers,
   const ReconstructionResult& run, double t, const CellsByNode& triangles,
   const CellsByNode& tetrahedra, vtkUnstructuredGrid* grid, vtkTable* profile, vtkPolyData* arrows);
+
+/// Sets the profile's column `t_r` (the mark of `t` in its chart, the last
+/// column): with it, a profile made at one t_r serves every other.
+void MarkProfile(vtkTable* profile, double t);
+
+/// ReconstructionToVTK's grid at `t` cut out of its grid `full` at some T >= t,
+/// without drawing anything: cells come in insertion order and Threshold is a
+/// running maximum, so the cells with Threshold < t are a prefix of full's, and
+/// points are numbered by first use, so theirs are a prefix too. `out` shares
+/// full's arrays (reference-counted buffers cut to those lengths, no copy); only
+/// Multiplicity, which grows with t, is new (`multiplicity`: EdgeMultiplicities
+/// at t, per node). What makes a change of t_r below T_max instant in ParaView.
+void GridBelow(
+  vtkUnstructuredGrid* full, double t, const std::vector<int>& multiplicity, vtkUnstructuredGrid* out);
 
 /// The cells ReconstructionToVTK writes at `t` (fc's point ids), each with the
 /// Threshold of its carrier: the filtration of the nested family below t.

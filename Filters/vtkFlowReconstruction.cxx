@@ -59,6 +59,11 @@ struct vtkFlowReconstruction::Cache
   /// With deferred patches: the triangulation their walks used, kept for the
   /// first drawing (then freed).
   std::unique_ptr<flowrecon::Retriangulation> Re;
+  /// The output grid at GeometryThreshold, of which every t_r's is a prefix
+  /// (GridBelow), and the profile, which only its mark of t_r changes: outputs
+  /// share their arrays.
+  vtkSmartPointer<vtkUnstructuredGrid> Full;
+  vtkSmartPointer<vtkTable> Profile;
 };
 
 
@@ -239,7 +244,10 @@ int vtkFlowReconstruction::RequestData(
   this->UpdateProgress(0.9);
 
   flowrecon::ReconstructionToVTK(fc, c.Carrier, c.Run, t, c.TriangleGroups, c.TetraGroups,
-    grid, profile, arrows);
+    nullptr, nullptr, arrows);
+  profile->ShallowCopy(c.Profile);
+  flowrecon::MarkProfile(profile, t);
+  flowrecon::GridBelow(c.Full, t, flowrecon::EdgeMultiplicities(fc.Nodes, fc.Arcs, c.Run, t), grid);
   flowrecon::ReleaseFreedMemory(); // the previous output's arrays, replaced just now
   if (!this->ComputeTopology)
   {
@@ -323,6 +331,18 @@ bool vtkFlowReconstruction::DrawGeometry(double tmax)
   flowrecon::ReleaseFreedMemory();
   cache.TriangleGroups = flowrecon::CellsByNode(fc.TriangleNode, fc.Nodes.size());
   cache.TetraGroups = flowrecon::CellsByNode(fc.TetrahedronNode, fc.Nodes.size());
+  cache.Full = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  try
+  {
+    cache.Profile = vtkSmartPointer<vtkTable>::New();
+    flowrecon::ReconstructionToVTK(fc, cache.Carrier, cache.Run, tmax, cache.TriangleGroups,
+      cache.TetraGroups, cache.Full, cache.Profile, nullptr);
+  }
+  catch (const flowrecon::InputError& e)
+  {
+    vtkErrorMacro(<< e.what());
+    return false;
+  }
   // The Betti numbers of every t_r <= T_max at once: one barcode of the family.
   cache.Bars.clear();
   cache.TopologyError.clear();

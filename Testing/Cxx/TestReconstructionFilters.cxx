@@ -505,10 +505,24 @@ void TestQueueCache(const Cloud& cloud)
   CHECK(profile && profile->GetColumnByName("Threshold") && profile->GetNumberOfRows() > 0);
   auto* arrows = vtkPolyData::SafeDownCast(r->GetOutputDataObject(2));
   CHECK(arrows && arrows->GetNumberOfCells() > 0 && arrows->GetCellData()->GetArray("Extension"));
+  // A new t_r cuts its grid out of the same arrays (GridBelow): nothing is
+  // drawn or copied, so the outputs at 2 and 1.2 share their buffers.
+  vtkNew<vtkUnstructuredGrid> at2;
+  at2->ShallowCopy(r->GetOutput());
   r->SetReconstructionThreshold(1.2);
   r->Update();
   CHECK(r->GetNumberOfQueueRuns() == 1);
   CHECK(r->GetOutput()->GetNumberOfCells() < cells2);
+  CHECK(r->GetOutput()->GetNumberOfCells() > 0);
+  for (const char* name : { "Threshold", "NodeId", "Step" })
+  {
+    vtkDataArray* a = at2->GetCellData()->GetArray(name);
+    vtkDataArray* b = r->GetOutput()->GetCellData()->GetArray(name);
+    CHECK(a && b && a != b && a->GetVoidPointer(0) == b->GetVoidPointer(0));
+  }
+  CHECK(at2->GetPoints()->GetData()->GetVoidPointer(0) ==
+    r->GetOutput()->GetPoints()->GetData()->GetVoidPointer(0));
+  CHECK(at2->GetNumberOfCells() == cells2); // the earlier output is left as it was
   r->SetReconstructionThreshold(2.0);
   r->Update();
   CHECK(r->GetNumberOfQueueRuns() == 1);

@@ -12,7 +12,7 @@ give errors naming the GUI's properties, and a stored simplification whose pairs
 claim a ratio at T is refused.
 
 The CLI's `flowrecon diagram` of the deferred complex, saved as a .vtm, must give
-the pairs of the cloud itself.
+the pairs of the cloud itself, and `flowrecon reconstruct` the filter's grid.
 
 Run: pvpython test_deferred_pipeline.py PLUGIN WORKDIR [FLOWRECON]   (no X server needed)
 """
@@ -152,6 +152,21 @@ def compare_cloud(name, points, ratio, least):
         check(rows[0] == rows[1] and len(rows[0]) > 0,
               "%s: flowrecon diagram of the deferred .vtm differs from the cloud's "
               "(%d against %d pairs)" % (name, len(rows[0]), len(rows[1])))
+        # The filter cuts each t_r's grid out of its grid at T_max (GridBelow);
+        # `flowrecon reconstruct` draws the grid at t_r itself: the same cells,
+        # points and arrays (Multiplicity at t_r included).
+        vtu = os.path.join(WORK, name.replace(" ", "_") + "_tr1.5.vtu")
+        run = subprocess.run([CLI, "reconstruct", xyz, "-o", vtu, "--tr", "1.5", "--quiet"],
+                             capture_output=True, text=True)
+        check(run.returncode == 0, "flowrecon reconstruct %s: %s" % (xyz, run.stderr))
+        lazy[2].ReconstructionThreshold = 1.5
+        lazy[2].EveryStep = 0
+        lazy[2].UpdatePipeline()
+        reader = simple.XMLUnstructuredGridReader(FileName=[vtu])
+        same("%s at t_r 1.5: the filter against flowrecon reconstruct" % name,
+             dataset_state(servermanager.Fetch(reader)),
+             dataset_state(servermanager.Fetch(lazy[2])))
+        simple.Delete(reader)
     return reader, lazy
 
 
