@@ -9,14 +9,23 @@ vtk_module_add_module(FlowRecon::Filters
     ${_flowrecon_filters_dir}/vtkPersistenceDiagram
     ${_flowrecon_filters_dir}/vtkPointCloudReader
   PRIVATE_HEADERS
+    ${_flowrecon_filters_dir}/ContractArrays.h
     ${_flowrecon_filters_dir}/CoreCall.h
     ${_flowrecon_filters_dir}/FlowComplexConversion.h
+    ${_flowrecon_filters_dir}/FlowComplexFromVTK.h
+    ${_flowrecon_filters_dir}/FlowComplexToVTK.h
     ${_flowrecon_filters_dir}/FlowReconNames.h
     ${_flowrecon_filters_dir}/PersistenceDiagramConversion.h
     ${_flowrecon_filters_dir}/ReconstructionConversion.h
+    ${_flowrecon_filters_dir}/SamplesFromVTK.h
+    ${_flowrecon_filters_dir}/SimplificationConversion.h
   SOURCES
-    ${_flowrecon_filters_dir}/FlowComplexConversion.cxx
+    ${_flowrecon_filters_dir}/ContractArrays.cxx
+    ${_flowrecon_filters_dir}/FlowComplexFromVTK.cxx
+    ${_flowrecon_filters_dir}/FlowComplexToVTK.cxx
     ${_flowrecon_filters_dir}/PersistenceDiagramConversion.cxx
-    ${_flowrecon_filters_dir}/ReconstructionConversion.cxx)
+    ${_flowrecon_filters_dir}/ReconstructionConversion.cxx
+    ${_flowrecon_filters_dir}/SamplesFromVTK.cxx
+    ${_flowrecon_filters_dir}/SimplificationConversion.cxx)
 vtk_module_include(FlowRecon::Filters PUBLIC "$<BUILD_INTERFACE:${_flowrecon_filters_dir}>")
 vtk_module_link(FlowRecon::Filters PRIVATE "$<BUILD_INTERFACE:FlowReconCore>")

@@ -136,7 +136,18 @@ void WalkEveryDeferredPatch(FlowComplex& fc, const Progress& progress, const std
   const std::unique_ptr<Retriangulation> re =
     Retriangulation::OfStoredComplex(fc, progress.Range(0, 0.5), advice);
   DeferredPatches walker(fc, nullptr, *re);
-  const std::vector<Arc> more = walker.Walk(fc.DeferredPatches, progress.Range(0.5, 1));
+  std::vector<Arc> more;
+  try
+  {
+    more = walker.Walk(fc.DeferredPatches, progress.Range(0.5, 1));
+  }
+  catch (const Degenerate&)
+  {
+    // The build perturbs on a tie, but it never walked this patch: the stored
+    // complex cannot be completed as it is.
+    throw InputError("a deferred patch met a tie the flow complex did not see: build the "
+                     "flow complex again with Defer Patches Above set to 0, or from the cloud");
+  }
   fc.Arcs.insert(fc.Arcs.end(), more.begin(), more.end());
   fc.DeferredPatches.clear();
   fc.DeferralRatio = HUGE_VAL;

@@ -49,7 +49,18 @@ Retriangulation::Retriangulation(const std::vector<Point3>& points, const BuildO
   progress(0.0, "Delaunay triangulation");
   this->Tri_ = std::make_unique<const Triangulation>(*this->Coords, progress.Range(0, 0.2));
   progress(0.2, "critical points");
-  this->Cs = FindCriticalSimplices(*this->Tri_, progress);
+  try
+  {
+    this->Cs = FindCriticalSimplices(*this->Tri_, progress);
+  }
+  catch (const Degenerate&)
+  {
+    throw InputError(Mismatch()); // the stored perturbation did not remove every tie
+  }
+  if (this->Cs.Degenerate())
+  {
+    throw InputError(Mismatch());
+  }
   const Triangulation& tri = *this->Tri_;
   this->SetBases();
   const Id m = tri.NumberOfVertices();

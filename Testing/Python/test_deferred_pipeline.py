@@ -206,6 +206,42 @@ def wrong_settings(lazy):
           "a stored pair at the deferral ratio: errors %s" % errors.messages)
 
 
+def edited_perturbation(lazy):
+    """A stored deferred complex whose perturbation record was edited (attempt 1:
+    no perturbation, on a cloud that needed one): completing it for the diagram
+    recomputes the triangulation with that record, meets the ties the build
+    perturbed away, and must say the file does not fit its points in one line,
+    from the CLI and from the Persistence Diagram filter."""
+    fc = servermanager.Fetch(lazy[0])
+    attempts = fc.GetBlock(0).GetFieldData().GetArray("PerturbationAttempts")
+    check(attempts is not None and attempts.GetValue(0) > 1,
+          "lattice torus: the build did not perturb (attempts %s)" %
+          (attempts.GetValue(0) if attempts is not None else None))
+    for fd in (fc.GetFieldData(), fc.GetBlock(0).GetFieldData()):
+        fd.GetArray("PerturbationAttempts").SetValue(0, 1)
+    expected = "does not belong to its points"
+    if CLI:
+        from vtkmodules.vtkIOXML import vtkXMLMultiBlockDataWriter
+        vtm = os.path.join(WORK, "lattice_edited.vtm")
+        writer = vtkXMLMultiBlockDataWriter()
+        writer.SetInputData(fc)
+        writer.SetFileName(vtm)
+        check(writer.Write() == 1, "could not write %s" % vtm)
+        run = subprocess.run([CLI, "diagram", vtm, "-o", vtm + ".csv", "--quiet"],
+                             capture_output=True, text=True)
+        lines = run.stderr.strip().splitlines()
+        check(run.returncode == 1 and len(lines) == 1 and expected in lines[0],
+              "flowrecon diagram of an edited perturbation record: exit %d, stderr %r" % (
+                  run.returncode, run.stderr))
+    producer = servermanager.sources.PVTrivialProducer()
+    producer.GetClientSideObject().SetOutput(fc)
+    diagram = PersistenceDiagram(Input=producer)  # noqa: F821
+    errors = Errors(diagram)
+    diagram.UpdatePipeline()
+    check(any(expected in m for m in errors.messages),
+          "Persistence Diagram of an edited perturbation record: errors %s" % errors.messages)
+
+
 def main():
     os.makedirs(WORK, exist_ok=True)
     # Uniform in the angles (denser inside the hole): many patches across the tube.
@@ -223,6 +259,11 @@ def main():
     flange = np.c_[r * np.cos(w), r * np.sin(w), np.zeros(1200)]
     mix = np.r_[ring, flange] + rng.normal(0, 0.003, (3700, 3))
     compare_cloud("noisy torus with a flange", mix, 2.0, 100)
+    # A torus beside a lattice block (cospherical points), so the build perturbs;
+    # deferral must still equal the eager pipeline.
+    block = np.stack(np.meshgrid(*[np.arange(3) * 0.04] * 3), -1).reshape(-1, 3) + (1.37, -.04, -.04)
+    _, lattice_lazy = compare_cloud("torus beside a lattice", np.r_[torus[:1500], block], 2.0, 100)
+    edited_perturbation(lattice_lazy)
     wrong_settings(lazy)
     finish()
 

@@ -1,0 +1,31 @@
+// A stored flow complex (a .vtm file, or a pipeline's multiblock) read back into
+// the core's FlowComplex, with every block checked: bad files give one line.
+#ifndef FlowComplexFromVTK_h
+#define FlowComplexFromVTK_h
+
+#include "FlowComplex.h"
+
+#include <string>
+
+class vtkMultiBlockDataSet;
+
+namespace flowrecon
+{
+
+/// The inverse of ToMultiBlock, enough for a round trip through a .vtm file:
+/// nodes (CriticalPoints in NodeId order: Index, CriticalValue, Simplex, point
+/// coordinates as Location), arcs (HasseDiagram cell data LowerNodeId,
+/// UpperNodeId, Multiplicity), InfinityNode (the node with a negative simplex),
+/// manifold geometry (StableManifolds points, triangles and tetrahedra with
+/// NodeId; UnstableManifolds polylines) and the report arrays. The arcs are the
+/// ones stored, i.e. the simplified ones for a simplified complex. Returns false
+/// and sets `error` (one line) when a block or an array is missing or invalid.
+/// With `diagramOnly`, the manifold geometry and the flow lines are checked but
+/// not read (fc.Points, Triangles, Tetrahedra, FlowLines stay empty): what a
+/// stage that works on the Hasse diagram alone needs, without the geometry's copy.
+bool FromMultiBlock(vtkMultiBlockDataSet* input, FlowComplex& fc, std::string& error,
+  bool diagramOnly = false);
+
+} // namespace flowrecon
+
+#endif
