@@ -1,0 +1,105 @@
+// The phases of one flow-complex build (internal to FlowComplexBuilder.cpp and
+// the Build*.cpp files, one per phase): Run reads as the paper's list, Delaunay
+// -> critical points -> stable manifolds of index 2 -> unstable manifolds ->
+// Hasse diagram -> stable manifolds of index 3. The state the phases hand on is
+// held here, so that each phase is a member function in its own file.
+#ifndef flowrecon_BuildPhases_h
+#define flowrecon_BuildPhases_h
+
+#include "CriticalSimplices.h"
+#include "FlowComplex.h"
+#include "FlowComplexBuilder.h"
+#include "InputPreparation.h"
+#include "Progress.h"
+#include "Triangulation.h"
+
+#include <array>
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace flowrecon
+{
+namespace internal
+{
+
+using Clock = std::chrono::steady_clock;
+inline double Seconds(Clock::time_point since)
+{
+  return std::chrono::duration<double>(Clock::now() - since).count();
+}
+
+/// Circumcentre (within the simplex's affine hull) and squared radius of a
+/// simplex of 2..4 points; double constructions, relative to its first vertex.
+std::array<double, 4> CentreAndSquaredRadius(const KPoint* p, std::size_t n);
+
+/// The one-line refusal of a cloud whose critical values underflow.
+extern const char* const TooClose;
+
+/// Index-2 patches are walked in chunks of this many, in parallel.
+constexpr std::size_t PatchChunk = 8192;
+
+class Builder
+{
+public:
+  Builder(const PreparedInput& in, const std::vector<Point3>& input, const BuildOptions& options,
+    const Progress& progress, FlowComplex& fc)
+    : In(in)
+    , Input(input)
+    , Options(options)
+    , Report(progress)
+    , FC(fc)
+  {
+  }
+
+  /// One attempt on `coords` (the unique points, perhaps perturbed, scaled by
+  /// 2^-ScaleExponent). Throws Degenerate if general position fails; `first`
+  /// records the counts. Constructed values and points are scaled back.
+  void Run(const std::vector<Point3>& coords, bool first);
+
+  int ScaleExponent = 0;
+  /// When set, Run leaves its triangulation and critical simplices here.
+  bool Keep = false;
+  std::unique_ptr<const Triangulation> KeptTriangulation;
+  CriticalSimplices KeptCritical;
+
+private:
+  // The phases, in the order Run calls them.
+  void Triangulate();            ///< BuildCriticalPoints.cpp
+  void FindCriticalPoints();     ///< BuildCriticalPoints.cpp: node ids, 0-1 arcs
+  void DeferFarPatches();        ///< BuildCriticalPoints.cpp
+  void WalkStablePatches();      ///< BuildStablePatches.cpp: index 2, 1-2 arcs
+  void TraceUnstableManifolds(); ///< BuildUnstableManifolds.cpp: ends of 2-3 arcs
+  void AssembleHasseDiagram();   ///< BuildHasseDiagram.cpp: nodes, 2-3 arcs
+  void BuildStableCones();       ///< BuildStableCones.cpp: index 3
+
+  void ScaleBack();
+  Node MakeNode(int index, const Id* simplex, const std::vector<Point3>& coords) const;
+  const std::vector<Point3>& Coords() const { return *this->CoordsOfAttempt; }
+  std::string Cloud() const { return std::to_string(this->Coords().size()) + " points"; }
+
+  const PreparedInput& In;
+  const std::vector<Point3>& Input;
+  const BuildOptions& Options;
+  const Progress& Report;
+  FlowComplex& FC;
+
+  // What one phase hands to the next, for the current attempt.
+  const std::vector<Point3>* CoordsOfAttempt = nullptr;
+  bool First = false;
+  std::unique_ptr<const Triangulation> Tri;
+  CriticalSimplices Cs;
+  Id M = 0, NEdges = 0, NFacets = 0;  ///< vertices, Gabriel edges, index-2 facets
+  Id Base1 = 0, Base2 = 0, Base3 = 0; ///< first node id of each index
+  std::vector<char> Deferred;         ///< per facet: patch not walked
+  std::vector<Id> TriangleBegin;      ///< per facet: first triangle (geometry only)
+  std::vector<std::array<std::int32_t, 2>> Ends; ///< per facet: the maxima reached
+  std::vector<char> PatchFaces;       ///< per facet: which end its normals face
+};
+
+} // namespace internal
+} // namespace flowrecon
+
+#endif

@@ -1,0 +1,159 @@
+// Build phase 4: the unstable manifolds of the index-2 critical points, two flow
+// lines each, followed to the maxima they reach (the ends of the 2-3 arcs).
+#include "BuildPhases.h"
+
+#include "ParallelSlices.h"
+#include "StableManifold.h"
+#include "StableManifoldGeometry.h"
+#include "SuccessorForest.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace flowrecon
+{
+namespace internal
+{
+
+void Builder::TraceUnstableManifolds()
+{
+  FlowComplex& fc = this->FC;
+  this->Ends.assign(this->Cs.Facets.size(), { { 0, 0 } }); // maxima reached
+  // Which of Ends[i] the normals of patch i face (PatchFacesSide, after the
+  // reordering of the sides below): the cones need the side of each patch.
+  this->PatchFaces.assign(this->Options.StableManifolds ? this->Cs.Facets.size() : 0, 0);
+  fc.FlowLines.clear();
+  const double nf = static_cast<double>(this->NFacets) + 1;
+  {
+    std::vector<std::int32_t> maximumOfCell(static_cast<std::size_t>(this->Tri->NumberOfCells()), -1);
+    for (std::size_t i = 0; i < this->Cs.Cells.size(); ++i)
+    {
+      maximumOfCell[this->Cs.Cells[i].Cell] = static_cast<std::int32_t>(this->Base3 + static_cast<Id>(i));
+    }
+    const double stub = 0.25 * this->In.Diagonal;
+    SuccessorForest forest(
+      *this->Tri, maximumOfCell, fc.InfinityNode, stub, this->Options.UnstableManifolds,
+      this->Options.ExactOnly);
+    const bool record = this->Options.UnstableManifolds;
+    // The two flow lines of index-2 point i: Ends[i], and their polylines when
+    // recording (which memoises NEXT and shares tails, so runs on this thread).
+    auto flowLines = [&](std::size_t i) {
+      const Id node = this->Base2 + static_cast<Id>(i);
+      const auto& f = this->Cs.Facets[i].Vertices;
+      const CellHandle cell = this->Tri->Cell(this->Cs.Facets[i].Cell);
+      const int opposite = this->Cs.Facets[i].Opposite;
+      CellHandle sides[2] = { cell, cell->neighbor(opposite) };
+      // Which cell holds the facet depends on the triangulation's cell order, so
+      // order the two sides by their apex (vertex index, infinite last) to keep
+      // the output deterministic.
+      {
+        const VertexHandle a0 = cell->vertex(opposite);
+        const VertexHandle a1 = sides[1]->vertex(sides[1]->index(cell));
+        const Id k0 = this->Tri->Dt().is_infinite(a0) ? this->M : a0->info();
+        const Id k1 = this->Tri->Dt().is_infinite(a1) ? this->M : a1->info();
+        if (k1 < k0)
+        {
+          std::swap(sides[0], sides[1]);
+        }
+        if (!this->PatchFaces.empty())
+        {
+          this->PatchFaces[i] = static_cast<char>(PatchFacesSide(*this->Tri, this->Cs, i) ^ (k1 < k0 ? 1 : 0));
+        }
+      }
+      Point3 centre{ { 0, 0, 0 } };
+      if (record)
+      {
+        const KPoint pts[3] = { this->Tri->KCoord(f[0]), this->Tri->KCoord(f[1]), this->Tri->KCoord(f[2]) };
+        const std::array<double, 4> cr = CentreAndSquaredRadius(pts, 3);
+        centre = { { cr[0], cr[1], cr[2] } };
+      }
+      for (int s = 0; s < 2; ++s)
+      {
+        FlowLine line;
+        line.Node = node;
+        if (record)
+        {
+          line.Points.push_back(centre);
+        }
+        if (this->Tri->Dt().is_infinite(sides[s]))
+        {
+          line.Target = fc.InfinityNode;
+          if (record)
+          {
+            // The Voronoi edge of a hull facet is a ray normal to it, away from the other cell.
+            const CellHandle other = sides[1 - s];
+            const KPoint& apex = other->vertex(other->index(sides[s]))->point();
+            const KPoint& p = this->Tri->KCoord(f[0]);
+            Kernel::Vector_3 n = CGAL::cross_product(this->Tri->KCoord(f[1]) - p, this->Tri->KCoord(f[2]) - p);
+            if (n * (apex - p) > 0)
+            {
+              n = -n;
+            }
+            const double len = std::sqrt(n.squared_length());
+            line.Points.push_back({ { centre[0] + n.x() / len * stub,
+              centre[1] + n.y() / len * stub, centre[2] + n.z() / len * stub } });
+          }
+        }
+        else
+        {
+          const Id id = this->Tri->CellId(sides[s]);
+          line.Target = forest.Root(id);
+          if (record)
+          {
+            line.Points.push_back(forest.Circumcentre(id));
+            forest.AppendPath(id, line.Points, true);
+          }
+        }
+        this->Ends[i][s] = static_cast<std::int32_t>(line.Target);
+        if (record)
+        {
+          // Voronoi vertices of nearly cospherical samples can lie beyond the
+          // range of doubles (clouds mixing scales); such points of a drawn
+          // polyline are left out. The flow line's target is exact regardless.
+          line.Points.erase(std::remove_if(line.Points.begin(), line.Points.end(),
+                              [](const Point3& p) {
+                                return !(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]));
+                              }),
+            line.Points.end());
+          fc.FlowLines.push_back(std::move(line));
+        }
+      }
+    };
+    try
+    {
+      if (record)
+      {
+        for (std::size_t i = 0; i < this->Cs.Facets.size(); ++i)
+        {
+          if ((i & 0x3FF) == 0)
+          {
+            this->Report(0.7 + 0.2 * i / nf, "unstable manifolds");
+          }
+          flowLines(i);
+        }
+      }
+      else
+      {
+        ParallelSlices(this->NFacets, 16 * PatchChunk, this->Report, 0.7, 0.9, "unstable manifolds",
+          [&](Id begin, Id last) {
+            for (Id i = begin; i < last; ++i)
+            {
+              flowLines(static_cast<std::size_t>(i));
+            }
+          });
+      }
+    }
+    catch (const Degenerate&)
+    {
+      if (this->First)
+      {
+        ++fc.Report.WalkTies;
+      }
+      throw;
+    }
+    fc.Report.ExactFallbacks += forest.ExactFallbacks();
+  }
+}
+
+} // namespace internal
+} // namespace flowrecon
