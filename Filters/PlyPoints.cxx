@@ -76,32 +76,9 @@ bool ReadBinary(std::string_view data, std::size_t& pos, int type, bool swap, do
   {
     std::reverse(bytes, bytes + size);
   }
-  switch (type)
+  switch (type) // one of PlyType's
   {
-    case VTK_SIGNED_CHAR:
-      value = Load<signed char>(bytes);
-      break;
-    case VTK_UNSIGNED_CHAR:
-      value = Load<unsigned char>(bytes);
-      break;
-    case VTK_SHORT:
-      value = Load<short>(bytes);
-      break;
-    case VTK_UNSIGNED_SHORT:
-      value = Load<unsigned short>(bytes);
-      break;
-    case VTK_INT:
-      value = Load<int>(bytes);
-      break;
-    case VTK_UNSIGNED_INT:
-      value = Load<unsigned int>(bytes);
-      break;
-    case VTK_FLOAT:
-      value = Load<float>(bytes);
-      break;
-    default:
-      value = Load<double>(bytes);
-      break;
+    vtkTemplateMacro(value = Load<VTK_TT>(bytes));
   }
   return true;
 }
