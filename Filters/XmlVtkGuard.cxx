@@ -1,7 +1,8 @@
-// Checks of a VTK XML file (see XmlVtkGuard.h): a scan of the text before any
-// appended data for counts, types and extents (with line numbers), then a
-// parse with VTK's own vtkXMLDataParser for the block headers of every array
-// and the last cell offsets, which size the connectivity.
+// Checks of a VTK XML file (see XmlVtkGuard.h) on the elements VTK's own
+// vtkXMLDataParser parses from it, in document order and with the line of
+// each: counts, types and extents, the bytes the arrays declare, the block
+// headers of binary arrays, then the last cell offsets (read with that
+// parser), which size the connectivity.
 #include "XmlVtkGuard.h"
 
 #include "PointCloudParsing.h"
@@ -68,9 +69,7 @@ bool ReadLargest(vtkXMLDataParser* parser, vtkXMLDataElement* array, vtkTypeUInt
   return read == count;
 }
 
-// What the parser needs to find the block header of an array, from the
-// attributes it parsed (quotes, entities or a '>' in an attribute value can
-// hide an array from the text scan of CheckXmlCounts).
+// What the checks of a parsed file need from its root and size.
 struct ParsedXml
 {
   std::string File;
@@ -82,6 +81,7 @@ struct ParsedXml
   std::size_t WordSize = 4;
   bool BigEndian = false;
   long long Ratio = 1;
+  long long Limit = 0; // the most bytes of values the file can expand to
 };
 
 // `n` bytes of the file from `at` (fewer at its end).
@@ -156,48 +156,263 @@ std::string CheckParsedHeader(
   }
   if (at < 0)
   {
-    return "no data where its header should be";
+    const char* offsetText = array->GetAttribute("offset");
+    return appended ? "no data at offset " + Quote(offsetText ? offsetText : "")
+                    : "no data where its header should be";
   }
   const auto read = [&](std::size_t n) {
     std::string bytes = ReadAt(xml, at, n);
     return appended ? bytes : bytes.substr(0, bytes.find('<'));
   };
-  return CheckBlockHeader(read, xml.Size - at, !appended || xml.Base64Appended, xml.Compressed,
+  // Inline data lies in the text read (all of the file before any appended
+  // data) and ends at the next tag.
+  const std::size_t inlineEnd = appended
+    ? 0
+    : std::min(xml.Text.find('<', static_cast<std::size_t>(at)), xml.Text.size());
+  const long long available = appended
+    ? xml.Size - at
+    : std::max(0LL, static_cast<long long>(inlineEnd) - at);
+  return CheckBlockHeader(read, available, !appended || xml.Base64Appended, xml.Compressed,
     xml.WordSize, xml.BigEndian, xml.Ratio, needed);
 }
 
-// Every data array of the parsed file (DataArray, or Array in field data).
-void CheckParsedArrays(const ParsedXml& xml, vtkXMLDataElement* root)
+// vtkXMLDataParser stops at the first tag whose name starts with
+// "AppendedData": the data that follows is binary, no element.
+bool IsAppendedData(const std::string& name)
 {
-  std::vector<vtkXMLDataElement*> stack{ root }; // no recursion: nesting may be deep
-  while (!stack.empty())
+  return name.compare(0, 12, "AppendedData") == 0;
+}
+
+// The line of an element's start tag.
+std::size_t LineOf(const ParsedXml& xml, vtkXMLDataElement* element)
+{
+  const vtkTypeInt64 at = std::max<vtkTypeInt64>(element->GetXMLByteIndex(), 0);
+  const std::size_t end = std::min(static_cast<std::size_t>(at), xml.Text.size());
+  return 1 + static_cast<std::size_t>(std::count(xml.Text.begin(), xml.Text.begin() + end, '\n'));
+}
+
+void CheckFile(const std::string& file, int depth);
+
+// The checks of the elements of one file, in document order: the counts,
+// types and extents of their attributes against the file size, the bytes the
+// data arrays declare, the block headers of binary arrays, and files named
+// by a .vtm or .pvt* (`depth` deep).
+class ElementChecks
+{
+public:
+  ElementChecks(const ParsedXml& xml, int depth)
+    : Xml(xml)
+    , Depth(depth)
   {
-    vtkXMLDataElement* element = stack.back();
-    stack.pop_back();
-    for (int i = 0; i < element->GetNumberOfNestedElements(); ++i)
-    {
-      stack.push_back(element->GetNestedElement(i));
-    }
+  }
+
+  void Check(vtkXMLDataElement* element)
+  {
     const std::string name = element->GetName() ? element->GetName() : "";
-    const std::string problem =
-      name == "DataArray" || name == "Array" ? CheckParsedHeader(xml, element, 0) : "";
+    const std::size_t line = LineOf(this->Xml, element);
+    static const char* const sections[] = { "PointData", "CellData", "Points", "Verts", "Lines",
+      "Strips", "Polys", "Cells", "Coordinates", "FieldData" };
+    if (std::find(std::begin(sections), std::end(sections), name) != std::end(sections))
+    {
+      this->Section = name;
+    }
+    if (name == "Piece")
+    {
+      this->TuplesOf.clear();
+    }
+    long long components = 1, tuples = -1;
+    std::string format, type, arrayName;
+    for (int i = 0; i < element->GetNumberOfAttributes(); ++i)
+    {
+      const std::string attribute = element->GetAttributeName(i);
+      const std::string value = element->GetAttributeValue(i);
+      format = attribute == "format" ? value : format;
+      type = attribute == "type" ? value : type;
+      arrayName = attribute == "Name" ? value : arrayName;
+      this->CheckAttribute(name, line, attribute, value, components, tuples);
+    }
+    if (name == "VTKFile" && !type.empty())
+    {
+      this->CheckPrimary(element, type, line);
+    }
+    const bool isArray = name == "DataArray" || name == "Array";
+    if (!isArray)
+    {
+      return;
+    }
+    const std::string what = "data array " + Quote(arrayName);
+    if (type.empty())
+    {
+      // No type at all: vtkXMLReader dereferences a null array (field data).
+      Fail(this->Xml.File, line, what + " has no type (corrupt or truncated file?)");
+    }
+    // The connectivity of cells is sized by offsets (CheckCellOffsets).
+    const auto sized = this->TuplesOf.find(this->Section);
+    if (arrayName != "connectivity" && arrayName != "faces" &&
+      (tuples >= 0 || sized != this->TuplesOf.end()))
+    {
+      this->Declared += static_cast<double>(components) * (tuples >= 0 ? tuples : sized->second) *
+        BitsPerValue(type, format) / 8;
+      if (this->Declared > static_cast<double>(this->Xml.Limit))
+      {
+        Fail(this->Xml.File, line,
+          what + " makes the data larger than the file can hold (corrupt or truncated file?)");
+      }
+    }
+    const std::string problem = CheckParsedHeader(this->Xml, element, 0);
     if (!problem.empty())
     {
-      const char* arrayName = element->GetAttribute("Name");
-      Fail(xml.File, 0,
-        "data array " + Quote(arrayName ? arrayName : "") + ": " + problem +
+      Fail(this->Xml.File, line, what + ": " + problem + " (corrupt or truncated file?)");
+    }
+  }
+
+private:
+  void CheckAttribute(const std::string& name, std::size_t line, const std::string& attribute,
+    const std::string& value, long long& components, long long& tuples)
+  {
+    long long count = 0;
+    const auto implausible = [&]() {
+      Fail(this->Xml.File, line,
+        "implausible " + attribute + "=" + Quote(value) + " (corrupt or truncated file?)");
+    };
+    if (attribute.compare(0, 8, "NumberOf") == 0 && attribute != "NumberOfPieces")
+    {
+      if (!ParseCount(value, count) || count > this->Xml.Limit ||
+        (attribute == "NumberOfComponents" && count > 10000))
+      {
+        implausible();
+      }
+      if (attribute == "NumberOfComponents")
+      {
+        components = count;
+      }
+      else if (attribute == "NumberOfTuples")
+      {
+        tuples = count;
+      }
+      else if (name == "Piece")
+      {
+        // NumberOfPoints, NumberOfCells, NumberOfVerts...
+        const std::string kind = attribute.substr(8);
+        this->TuplesOf[kind] = count;
+        this->TuplesOf[kind == "Points" ? "PointData" : "CellData"] += count;
+      }
+    }
+    else if (attribute == "type" && name == "VTKFile")
+    {
+      // The types of the extensions we read. Others reach readers that do not
+      // exist in VTK 9.2 (vtkNonOverlappingAMR: the data object leaks) or hold
+      // no points.
+      static const char* const types[] = { "PolyData", "UnstructuredGrid", "StructuredGrid",
+        "RectilinearGrid", "ImageData", "PPolyData", "PUnstructuredGrid", "PStructuredGrid",
+        "PRectilinearGrid", "PImageData", "vtkMultiBlockDataSet", "vtkOverlappingAMR",
+        "vtkHierarchicalBoxDataSet" };
+      if (std::find(std::begin(types), std::end(types), value) == std::end(types))
+      {
+        Fail(this->Xml.File, line,
+          "unsupported VTK XML file type " + Quote(value) +
+            " (expected a dataset with points or a multiblock of them)");
+      }
+    }
+    else if ((attribute == "type" && (name == "DataArray" || name == "Array")) ||
+      attribute == "header_type")
+    {
+      // An unknown type makes vtkXMLReader dereference a null array.
+      static const char* const types[] = { "Int8", "UInt8", "Int16", "UInt16", "Int32", "UInt32",
+        "Int64", "UInt64", "Float32", "Float64", "String", "Bit" };
+      if (std::find(std::begin(types), std::end(types), value) == std::end(types) ||
+        (attribute == "header_type" && value != "UInt32" && value != "UInt64"))
+      {
+        implausible();
+      }
+    }
+    else if (attribute == "index" || attribute == "level" || attribute == "group")
+    {
+      // Composite readers make room for that many children.
+      if (!ParseCount(value, count) || count > static_cast<long long>(this->Xml.Text.size()))
+      {
+        implausible();
+      }
+    }
+    else if (attribute == "Extent" || attribute == "WholeExtent")
+    {
+      this->CheckExtent(name, value, implausible);
+    }
+    else if ((attribute == "file" || attribute == "Source") && this->Depth < 8)
+    {
+      // A block or piece in another file.
+      const auto sub = std::filesystem::path(this->Xml.File).parent_path() / value;
+      std::error_code error;
+      if (std::filesystem::is_regular_file(sub, error))
+      {
+        CheckFile(sub.string(), this->Depth + 1);
+      }
+    }
+  }
+
+  template <class Implausible>
+  void CheckExtent(const std::string& name, const std::string& value, const Implausible& implausible)
+  {
+    constexpr long long maximumPoints = 1LL << 30;
+    std::vector<std::string_view> bounds;
+    SplitLoose(value, bounds, 6);
+    long long product = 1, cells = 1;
+    for (std::size_t k = 0; k + 1 < bounds.size(); k += 2)
+    {
+      long long lo = 0, hi = 0;
+      const bool ok =
+        std::from_chars(bounds[k].data(), bounds[k].data() + bounds[k].size(), lo).ec ==
+          std::errc() &&
+        std::from_chars(bounds[k + 1].data(), bounds[k + 1].data() + bounds[k + 1].size(), hi)
+            .ec == std::errc();
+      if (!ok || hi < lo || hi - lo >= maximumPoints || (product *= hi - lo + 1) > maximumPoints)
+      {
+        implausible();
+      }
+      cells *= std::max(hi - lo, 1LL);
+    }
+    if (name == "Piece")
+    {
+      this->TuplesOf["PointData"] = product;
+      this->TuplesOf["CellData"] = cells;
+    }
+  }
+
+  // The element VTKFile's type names must come first inside it: without it
+  // VTK 9.2's composite readers dereference a null primary element.
+  void CheckPrimary(vtkXMLDataElement* root, const std::string& primary, std::size_t line)
+  {
+    vtkXMLDataElement* first = root->GetNumberOfNestedElements() > 0 ? root->GetNestedElement(0) : nullptr;
+    const std::string name = first && first->GetName() ? first->GetName() : "";
+    if (!first || IsAppendedData(name))
+    {
+      Fail(this->Xml.File, line,
+        "VTKFile of type " + Quote(primary) + " holds no <" + primary +
+          "> element (corrupt or truncated file?)");
+    }
+    if (name != primary)
+    {
+      Fail(this->Xml.File, LineOf(this->Xml, first),
+        "expected the element <" + primary + "> inside VTKFile, found " + Quote(name) +
           " (corrupt or truncated file?)");
     }
   }
-}
+
+  const ParsedXml& Xml;
+  const int Depth;
+  // Tuples of the arrays of each section of the current piece ("Points",
+  // "CellData", "Verts"...), and the bytes all arrays declare.
+  std::map<std::string, long long, std::less<>> TuplesOf;
+  std::string Section;
+  double Declared = 0;
+};
 
 // VTK sizes the connectivity of a cell block by the last of its offsets (the
 // faces of polyhedra by the largest face offset), data the header checks do
 // not see: read them with VTK's own parser, which knows every encoding and
 // compressor, once their block headers were checked, including that they
 // hold the values read. Only DataArray elements are cell arrays to VTK.
-void CheckCellOffsets(
-  const ParsedXml& xml, vtkXMLDataParser* parser, vtkXMLDataElement* data, long long limit)
+void CheckCellOffsets(const ParsedXml& xml, vtkXMLDataParser* parser, vtkXMLDataElement* data)
 {
   for (int p = 0, piece = 0; p < data->GetNumberOfNestedElements(); ++p)
   {
@@ -242,7 +457,7 @@ void CheckCellOffsets(
         double largest = 0;
         // Offsets increase (VTK refuses them otherwise): the last is the largest.
         if (ReadLargest(parser, array, faces ? 0 : cells - 1, faces ? cells : 1, largest) &&
-          largest > static_cast<double>(limit))
+          largest > static_cast<double>(xml.Limit))
         {
           char count[32];
           std::snprintf(count, sizeof(count), "%.15g", largest);
@@ -274,312 +489,72 @@ vtkSmartPointer<vtkDataCompressor> Decompressor(const std::string& name)
   return nullptr;
 }
 
-// Parses the file as VTK's XML readers do, then checks the block headers of
-// all its arrays and the cell offsets (`text`: the file up to a little after
-// <AppendedData, as CheckXmlCounts read it).
-void CheckParsedXml(const std::string& file, std::string_view text, long long limit)
+// Parses `file` as VTK's XML readers do (with vtkXMLDataParser), then checks
+// every element in document order and the last cell offsets. A file that does
+// not parse is left to VTK's reader, which fails on it the same way.
+void CheckFile(const std::string& file, int depth)
 {
+  const std::string text = ReadWholeFile(file, "<AppendedData");
   vtksys::ifstream stream(file.c_str(), std::ios::in | std::ios::binary);
   vtkNew<vtkXMLDataParser> parser;
   parser->SetStream(&stream);
   parser->SetIgnoreCharacterData(1); // inline data is read from the file when asked for
   // Its messages are the reader's to report.
   CapturedMessages capture;
-  const auto check = [&]() {
-    vtkXMLDataElement* root = parser->Parse() ? parser->GetRootElement() : nullptr;
-    const char* type = root ? root->GetAttribute("type") : nullptr;
-    vtkXMLDataElement* data = type ? root->FindNestedElementWithName(type) : nullptr;
-    const char* compressor = root ? root->GetAttribute("compressor") : nullptr;
-    vtkSmartPointer<vtkDataCompressor> decompressor =
-      Decompressor(compressor ? compressor : "");
-    if (!data || (compressor && *compressor && !decompressor))
+  vtkXMLDataElement* root = parser->Parse() ? parser->GetRootElement() : nullptr;
+  if (!root)
+  {
+    return;
+  }
+  ParsedXml xml;
+  xml.File = file;
+  xml.Text = text;
+  xml.Size = static_cast<long long>(std::filesystem::file_size(file));
+  xml.Appended = parser->GetAppendedDataPosition();
+  vtkXMLDataElement* eAppended = root->FindNestedElementWithName("AppendedData");
+  const char* encoding = eAppended ? eAppended->GetAttribute("encoding") : nullptr;
+  xml.Base64Appended = !encoding || std::strcmp(encoding, "raw") != 0;
+  const char* compressor = root->GetAttribute("compressor");
+  xml.Ratio = RatioOf(compressor ? compressor : "");
+  xml.Compressed = xml.Ratio > 1;
+  xml.Limit = xml.Size * xml.Ratio;
+  const char* headerType = root->GetAttribute("header_type");
+  xml.WordSize = headerType && std::strcmp(headerType, "UInt64") == 0 ? 8 : 4;
+  const char* byteOrder = root->GetAttribute("byte_order");
+  xml.BigEndian = byteOrder && std::strcmp(byteOrder, "BigEndian") == 0;
+
+  ElementChecks checks(xml, depth);
+  std::vector<vtkXMLDataElement*> stack{ root }; // no recursion: nesting may be deep
+  while (!stack.empty())
+  {
+    vtkXMLDataElement* element = stack.back();
+    stack.pop_back();
+    if (element->GetName() && IsAppendedData(element->GetName()))
     {
-      return; // VTK's reader reports it
+      continue;
     }
-    ParsedXml xml;
-    xml.File = file;
-    xml.Text = text;
-    xml.Size = static_cast<long long>(std::filesystem::file_size(file));
-    xml.Appended = parser->GetAppendedDataPosition();
-    vtkXMLDataElement* eAppended = root->FindNestedElementWithName("AppendedData");
-    const char* encoding = eAppended ? eAppended->GetAttribute("encoding") : nullptr;
-    xml.Base64Appended = !encoding || std::strcmp(encoding, "raw") != 0;
-    xml.Compressed = decompressor != nullptr;
-    const char* headerType = root->GetAttribute("header_type");
-    xml.WordSize = headerType && std::strcmp(headerType, "UInt64") == 0 ? 8 : 4;
-    const char* byteOrder = root->GetAttribute("byte_order");
-    xml.BigEndian = byteOrder && std::strcmp(byteOrder, "BigEndian") == 0;
-    xml.Ratio = RatioOf(compressor ? compressor : "");
-    CheckParsedArrays(xml, root);
+    checks.Check(element);
+    for (int i = element->GetNumberOfNestedElements() - 1; i >= 0; --i)
+    {
+      stack.push_back(element->GetNestedElement(i));
+    }
+  }
+
+  const char* type = root->GetAttribute("type");
+  vtkXMLDataElement* data = type ? root->FindNestedElementWithName(type) : nullptr;
+  vtkSmartPointer<vtkDataCompressor> decompressor = Decompressor(compressor ? compressor : "");
+  if (data && (!xml.Compressed || decompressor))
+  {
     parser->SetCompressor(decompressor);
-    CheckCellOffsets(xml, parser, data, limit);
-  };
-  check();
-}
-
-long long MaximumRatio(std::string_view header)
-{
-  const auto has = [&header](const char* name) {
-    return header.find(std::string("compressor=\"") + name + '"') != std::string_view::npos;
-  };
-  return header.find("compressor=") == std::string_view::npos ? 1
-    : has("vtkLZ4DataCompressor")                             ? RatioOf("vtkLZ4DataCompressor")
-    : has("vtkZLibDataCompressor")                            ? RatioOf("vtkZLibDataCompressor")
-                                                              : RatioOf("other");
-}
-
-// vtkXMLReader aborts the process when an allocation fails and loops on absurd
-// component counts, so the counts in the XML header (and in the files a .vtm or
-// .pvt* refers to) are checked against the file size first: the arrays cannot
-// declare more bytes than the file holds times the compressor's best ratio (an
-// ASCII value takes at least one character).
-void CheckXmlCounts(const std::string& file, int depth)
-{
-  const std::string text = ReadWholeFile(file, "<AppendedData");
-  const std::string_view header = std::string_view(text).substr(0, text.find("<AppendedData"));
-  const long long size = static_cast<long long>(std::filesystem::file_size(file));
-  const long long ratio = MaximumRatio(header);
-  const long long limit = size * ratio;
-  constexpr long long maximumPoints = 1LL << 30;
-  const std::size_t wordSize =
-    header.find("header_type=\"UInt64\"") != std::string_view::npos ? 8 : 4;
-  const bool bigEndian = header.find("byte_order=\"BigEndian\"") != std::string_view::npos;
-  // Appended data starts after the '_' that follows <AppendedData ...>.
-  const std::size_t appended = text.find('_', std::min(text.find('>', header.size()), text.size()));
-  const bool rawAppended =
-    text.substr(header.size(), 60).find("encoding=\"raw\"") != std::string::npos;
-  // Tuples of the arrays of each section of the current piece ("Points",
-  // "CellData", "Verts"...), and the bytes all arrays declare.
-  std::map<std::string, long long, std::less<>> tuplesOf;
-  std::string_view section;
-  double declared = 0;
-  std::size_t tag = 0;
-  // The element VTKFile's type names must come first inside it: without it
-  // VTK 9.2's composite readers dereference a null primary element.
-  std::string_view primary;
-  std::size_t primaryLine = 0;
-  while ((tag = header.find('<', tag)) != std::string_view::npos)
-  {
-    const std::size_t close = header.find('>', tag);
-    if (close == std::string_view::npos)
-    {
-      break; // an unterminated tag: the XML parser reports it
-    }
-    const std::string_view element = header.substr(tag + 1, close - tag - 1);
-    const std::size_t line = 1 + std::count(header.begin(), header.begin() + tag, '\n');
-    tag = close;
-    const std::string_view name = element.substr(0, element.find_first_of(" \t\r\n/"));
-    if (!primary.empty() && !name.empty() && name[0] != '!' && name[0] != '?')
-    {
-      if (name != primary)
-      {
-        Fail(file, line,
-          "expected the element <" + std::string(primary) + "> inside VTKFile, found " +
-            Quote(name) + " (corrupt or truncated file?)");
-      }
-      primary = {};
-    }
-    static const char* const sections[] = { "PointData", "CellData", "Points", "Verts", "Lines",
-      "Strips", "Polys", "Cells", "Coordinates", "FieldData" };
-    section = std::find(std::begin(sections), std::end(sections), name) != std::end(sections)
-      ? name
-      : section;
-    if (name == "Piece")
-    {
-      tuplesOf.clear();
-    }
-    long long components = 1, tuples = -1;
-    std::string_view format, offset, type, arrayName;
-    // Attributes: name="value".
-    for (std::size_t eq = 0; (eq = element.find("=\"", eq)) != std::string_view::npos; eq += 2)
-    {
-      std::size_t start = eq;
-      while (start > 0 &&
-        (std::isalpha(static_cast<unsigned char>(element[start - 1])) || element[start - 1] == '_'))
-      {
-        --start;
-      }
-      const std::string_view attribute = element.substr(start, eq - start);
-      const std::size_t valueEnd = element.find('"', eq + 2);
-      const std::string_view value = element.substr(eq + 2, valueEnd - eq - 2);
-      long long count = 0;
-      const auto implausible = [&]() {
-        Fail(file, line,
-          "implausible " + std::string(attribute) + "=" + Quote(value) +
-            " (corrupt or truncated file?)");
-      };
-      format = attribute == "format" ? value : format;
-      offset = attribute == "offset" ? value : offset;
-      type = attribute == "type" ? value : type;
-      arrayName = attribute == "Name" ? value : arrayName;
-      if (attribute.substr(0, 8) == "NumberOf" && attribute != "NumberOfPieces")
-      {
-        if (!ParseCount(value, count) || count > limit ||
-          (attribute == "NumberOfComponents" && count > 10000))
-        {
-          implausible();
-        }
-        if (attribute == "NumberOfComponents")
-        {
-          components = count;
-        }
-        else if (attribute == "NumberOfTuples")
-        {
-          tuples = count;
-        }
-        else if (name == "Piece")
-        {
-          // NumberOfPoints, NumberOfCells, NumberOfVerts...
-          const std::string_view kind = attribute.substr(8);
-          tuplesOf[std::string(kind)] = count;
-          tuplesOf[kind == "Points" ? "PointData" : "CellData"] += count;
-        }
-      }
-      else if (attribute == "type" && name == "VTKFile")
-      {
-        // The types of the extensions we read. Others reach readers that do not
-        // exist in VTK 9.2 (vtkNonOverlappingAMR: the data object leaks) or hold
-        // no points.
-        static const char* const types[] = { "PolyData", "UnstructuredGrid", "StructuredGrid",
-          "RectilinearGrid", "ImageData", "PPolyData", "PUnstructuredGrid", "PStructuredGrid",
-          "PRectilinearGrid", "PImageData", "vtkMultiBlockDataSet", "vtkOverlappingAMR",
-          "vtkHierarchicalBoxDataSet" };
-        if (std::find(std::begin(types), std::end(types), value) == std::end(types))
-        {
-          Fail(file, line,
-            "unsupported VTK XML file type " + Quote(value) +
-              " (expected a dataset with points or a multiblock of them)");
-        }
-        primary = value;
-        primaryLine = line;
-      }
-      else if ((attribute == "type" && (name == "DataArray" || name == "Array")) ||
-        attribute == "header_type")
-      {
-        // An unknown type makes vtkXMLReader dereference a null array.
-        static const char* const types[] = { "Int8", "UInt8", "Int16", "UInt16", "Int32", "UInt32",
-          "Int64", "UInt64", "Float32", "Float64", "String", "Bit" };
-        if (std::find(std::begin(types), std::end(types), value) == std::end(types) ||
-          (attribute == "header_type" && value != "UInt32" && value != "UInt64"))
-        {
-          implausible();
-        }
-      }
-      else if (attribute == "index" || attribute == "level" || attribute == "group")
-      {
-        // Composite readers make room for that many children.
-        if (!ParseCount(value, count) || count > static_cast<long long>(header.size()))
-        {
-          implausible();
-        }
-      }
-      else if (attribute == "Extent" || attribute == "WholeExtent")
-      {
-        std::vector<std::string_view> bounds;
-        SplitLoose(value, bounds, 6);
-        long long product = 1, cells = 1;
-        for (std::size_t k = 0; k + 1 < bounds.size(); k += 2)
-        {
-          long long lo = 0, hi = 0;
-          const bool ok =
-            std::from_chars(bounds[k].data(), bounds[k].data() + bounds[k].size(), lo).ec ==
-              std::errc() &&
-            std::from_chars(bounds[k + 1].data(), bounds[k + 1].data() + bounds[k + 1].size(), hi)
-                .ec == std::errc();
-          if (!ok || hi < lo || hi - lo >= maximumPoints ||
-            (product *= hi - lo + 1) > maximumPoints)
-          {
-            implausible();
-          }
-          cells *= std::max(hi - lo, 1LL);
-        }
-        if (name == "Piece")
-        {
-          tuplesOf["PointData"] = product;
-          tuplesOf["CellData"] = cells;
-        }
-      }
-      else if ((attribute == "file" || attribute == "Source") && depth < 8)
-      {
-        // A block or piece in another file.
-        const auto sub = std::filesystem::path(file).parent_path() / std::string(value);
-        std::error_code error;
-        if (std::filesystem::is_regular_file(sub, error))
-        {
-          CheckXmlCounts(sub.string(), depth + 1);
-        }
-      }
-    }
-    const bool isArray = name == "DataArray" || name == "Array";
-    if (isArray && type.empty())
-    {
-      // No type at all: vtkXMLReader dereferences a null array too (field data).
-      Fail(file, line,
-        "data array " + Quote(arrayName) + " has no type (corrupt or truncated file?)");
-    }
-    // The connectivity of cells is sized by offsets (CheckCellOffsets).
-    const auto sized = tuplesOf.find(section);
-    if (isArray && arrayName != "connectivity" && arrayName != "faces" &&
-      (tuples >= 0 || sized != tuplesOf.end()))
-    {
-      declared += static_cast<double>(components) * (tuples >= 0 ? tuples : sized->second) *
-        BitsPerValue(type, format) / 8;
-      if (declared > static_cast<double>(limit))
-      {
-        Fail(file, line,
-          "data array " + Quote(arrayName) +
-            " makes the data larger than the file can hold (corrupt or truncated file?)");
-      }
-    }
-    if (isArray && (format == "binary" || format == "appended"))
-    {
-      std::string problem = "no data at offset " + Quote(offset);
-      long long position = 0;
-      if (format == "binary")
-      {
-        const std::size_t start =
-          std::min(header.find_first_not_of(" \t\r\n", close + 1), header.size());
-        const std::size_t end = std::min(header.find('<', start), header.size());
-        const auto read = [&](std::size_t n) { return std::string(header.substr(start, n)); };
-        problem = CheckBlockHeader(
-          read, static_cast<long long>(end - start), true, ratio > 1, wordSize, bigEndian, ratio);
-      }
-      else if (appended != std::string::npos && ParseCount(offset, position) &&
-        position < size - static_cast<long long>(appended + 1))
-      {
-        const long long at = static_cast<long long>(appended + 1) + position;
-        const auto read = [&](std::size_t n) {
-          std::ifstream in(file, std::ios::binary);
-          in.seekg(static_cast<std::streamoff>(at));
-          std::string bytes(n, '\0');
-          in.read(&bytes[0], static_cast<std::streamsize>(n));
-          bytes.resize(static_cast<std::size_t>(in.gcount()));
-          return bytes;
-        };
-        problem =
-          CheckBlockHeader(read, size - at, !rawAppended, ratio > 1, wordSize, bigEndian, ratio);
-      }
-      if (!problem.empty())
-      {
-        Fail(file, line,
-          "data array " + Quote(arrayName) + ": " + problem + " (corrupt or truncated file?)");
-      }
-    }
+    CheckCellOffsets(xml, parser, data);
   }
-  if (!primary.empty())
-  {
-    Fail(file, primaryLine,
-      "VTKFile of type " + Quote(primary) + " holds no <" + std::string(primary) +
-        "> element (corrupt or truncated file?)");
-  }
-  CheckParsedXml(file, text, limit);
 }
 
 } // namespace
 
 void CheckXmlFile(const std::string& file)
 {
-  CheckXmlCounts(file, 0);
+  CheckFile(file, 0);
 }
 
 } // namespace reader
