@@ -15,17 +15,33 @@ vtk_module_add_module(FlowRecon::Filters
     ${_flowrecon_filters_dir}/FlowComplexFromVTK.h
     ${_flowrecon_filters_dir}/FlowComplexToVTK.h
     ${_flowrecon_filters_dir}/FlowReconNames.h
+    ${_flowrecon_filters_dir}/LegacyVtkGuard.h
     ${_flowrecon_filters_dir}/PersistenceDiagramConversion.h
+    ${_flowrecon_filters_dir}/PlyPoints.h
+    ${_flowrecon_filters_dir}/PointCloudParsing.h
+    ${_flowrecon_filters_dir}/PointCloudTextFormats.h
     ${_flowrecon_filters_dir}/ReconstructionConversion.h
     ${_flowrecon_filters_dir}/SamplesFromVTK.h
     ${_flowrecon_filters_dir}/SimplificationConversion.h
+    ${_flowrecon_filters_dir}/VtkFilePoints.h
+    ${_flowrecon_filters_dir}/VtkMessageCapture.h
+    ${_flowrecon_filters_dir}/XmlBlockHeaders.h
+    ${_flowrecon_filters_dir}/XmlVtkGuard.h
   SOURCES
     ${_flowrecon_filters_dir}/ContractArrays.cxx
     ${_flowrecon_filters_dir}/FlowComplexFromVTK.cxx
     ${_flowrecon_filters_dir}/FlowComplexToVTK.cxx
+    ${_flowrecon_filters_dir}/LegacyVtkGuard.cxx
     ${_flowrecon_filters_dir}/PersistenceDiagramConversion.cxx
+    ${_flowrecon_filters_dir}/PlyPoints.cxx
+    ${_flowrecon_filters_dir}/PointCloudParsing.cxx
+    ${_flowrecon_filters_dir}/PointCloudTextFormats.cxx
     ${_flowrecon_filters_dir}/ReconstructionConversion.cxx
     ${_flowrecon_filters_dir}/SamplesFromVTK.cxx
-    ${_flowrecon_filters_dir}/SimplificationConversion.cxx)
+    ${_flowrecon_filters_dir}/SimplificationConversion.cxx
+    ${_flowrecon_filters_dir}/VtkFilePoints.cxx
+    ${_flowrecon_filters_dir}/VtkMessageCapture.cxx
+    ${_flowrecon_filters_dir}/XmlBlockHeaders.cxx
+    ${_flowrecon_filters_dir}/XmlVtkGuard.cxx)
 vtk_module_include(FlowRecon::Filters PUBLIC "$<BUILD_INTERFACE:${_flowrecon_filters_dir}>")
 vtk_module_link(FlowRecon::Filters PRIVATE "$<BUILD_INTERFACE:FlowReconCore>")

@@ -1,0 +1,35 @@
+// The text formats of vtkPointCloudReader: .xyz/.txt/.pts, .csv, the vertices
+// of .off and the `v` lines of .obj. Parsed here rather than by
+// vtkDelimitedTextReader or vtkOBJReader so that every bad line is reported
+// with its number (VTK's readers read a malformed number as 0 and accept
+// truncated files); see PointCloudParsing.h for the shared pieces.
+#ifndef PointCloudTextFormats_h
+#define PointCloudTextFormats_h
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace flowrecon
+{
+namespace reader
+{
+
+/// One point per line, `x y z` separated by blanks or commas, further columns
+/// ignored; with `countLine` (.pts) a first line holding only a count is skipped.
+void ReadXyz(
+  const std::string& file, std::string_view text, bool countLine, std::vector<double>& xyz);
+
+/// Delimited columns (`;`, tab, `,` or blanks) with an optional header naming x, y, z.
+void ReadCsv(const std::string& file, std::string_view text, std::vector<double>& xyz);
+
+/// The vertices of an (ST)(C)(N)OFF file; the face count is checked, not read.
+void ReadOff(const std::string& file, std::string_view text, std::vector<double>& xyz);
+
+/// The `v x y z` lines of an OBJ file.
+void ReadObj(const std::string& file, std::string_view text, std::vector<double>& xyz);
+
+} // namespace reader
+} // namespace flowrecon
+
+#endif
