@@ -1,6 +1,7 @@
 #include "FlowComplexToVTK.h"
 
 #include "ContractArrays.h"
+#include "DrawingBox.h"
 #include "FlowReconNames.h"
 #include "MemoryGuard.h"
 
@@ -127,34 +128,13 @@ vtkSmartPointer<vtkPolyData> GabrielEdgesBlock(const FlowComplex& fc)
   return pd;
 }
 
-/// The samples' bounding-box diagonal, from the index-0 nodes (the distinct
-/// samples), so that it needs no geometry.
-double Diagonal(const FlowComplex& fc)
-{
-  double lo[3] = { HUGE_VAL, HUGE_VAL, HUGE_VAL }, hi[3] = { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
-  for (const Node& node : fc.Nodes)
-  {
-    for (int k = 0; node.Index == 0 && k < 3; ++k)
-    {
-      lo[k] = std::min(lo[k], node.Location[k]);
-      hi[k] = std::max(hi[k], node.Location[k]);
-    }
-  }
-  if (!(hi[0] >= lo[0]))
-  {
-    return 0;
-  }
-  // Halves and hypot: no overflow even for coordinates near the largest doubles.
-  return 2 * std::hypot(0.5 * hi[0] - 0.5 * lo[0], 0.5 * hi[1] - 0.5 * lo[1], 0.5 * hi[2] - 0.5 * lo[2]);
-}
-
 vtkSmartPointer<vtkPolyData> HasseDiagramBlock(const FlowComplex& fc)
 {
   // Point k is node k's critical point, shared by its arcs (a surface sample has
   // ~100 arcs per point: two points per arc would double the block); an arc to
   // infinity ends on a short outward stub of its own instead of a point that
   // would distort the bounds.
-  const double stub = 0.05 * Diagonal(fc);
+  const double stub = ArcStub * SamplesDiagonal(fc);
   const Point3 centre = fc.InfinityNode >= 0 ? fc.Nodes[fc.InfinityNode].Location : Point3{};
   const vtkIdType nodes = static_cast<vtkIdType>(fc.Nodes.size());
   const vtkIdType arcs = static_cast<vtkIdType>(fc.Arcs.size());

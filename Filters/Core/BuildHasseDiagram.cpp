@@ -115,7 +115,7 @@ void Builder::AssembleHasseDiagram()
       }
     }
   }
-  const DrawingBox box = BoxAround(fc.Points, fc.NumberOfInputPoints, 0.25);
+  const DrawingBox box = BoxAround(fc.Points, fc.NumberOfInputPoints, RayStub);
   for (FlowLine& line : fc.FlowLines)
   {
     if (line.Target == fc.InfinityNode)

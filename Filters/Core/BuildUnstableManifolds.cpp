@@ -2,6 +2,7 @@
 // lines each, followed to the maxima they reach (the ends of the 2-3 arcs).
 #include "BuildPhases.h"
 
+#include "DrawingBox.h"
 #include "ParallelSlices.h"
 #include "StableManifold.h"
 #include "StableManifoldGeometry.h"
@@ -30,7 +31,7 @@ void Builder::TraceUnstableManifolds()
     {
       maximumOfCell[this->Cs.Cells[i].Cell] = static_cast<std::int32_t>(this->Base3 + static_cast<Id>(i));
     }
-    const double stub = 0.25 * this->In.Diagonal;
+    const double stub = RayStub * this->In.Diagonal;
     SuccessorForest forest(
       *this->Tri, maximumOfCell, fc.InfinityNode, stub, this->Options.UnstableManifolds,
       this->Options.ExactOnly);

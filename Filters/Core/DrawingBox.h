@@ -34,6 +34,36 @@ struct DrawingBox
   }
 };
 
+/// The length of the diagonal of the box [lo, hi]; the one place the samples'
+/// scale is measured. Halves and hypot: no overflow even for coordinates near
+/// the largest doubles.
+inline double BoxDiagonal(const Point3& lo, const Point3& hi)
+{
+  return 2 * std::hypot(0.5 * hi[0] - 0.5 * lo[0], 0.5 * hi[1] - 0.5 * lo[1], 0.5 * hi[2] - 0.5 * lo[2]);
+}
+
+/// The diagonal of the samples' bounding box, from the index-0 nodes (the
+/// distinct samples), so that it needs no geometry; 0 without nodes.
+inline double SamplesDiagonal(const FlowComplex& fc)
+{
+  Point3 lo{ { HUGE_VAL, HUGE_VAL, HUGE_VAL } }, hi{ { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL } };
+  for (const Node& node : fc.Nodes)
+  {
+    for (int k = 0; node.Index == 0 && k < 3; ++k)
+    {
+      lo[k] = std::min(lo[k], node.Location[k]);
+      hi[k] = std::max(hi[k], node.Location[k]);
+    }
+  }
+  return hi[0] >= lo[0] ? BoxDiagonal(lo, hi) : 0;
+}
+
+/// What is drawn toward the maximum at infinity, in samples' diagonals: the flow
+/// line of a hull facet (a ray, cut at this length; the drawing box's margin, so
+/// that such stubs fit) and a Hasse-diagram arc (a short tick beside its node).
+constexpr double RayStub = 0.25;
+constexpr double ArcStub = 0.05;
+
 /// The bounding box of points[0, n) grown on every side by `margin` times its
 /// diagonal (the stub length of a hull facet's ray, so that stubs fit).
 inline DrawingBox BoxAround(const std::vector<Point3>& points, Id n, double margin)
@@ -52,12 +82,7 @@ inline DrawingBox BoxAround(const std::vector<Point3>& points, Id n, double marg
       box.Upper[k] = std::max(box.Upper[k], points[i][k]);
     }
   }
-  double d = 0;
-  for (int k = 0; k < 3; ++k)
-  {
-    d += (box.Upper[k] - box.Lower[k]) * (box.Upper[k] - box.Lower[k]);
-  }
-  d = margin * std::sqrt(d);
+  const double d = margin * BoxDiagonal(box.Lower, box.Upper);
   for (int k = 0; k < 3; ++k)
   {
     box.Lower[k] -= d;

@@ -1,6 +1,7 @@
 #include "InputPreparation.h"
 
 #include "Delaunay.h"
+#include "DrawingBox.h"
 #include "Progress.h"
 
 #include <CGAL/Spatial_sort_traits_adapter_3.h>
@@ -73,8 +74,7 @@ PreparedInput PrepareInput(const std::vector<Point3>& points)
   {
     in.Centre[k] = 0.5 * lo[k] + 0.5 * hi[k]; // halves: no overflow near the largest doubles
   }
-  in.Diagonal =
-    2 * std::hypot(0.5 * hi[0] - 0.5 * lo[0], 0.5 * hi[1] - 0.5 * lo[1], 0.5 * hi[2] - 0.5 * lo[2]);
+  in.Diagonal = BoxDiagonal(lo, hi);
   return in;
 }
 
@@ -151,8 +151,7 @@ PreparedInput PrepareForTriangulation(const std::vector<Point3>& points)
       hi[k] = std::max(hi[k], p[k]);
     }
   }
-  in.Diagonal = std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
-    (hi[2] - lo[2]) * (hi[2] - lo[2])); // in scaled units
+  in.Diagonal = BoxDiagonal(lo, hi); // in scaled units
   return in;
 }
 
