@@ -9,6 +9,7 @@ vtk_module_add_module(FlowRecon::Filters
     ${_flowrecon_filters_dir}/vtkPersistenceDiagram
     ${_flowrecon_filters_dir}/vtkPointCloudReader
   PRIVATE_HEADERS
+    ${_flowrecon_filters_dir}/CloudReconstruction.h
     ${_flowrecon_filters_dir}/ContractArrays.h
     ${_flowrecon_filters_dir}/CoreCall.h
     ${_flowrecon_filters_dir}/FlowComplexConversion.h
@@ -21,6 +22,7 @@ vtk_module_add_module(FlowRecon::Filters
     ${_flowrecon_filters_dir}/PointCloudParsing.h
     ${_flowrecon_filters_dir}/PointCloudTextFormats.h
     ${_flowrecon_filters_dir}/ReconstructionConversion.h
+    ${_flowrecon_filters_dir}/ReconstructionReport.h
     ${_flowrecon_filters_dir}/SamplesFromVTK.h
     ${_flowrecon_filters_dir}/SimplificationConversion.h
     ${_flowrecon_filters_dir}/VtkFilePoints.h
@@ -28,6 +30,7 @@ vtk_module_add_module(FlowRecon::Filters
     ${_flowrecon_filters_dir}/XmlBlockHeaders.h
     ${_flowrecon_filters_dir}/XmlVtkGuard.h
   SOURCES
+    ${_flowrecon_filters_dir}/CloudReconstruction.cxx
     ${_flowrecon_filters_dir}/ContractArrays.cxx
     ${_flowrecon_filters_dir}/FlowComplexFromVTK.cxx
     ${_flowrecon_filters_dir}/FlowComplexToVTK.cxx
@@ -37,6 +40,7 @@ vtk_module_add_module(FlowRecon::Filters
     ${_flowrecon_filters_dir}/PointCloudParsing.cxx
     ${_flowrecon_filters_dir}/PointCloudTextFormats.cxx
     ${_flowrecon_filters_dir}/ReconstructionConversion.cxx
+    ${_flowrecon_filters_dir}/ReconstructionReport.cxx
     ${_flowrecon_filters_dir}/SamplesFromVTK.cxx
     ${_flowrecon_filters_dir}/SimplificationConversion.cxx
     ${_flowrecon_filters_dir}/VtkFilePoints.cxx

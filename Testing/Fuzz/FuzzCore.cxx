@@ -456,7 +456,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
   }
 
-  // The CLI's path (Apps/flowrecon.cxx, ReconstructCloud).
+  // The CLI's path (Filters/CloudReconstruction.cxx, ReconstructCloud).
   const SimplificationResult s = Simplify(fc.Nodes, fc.Arcs, tp, Progress());
   CheckSimplification(fc, s, tp);
   const std::vector<Arc>& arcs = tp >= 1 ? s.Arcs : fc.Arcs;

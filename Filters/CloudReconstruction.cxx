@@ -1,0 +1,98 @@
+#include "CloudReconstruction.h"
+
+#include "CappedReconstruction.h"
+#include "CellHomology.h"
+#include "ReconstructionConversion.h"
+#include "StableManifoldGeometry.h"
+
+#include "vtkNew.h"
+#include "vtkPolyData.h"
+
+#include <algorithm>
+#include <iomanip>
+#include <sstream>
+
+namespace flowrecon
+{
+
+CloudReconstructionReport ReconstructCloud(const std::vector<Point3>& samples,
+  const CloudReconstructionSettings& settings, const CloudReconstructionOutputs& outputs,
+  const Progress& progress, const std::function<void(const char*)>& phaseDone)
+{
+  const double tr = settings.ReconstructionThreshold;
+  const double tdraw = settings.DrawThreshold;
+  BuildOptions build;
+  build.StableManifolds = false;
+  build.UnstableManifolds = false;
+  CappedReconstruction r;
+  for (bool defer = true;; defer = false)
+  {
+    try
+    {
+      r = ReconstructBelow(
+        samples, build, settings.PersistenceThreshold, settings.Cap, defer, progress.Range(0, 0.7));
+      phaseDone("flow complex, simplification, reconstruction queue");
+      DrawStableManifolds(samples, build, NodesToDraw(r.Complex.Nodes, r.Carriers, r.Run, tdraw),
+        r.Complex, progress.Range(0.7, 0.9), settings.Advice, &r.Cones,
+        r.Triangulation.get());
+      break;
+    }
+    catch (const Degenerate&)
+    {
+      if (!defer)
+      {
+        throw InputError("input too degenerate (a tie in a stable manifold)");
+      }
+    }
+  }
+  r.Triangulation.reset();
+  CloudReconstructionReport report;
+  {
+    const Timings& t = r.Complex.Time;
+    std::ostringstream work;
+    work << "patches deferred: " << r.DeferredPatches << " of " << r.Complex.CountByIndex()[2]
+         << ", walked late: " << r.WalkedLate << ", owners found by replays: " << r.ReplayedOwners
+         << std::fixed << std::setprecision(3) << "\nflow complex (s): Delaunay " << t.Delaunay
+         << "; critical points " << t.CriticalPoints << "; stable manifolds " << t.StableManifolds
+         << "; unstable manifolds " << t.UnstableManifolds << "; assembly " << t.Assembly
+         << "; then simplification " << r.SimplificationSeconds << "; reconstruction queue "
+         << r.QueueSeconds << ";";
+    report.Work = work.str();
+  }
+  FlowComplex& fc = r.Complex;
+  phaseDone("drawing");
+  const CellsByNode triangles(fc.TriangleNode, fc.Nodes.size());
+  const CellsByNode tetrahedra(fc.TetrahedronNode, fc.Nodes.size());
+  std::vector<Bar> bars;
+  std::vector<Id> cellNodes;
+  try
+  {
+    if (!settings.Topology)
+    {
+      throw InputError("not asked for");
+    }
+    bars = CellBarcode(ReconstructionCells(fc, r.Carriers, r.Run, tdraw, triangles, tetrahedra,
+                         &cellNodes, settings.MaximumTopologyCells),
+      progress.Range(0.9, 0.95), settings.MaximumTopologyCells);
+  }
+  catch (const InputError& e)
+  {
+    report.TopologyError = e.what(); // the reconstruction is still written
+  }
+  phaseDone("Betti numbers");
+  progress(0.95, "output");
+  vtkNew<vtkPolyData> arrows;
+  ReconstructionToVTK(fc, r.Carriers, r.Run, settings.OutputThreshold, triangles, tetrahedra,
+    outputs.Grid, outputs.Profile, arrows);
+  if (report.TopologyError.empty())
+  {
+    TopologyToVTK(bars, settings.OutputThreshold, tdraw, outputs.Grid, outputs.Topology);
+    const double window = std::max(1.0, std::min(settings.UnderSamplingWindow, tdraw / tr));
+    UnderSamplingToVTK(TopologyChangesAbove(bars, tr, window), cellNodes, fc, outputs.UnderSampling);
+  }
+  report.Nodes = std::move(fc.Nodes);
+  phaseDone("VTK output");
+  return report;
+}
+
+} // namespace flowrecon

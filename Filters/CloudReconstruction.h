@@ -1,0 +1,63 @@
+// Flow Reconstruction of a point cloud straight through the core: the flow
+// complex stays in the core's compact form (a VTK copy of its Hasse diagram
+// would be most of the memory), it is exact below a cap (the patches that
+// cannot matter below it are walked only when needed, DESIGN.md "Cost follows
+// the output"), and only the cells written are drawn. The outputs are
+// vtkFlowReconstruction's (the tests compare the two paths). What
+// `flowrecon reconstruct` runs on a cloud.
+#ifndef CloudReconstruction_h
+#define CloudReconstruction_h
+
+#include "FlowComplex.h" // core data structure
+#include "Progress.h"    // core progress
+
+#include <functional>
+#include <string>
+#include <vector>
+
+class vtkPolyData;
+class vtkTable;
+class vtkUnstructuredGrid;
+
+namespace flowrecon
+{
+
+struct CloudReconstructionSettings
+{
+  double PersistenceThreshold = 1.1;   ///< t_p (below 1: no simplification)
+  double ReconstructionThreshold = 2;  ///< t_r, whose under-sampling is reported
+  double OutputThreshold = 2;          ///< the grid holds the cells below it (>= t_r)
+  double DrawThreshold = 2;            ///< nodes drawn, and the topology profile's end
+  double Cap = 4;                      ///< exact below it (>= DrawThreshold)
+  double UnderSamplingWindow = 1.1;    ///< changes in [t_r, window t_r) are reported
+  bool Topology = true;                ///< Betti numbers, topology profile, under-sampling
+  Id MaximumTopologyCells = -1;        ///< above it, no Betti numbers (-1: no limit)
+  std::string Advice = "lower the threshold"; ///< for a run that would not fit in memory
+};
+
+/// vtkFlowReconstruction's ports 0, 1, 3 and 4, all required.
+struct CloudReconstructionOutputs
+{
+  vtkUnstructuredGrid* Grid = nullptr;
+  vtkTable* Profile = nullptr;
+  vtkTable* Topology = nullptr;
+  vtkPolyData* UnderSampling = nullptr;
+};
+
+struct CloudReconstructionReport
+{
+  std::vector<Node> Nodes;   ///< of the simplified complex: what the profile's NodeId names
+  std::string TopologyError; ///< why there are no Betti numbers ("" when there are)
+  std::string Work;          ///< patches deferred and walked late, and the core's timings
+};
+
+/// Reconstructs `samples` into `outputs`. `phaseDone(name)` is called at the
+/// end of each phase (for timings). Throws the core's exceptions (InputError,
+/// Aborted, std::bad_alloc).
+CloudReconstructionReport ReconstructCloud(const std::vector<Point3>& samples,
+  const CloudReconstructionSettings& settings, const CloudReconstructionOutputs& outputs,
+  const Progress& progress, const std::function<void(const char*)>& phaseDone);
+
+} // namespace flowrecon
+
+#endif

@@ -1,0 +1,159 @@
+#include "ReconstructionReport.h"
+
+#include "FlowReconNames.h"
+#include "Progress.h" // core: InputError
+
+#include "vtkDataArray.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkTable.h"
+
+#include <algorithm>
+#include <map>
+#include <sstream>
+#include <tuple>
+
+namespace flowrecon
+{
+
+namespace
+{
+
+// The column `name` of `table`, which `what` names in the error.
+vtkDataArray* Column(vtkTable* table, const char* name, const char* what)
+{
+  auto* column = vtkDataArray::SafeDownCast(table->GetColumnByName(name));
+  if (!column)
+  {
+    throw InputError(std::string(what) + " without column " + name);
+  }
+  return column;
+}
+
+} // namespace
+
+bool BettiNumbersAt(vtkTable* topology, double t, std::array<long long, 3>& betti)
+{
+  const vtkIdType rows = topology ? topology->GetNumberOfRows() : 0;
+  if (rows == 0)
+  {
+    return false;
+  }
+  vtkDataArray* threshold = Column(topology, names::Threshold, "topology profile");
+  vtkDataArray* b[3] = { Column(topology, "b0", "topology profile"),
+    Column(topology, "b1", "topology profile"), Column(topology, "b2", "topology profile") };
+  vtkIdType row = 0;
+  while (row + 1 < rows && threshold->GetComponent(row + 1, 0) < t)
+  {
+    ++row;
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    betti[k] = static_cast<long long>(b[k]->GetComponent(row, 0));
+  }
+  return true;
+}
+
+long long StepsBelow(vtkTable* profile, double t)
+{
+  const vtkIdType steps = profile->GetNumberOfRows();
+  vtkDataArray* threshold = steps > 0 ? Column(profile, names::Threshold, "profile") : nullptr;
+  vtkIdType kept = 0;
+  while (kept < steps && threshold->GetComponent(kept, 0) < t)
+  {
+    ++kept;
+  }
+  return kept;
+}
+
+std::vector<ProfileJumpNode> LargestProfileJumps(vtkTable* profile, std::size_t count)
+{
+  const vtkIdType steps = profile->GetNumberOfRows();
+  if (steps == 0)
+  {
+    return {};
+  }
+  vtkDataArray* threshold = Column(profile, names::Threshold, "profile");
+  vtkDataArray* node = Column(profile, names::NodeId, "profile");
+  vtkDataArray* index = Column(profile, names::Index, "profile");
+  std::vector<double> thresholds(static_cast<std::size_t>(steps));
+  for (vtkIdType r = 0; r < steps; ++r)
+  {
+    thresholds[r] = threshold->GetComponent(r, 0);
+  }
+  std::vector<ProfileJumpNode> jumps;
+  for (const ProfileJump& jump : LargestJumps(thresholds, count))
+  {
+    const auto r = static_cast<vtkIdType>(jump.Step);
+    jumps.push_back({ jump, static_cast<Id>(node->GetComponent(r, 0)),
+      static_cast<int>(index->GetComponent(r, 0)) });
+  }
+  return jumps;
+}
+
+std::vector<UnderSampledPlace> UnderSampledPlaces(vtkPolyData* warnings)
+{
+  const vtkIdType n = warnings ? warnings->GetNumberOfPoints() : 0;
+  vtkPointData* pd = n > 0 ? warnings->GetPointData() : nullptr;
+  vtkDataArray* threshold = pd ? pd->GetArray(names::Threshold) : nullptr;
+  vtkDataArray* dimension = pd ? pd->GetArray(names::Dimension) : nullptr;
+  vtkDataArray* change = pd ? pd->GetArray(names::Change) : nullptr;
+  vtkDataArray* spacing = pd ? pd->GetArray(names::Spacing) : nullptr;
+  vtkDataArray* node = pd ? pd->GetArray(names::NodeId) : nullptr;
+  std::vector<UnderSampledPlace> places;
+  if (!threshold || !dimension || !change || !spacing || !node)
+  {
+    return places;
+  }
+  // (t_r, node, dimension, appears) -> its place.
+  std::map<std::tuple<double, Id, int, bool>, std::size_t> seen;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    UnderSampledPlace place;
+    place.Threshold = threshold->GetComponent(i, 0);
+    place.Node = static_cast<Id>(node->GetComponent(i, 0));
+    place.Dimension = std::max(0, std::min(3, static_cast<int>(dimension->GetComponent(i, 0))));
+    place.Appears = change->GetComponent(i, 0) > 0;
+    const auto key = std::make_tuple(place.Threshold, place.Node,
+      static_cast<int>(dimension->GetComponent(i, 0)), place.Appears);
+    const auto it = seen.find(key);
+    if (it != seen.end())
+    {
+      ++places[it->second].Count;
+      continue;
+    }
+    warnings->GetPoint(i, place.Location.data());
+    place.Spacing = spacing->GetComponent(i, 0);
+    place.Count = 1;
+    seen.emplace(key, places.size());
+    places.push_back(place);
+  }
+  return places;
+}
+
+std::string Describe(const UnderSampledPlace& place)
+{
+  static const char* const one[2][4] = { { "parts join", "hole closes", "void fills",
+                                           "cavity fills" },
+    { "part appears", "hole opens", "void closes in", "cavity closes in" } };
+  static const char* const many[2][4] = { { "parts join", "holes close", "voids fill",
+                                            "cavities fill" },
+    { "parts appear", "holes open", "voids close in", "cavities close in" } };
+  const int up = place.Appears ? 1 : 0;
+  const int d = place.Dimension;
+  std::ostringstream os;
+  os << "under-sampled near (" << place.Location[0] << ", " << place.Location[1] << ", "
+     << place.Location[2] << "): spacing " << place.Spacing << "; at t_r " << place.Threshold
+     << " ";
+  if (place.Count == 1)
+  {
+    os << (d == 0 && up == 0 ? "" : "a ") << one[up][d];
+  }
+  else
+  {
+    os << place.Count << " " << many[up][d];
+  }
+  return os.str();
+}
+
+} // namespace flowrecon

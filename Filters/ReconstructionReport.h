@@ -1,0 +1,66 @@
+// What Flow Reconstruction's outputs say, read back as plain values for a text
+// report: the Betti numbers at a threshold (the topology profile), the
+// under-sampled places in words (the under-sampling points) and the largest
+// jumps of the profile. `flowrecon reconstruct` prints them, from the filter's
+// outputs or from the same outputs built by ReconstructCloud.
+#ifndef ReconstructionReport_h
+#define ReconstructionReport_h
+
+#include "FlowComplex.h"  // core: Id
+#include "ProfileJumps.h" // core data structure
+
+#include <array>
+#include <string>
+#include <vector>
+
+class vtkPolyData;
+class vtkTable;
+
+namespace flowrecon
+{
+
+/// b0, b1, b2 at t_r = `t` from the topology profile (TopologyToVTK's table:
+/// row k holds for t_r in (Threshold_k, Threshold_k+1]). Returns false for an
+/// empty table (the Betti numbers were skipped); throws InputError when a
+/// column is missing.
+bool BettiNumbersAt(vtkTable* topology, double t, std::array<long long, 3>& betti);
+
+/// The number of steps of `profile` (ReconstructionToVTK's table) with
+/// Threshold < t: the steps of the reconstruction at t_r = t.
+long long StepsBelow(vtkTable* profile, double t);
+
+/// A jump of the profile (LargestJumps) with the node of its step.
+struct ProfileJumpNode
+{
+  ProfileJump Jump;
+  Id Node = -1;
+  int Index = -1;
+};
+
+/// The `count` largest jumps of `profile`'s Threshold column, largest first.
+std::vector<ProfileJumpNode> LargestProfileJumps(vtkTable* profile, std::size_t count);
+
+/// The under-sampling points (UnderSamplingToVTK) of one node, one t_r, one
+/// dimension and one direction of change: one place in a report.
+struct UnderSampledPlace
+{
+  std::array<double, 3> Location{ { 0, 0, 0 } }; ///< of the first such point
+  double Spacing = 0;
+  double Threshold = 0; ///< the t_r above which the topology changes there
+  int Dimension = 0;    ///< 0 to 3
+  bool Appears = false; ///< a class appears (Change +1), else one goes
+  Id Node = -1;
+  int Count = 0; ///< how many changes
+};
+
+/// The places of `warnings` in the order of their first point (the nearest
+/// t_r first); none when it lacks the arrays.
+std::vector<UnderSampledPlace> UnderSampledPlaces(vtkPolyData* warnings);
+
+/// "under-sampled near (x, y, z): spacing s; at t_r t a hole closes" ("2 holes
+/// close" for two changes).
+std::string Describe(const UnderSampledPlace& place);
+
+} // namespace flowrecon
+
+#endif
