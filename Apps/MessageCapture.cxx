@@ -1,42 +1,19 @@
 #include "MessageCapture.h"
 
+#include "VtkMessageCapture.h"
+
 #include "vtkLogger.h"
 #include "vtkObjectFactory.h"
 #include "vtkOutputWindow.h"
 #include "vtkSmartPointer.h"
 
 #include <algorithm>
-#include <cctype>
 
 namespace flowrecon::cli
 {
 
 namespace
 {
-
-// "ERROR: In file.cxx, line 12\nvtkClass (0x...): text\n\n" -> "text".
-std::string MessageText(const char* text)
-{
-  std::string t = text ? text : "";
-  if (t.rfind("ERROR: In ", 0) == 0 || t.rfind("Warning: In ", 0) == 0)
-  {
-    const std::size_t newline = t.find('\n');
-    t = newline == std::string::npos ? std::string() : t.substr(newline + 1);
-  }
-  const std::size_t object = t.find(" (0x");
-  const std::size_t colon = t.find("): ");
-  if (object != std::string::npos && colon != std::string::npos && object < colon &&
-    t.find_first_of(" \n") == object)
-  {
-    t = t.substr(colon + 3);
-  }
-  t = t.substr(0, t.find('\n'));
-  while (!t.empty() && std::isspace(static_cast<unsigned char>(t.back())))
-  {
-    t.pop_back();
-  }
-  return t;
-}
 
 class CapturingOutputWindow : public vtkOutputWindow
 {
@@ -48,14 +25,14 @@ public:
   {
     if (this->FirstError.empty())
     {
-      this->FirstError = MessageText(text);
+      this->FirstError = VtkMessageText(text);
     }
   }
   // Kept for the commands that run the filters (a saved complex): a filter's
   // warning is then the only place that says, e.g., why there are no Betti numbers.
   void DisplayWarningText(const char* text) override
   {
-    const std::string t = MessageText(text);
+    const std::string t = VtkMessageText(text);
     if (!t.empty() &&
       std::find(this->Warnings.begin(), this->Warnings.end(), t) == this->Warnings.end())
     {

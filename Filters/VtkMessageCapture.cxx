@@ -14,6 +14,25 @@
 
 namespace flowrecon
 {
+
+std::string VtkMessageText(const char* text)
+{
+  std::string_view t(text ? text : "");
+  if (t.substr(0, 4) == "ERRO" || t.substr(0, 4) == "Warn" || t.substr(0, 4) == "Gene")
+  {
+    const std::size_t newline = t.find('\n');
+    t = newline == std::string_view::npos ? std::string_view() : t.substr(newline + 1);
+  }
+  const std::size_t object = t.find(" (0x");
+  const std::size_t colon = t.find("): ");
+  if (object != std::string_view::npos && colon != std::string_view::npos && object < colon &&
+    t.substr(0, object).find_first_of(" \n") == std::string_view::npos)
+  {
+    t.remove_prefix(colon + 3);
+  }
+  return std::string(reader::Trim(t.substr(0, t.find('\n'))));
+}
+
 namespace reader
 {
 namespace
@@ -43,8 +62,7 @@ public:
   void DisplayGenericWarningText(const char* text) override { this->Keep(text); }
   void DisplayDebugText(const char*) override {}
 
-  // The first message, reduced to its text: "ERROR: In file, line N" and the
-  // "vtkClass (0x...): " prefix are dropped.
+  // The first message, reduced to its text (VtkMessageText).
   std::string First;
 
 private:
@@ -54,22 +72,9 @@ private:
     {
       return;
     }
-    std::string_view t(text);
-    if (t.substr(0, 4) == "ERRO" || t.substr(0, 4) == "Warn" || t.substr(0, 4) == "Gene")
-    {
-      const std::size_t newline = t.find('\n');
-      t = newline == std::string_view::npos ? std::string_view() : t.substr(newline + 1);
-    }
-    const std::size_t object = t.find(" (0x");
-    const std::size_t colon = t.find("): ");
-    if (object != std::string_view::npos && colon != std::string_view::npos && object < colon &&
-      t.substr(0, object).find_first_of(" \n") == std::string_view::npos)
-    {
-      t.remove_prefix(colon + 3);
-    }
-    t = Trim(t.substr(0, t.find('\n')));
+    const std::string t = VtkMessageText(text);
     // The detail goes into a one-line message: no control or non-ASCII bytes.
-    this->First = t.empty() ? "unknown error" : std::string(t.substr(0, 200));
+    this->First = t.empty() ? "unknown error" : t.substr(0, 200);
     for (char& c : this->First)
     {
       c = (c < 0x20 || c > 0x7e) ? '?' : c;

@@ -15,6 +15,13 @@ class vtkOutputWindow;
 
 namespace flowrecon
 {
+
+/// The text of a message VTK sends to its output window: "ERROR: In file, line
+/// N" (or "Warning: In", "Generic Warning: In") and the "vtkClass (0x...): "
+/// prefix dropped, its first line only, without surrounding blanks. Used by the
+/// reader and by the flowrecon tool, whose messages are one line each.
+std::string VtkMessageText(const char* text);
+
 namespace reader
 {
 
