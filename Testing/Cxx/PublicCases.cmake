@@ -1,1 +1,0 @@
-flowrecon_add_cxx_test(TestPublicCases FlowReconCore)

@@ -1,0 +1,11 @@
+# ParaView shows the CLI's Betti numbers, topology profile and under-sampling
+# places (ports 0, 3 and 4 of Flow Reconstruction), in pvpython. Included from
+# Testing/ParaView/CMakeLists.txt.
+if (FLOWRECON_BUILD_PARAVIEW_PLUGIN AND TARGET FlowRecon AND TARGET flowrecon AND FLOWRECON_PVPYTHON)
+  add_test(NAME pv.reconstruction.topology_ports
+    COMMAND "${FLOWRECON_PVPYTHON}" "${CMAKE_CURRENT_SOURCE_DIR}/test_topology_ports.py"
+            "$<TARGET_FILE:FlowRecon>" "$<TARGET_FILE:flowrecon>"
+            "${CMAKE_CURRENT_BINARY_DIR}/topology_ports")
+  set_tests_properties(pv.reconstruction.topology_ports PROPERTIES LABELS "paraview" TIMEOUT 300
+    PASS_REGULAR_EXPRESSION "PASS")
+endif ()

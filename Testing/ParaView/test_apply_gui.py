@@ -1,0 +1,247 @@
+"""The displays a user gets in the ParaView Qt GUI by choosing each FlowRecon filter
+in the Filters menu and pressing Apply (issue #10, "readable defaults"), measured in
+the real GUI:
+
+    FLOWRECON_PLUGIN=<build>/lib/paraview-5.11/plugins/FlowRecon/FlowRecon.so \\
+    FLOWRECON_DATA=<repo>/Data/torus.xyz FLOWRECON_OUT=<prefix> \\
+    FLOWRECON_TEST_DIR=<repo>/Testing/ParaView \\
+    xvfb-run -a -s "-screen 0 1280x1024x24" paraview --dr --script=test_apply_gui.py
+
+The filters are made by pqFiltersMenuReaction::createFilter (what the menu does) and
+applied by a click on the Properties panel's Apply button (pqApplyBehavior), both
+reached through ctypes (gui_qt.py). test_default_display.py checks the same defaults
+through Python's Show(); this is the GUI's own path:
+  * Flow Complex and Flow Complex Simplification: shown in the render view with the
+    blocks CriticalPoints and GabrielEdges, coloured by the cell array Index, one
+    legend (Index);
+  * Flow Reconstruction: outputs 0 (coloured by Index) and 4 in the render view, one
+    legend; 2 (sponsor arrows) not shown; 1 and 3 (the profiles) in line charts, the
+    reconstruction profile's with a logarithmic left axis.
+Then the sponsor arrows are shown (the eye: Show() in the render view): 3D Glyphs
+oriented and scaled by Direction, and the picture must have clearly more drawn pixels
+than the same lines drawn as a wireframe (the arrows have heads and a width).
+Saves <prefix>_layout.png (the GUI's layout after Apply) and <prefix>_arrows.png.
+Prints "test_apply_gui: PASS"/"FAIL" with os.write and os._exit()s.
+"""
+
+import os
+import sys
+
+import numpy as np
+
+sys.path.insert(0, os.environ.get("FLOWRECON_TEST_DIR", "."))
+from gui_qt import Qt, check, run_in_gui, say  # noqa: E402
+
+from paraview import servermanager  # noqa: E402
+from paraview.simple import *  # noqa: E402,F401,F403
+
+
+def legends(view):
+    """Titles of the colour legends visible in `view`."""
+    titles = []
+    for rep in view.Representations:
+        if rep.GetXMLName() == "ScalarBarWidgetRepresentation" and rep.Visibility:
+            titles.append(rep.Title)
+    return sorted(titles)
+
+
+def colouring(display):
+    return tuple(display.ColorArrayName)
+
+
+def displays_in(view, source):
+    """{port: display} of `source` in `view` that are visible."""
+    found = {}
+    for r in view.Representations:
+        prop = r.GetProperty("Input")
+        if prop is None or r.GetXMLName() == "ScalarBarWidgetRepresentation":
+            continue
+        helper = r.SMProxy.GetProperty("Input")
+        if helper.GetNumberOfProxies() == 0 or helper.GetProxy(0) != source.SMProxy:
+            continue
+        if r.Visibility:
+            found[helper.GetOutputPortForConnection(0)] = r
+    return found
+
+
+def views_of(source):
+    """(view type, port) of every view showing a port of `source`."""
+    out = []
+    for view in GetViews():
+        for port in displays_in(view, source):
+            out.append((view.GetXMLName(), port))
+    return sorted(out)
+
+
+def apply_from_menu(qt, accept, input_source, name):
+    SetActiveSource(input_source)
+    qt.process_events()
+    made = qt.create_filter("filters", name)
+    check(made, "pqFiltersMenuReaction::createFilter made no %s" % name)
+    qt.process_events()
+    check(accept and qt.enabled(accept), "the Apply button is not enabled after choosing %s" % name)
+    qt.click(accept)
+    qt.process_events()
+    source = GetActiveSource()
+    check(source is not None and source.GetXMLName() == name,
+          "after Apply the active source is %s, not %s" % (
+              source.GetXMLName() if source else None, name))
+    return source
+
+
+def drawn_mask(view, path):
+    """The picture of `view` saved at 800 x 600: True where something is drawn."""
+    SaveScreenshot(path, view, ImageResolution=[800, 600],
+                   OverrideColorPalette="WhiteBackground")
+    from vtkmodules.vtkIOImage import vtkPNGReader
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    r = vtkPNGReader()
+    r.SetFileName(path)
+    r.Update()
+    w, h, _ = r.GetOutput().GetDimensions()
+    rgb = vtk_to_numpy(r.GetOutput().GetPointData().GetScalars())[:, :3].reshape(h, w, 3)
+    return ~(rgb == rgb[0, 0]).all(axis=2)
+
+
+def look_along_longest_arrow(view, recon):
+    """Parallel projection on the longest sponsor arrow, its sponsor on the left and
+    its node on the right, 500 of the 800 pixels long, centred. Returns its length."""
+    import numpy as np
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    data = servermanager.Fetch(recon, idx=2)
+    pts = vtk_to_numpy(data.GetPoints().GetData())
+    d = vtk_to_numpy(data.GetPointData().GetArray("Direction"))
+    k = int(np.argmax(np.linalg.norm(d, axis=1)))
+    a, b = pts[k], pts[k] + d[k]
+    length = float(np.linalg.norm(b - a))
+    u = (b - a) / length
+    v = np.cross(u, [0.0, 0.0, 1.0] if abs(u[2]) < 0.9 else [1.0, 0.0, 0.0])
+    v /= np.linalg.norm(v)
+    w = np.cross(u, v)  # the screen's right is dop x up = (-w) x v = u
+    mid = (a + b) / 2
+    view.CameraParallelProjection = 1
+    view.CameraFocalPoint = list(mid)
+    view.CameraPosition = list(mid + 10 * length * w)
+    view.CameraViewUp = list(v)
+    view.CameraParallelScale = 0.6 * length  # 1.6 lengths across 800 pixels
+    view.OrientationAxesVisibility = 0
+    return length
+
+
+def runs_through_axis(mask, x0, x1, row=300, slack=2):
+    """Per column of [x0, x1): the length of the drawn vertical run through the
+    axis (`row`, or the drawn pixel nearest to it within `slack`: a one-pixel line
+    on the axis may be rasterised a row off), 0 where none is drawn, sorted: the
+    arrow's own thickness there, whatever else is in the picture."""
+    import numpy as np
+    out = []
+    for x in range(x0, x1):
+        column = mask[:, x]
+        near = [r for r in sorted(range(row - slack, row + slack + 1), key=lambda r: abs(r - row))
+                if column[r]]
+        if not near:
+            out.append(0)
+            continue
+        top = bottom = near[0]
+        while top > 0 and column[top - 1]:
+            top -= 1
+        while bottom + 1 < len(column) and column[bottom + 1]:
+            bottom += 1
+        out.append(bottom - top + 1)
+    return np.sort(out)
+
+
+def main():
+    plugin = os.environ.get("FLOWRECON_PLUGIN", "")
+    data = os.environ["FLOWRECON_DATA"]
+    out = os.environ.get("FLOWRECON_OUT", "apply_gui")
+    ns = globals()
+    if "FlowComplex" not in ns:
+        check(os.path.exists(plugin), "plugin %r does not exist" % plugin)
+        LoadPlugin(plugin, remote=False, ns=ns)
+    qt = Qt()
+    main_widget = qt.main_widget()
+    check(main_widget, "no pqCoreUtilities::MainWidget")
+    accept = qt.find(main_widget, "Accept", qt.widgets, "QPushButton")
+    check(accept, "the Properties panel has no Apply (Accept) button")
+
+    reader = OpenDataFile(data)
+    check(reader.GetXMLName() == "FlowReconPointCloudReader",
+          "OpenDataFile chose %s" % reader.GetXMLName())
+    view = GetActiveViewOrCreate("RenderView")
+    Show(reader, view)
+    Render(view)
+
+    fc = simp = None
+    for name in ("FlowComplex", "FlowComplexSimplification"):
+        source = apply_from_menu(qt, accept, fc or reader, name)
+        fc, simp = (source, None) if fc is None else (fc, source)
+        shown = displays_in(view, source)
+        check(sorted(shown) == [0], "%s: ports shown in the render view %s" % (name, sorted(shown)))
+        d = shown[0]
+        say("test_apply_gui: %s after Apply: colouring %s, blocks %s, legends %s" % (
+            name, colouring(d), list(d.BlockSelectors), legends(view)))
+        check(colouring(d) == ("CELLS", "Index"), "%s is coloured by %s" % (name, colouring(d)))
+        check(list(d.BlockSelectors) == ["/Root/CriticalPoints", "/Root/GabrielEdges"],
+              "%s shows the blocks %s" % (name, list(d.BlockSelectors)))
+        check(legends(view) == ["Index"], "%s: legends %s" % (name, legends(view)))
+
+    recon = apply_from_menu(qt, accept, simp, "FlowReconstruction")
+    shown = displays_in(view, recon)
+    where = views_of(recon)
+    say("test_apply_gui: Flow Reconstruction after Apply: render view ports %s, colouring %s, "
+        "legends %s, views %s" % (sorted(shown), colouring(shown[0]) if 0 in shown else None,
+                                  legends(view), where))
+    check(sorted(shown) == [0, 4], "Flow Reconstruction: render view ports %s, expected 0 and 4"
+          % sorted(shown))
+    check(colouring(shown[0]) == ("CELLS", "Index"),
+          "Flow Reconstruction is coloured by %s" % (colouring(shown[0]),))
+    check(legends(view) == ["Index"], "Flow Reconstruction: legends %s" % legends(view))
+    for view_type, port in (("FlowReconLogChartView", 1), ("XYChartView", 3)):
+        check((view_type, port) in where,
+              "Flow Reconstruction: output %d is not in a %s (%s)" % (port, view_type, where))
+    log_axis = [v.LeftAxisLogScale for v in GetViews() if v.GetXMLName() == "FlowReconLogChartView"]
+    check(log_axis == [1], "the profile's chart has Left Axis Log Scale %s" % log_axis)
+    check(all(p != 2 for _, p in where), "the sponsor arrows are shown on Apply (%s)" % where)
+    layout = GetLayout(view)
+    SaveScreenshot(out + "_layout.png", layout, ImageResolution=[1200, 700])
+
+    # The sponsor arrows, one click away, alone in the render view.
+    for d in displays_in(view, recon).values():
+        d.Visibility = 0
+    for src in (reader, fc, simp):
+        Hide(src, view)
+    arrows = Show(OutputPort(recon, 2), view)
+    glyphs = (arrows.Representation, arrows.SelectOrientationVectors,
+              arrows.SelectScaleArray, arrows.ScaleFactor)
+    say("test_apply_gui: sponsor arrows shown as %s" % (glyphs,))
+    check(glyphs == ("3D Glyphs", "Direction", "Direction", 1.0),
+          "the sponsor arrows are shown as %s" % (glyphs,))
+    arrows.SetScalarBarVisibility(view, False)
+    # Side view of the longest arrow (pixels 150 to 650 along the row 300): an
+    # arrow glyph has a shaft a few pixels thick and, at the node's end, a head
+    # (vtkArrowSource: the last 35 %, radius 0.1 of the length = 50 pixels); the
+    # plain line is a pixel or two thick all along.
+    look_along_longest_arrow(view, recon)
+    glyph = drawn_mask(view, out + "_arrows.png")
+    arrows.Representation = "Wireframe"
+    line = drawn_mask(view, out + "_lines.png")
+    arrows.Representation = "3D Glyphs"
+    # Medians over the head's widest part (pixels 490-540: 90 to 70 high) and
+    # the shaft (250-420: 30 high); arrows that cross the axis only add.
+    heads = [int(np.median(runs_through_axis(m, 490, 540))) for m in (glyph, line)]
+    shafts = [int(np.median(runs_through_axis(m, 250, 420))) for m in (glyph, line)]
+    tips = [int(np.median(runs_through_axis(m, 655, 665))) for m in (glyph, line)]
+    say("test_apply_gui: the longest sponsor arrow from the side, median thickness in pixels "
+        "(glyph, line): head %s, shaft %s, past the node %s" % (heads, shafts, tips))
+    check(heads[0] >= 50 and heads[0] >= 2 * shafts[0] and shafts[0] >= 10,
+          "no arrow from sponsor to node: %d pixels thick at the head, %d along the shaft"
+          % (heads[0], shafts[0]))
+    # The control: the same arrows as plain lines are drawn (a line, not nothing)
+    # and thin where the glyph has its head.
+    check(1 <= min(heads[1], shafts[1]) and max(heads[1], shafts[1]) <= 4,
+          "the plain line is %d/%d pixels thick" % (heads[1], shafts[1]))
+    say("test_apply_gui: PASS")
+
+
+run_in_gui(main, "test_apply_gui")
