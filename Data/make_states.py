@@ -20,7 +20,7 @@ to the repository root), so:
   - paraview --state=.../Data/demo.pvsm from anywhere (no dialog) with the user setting
     "options": {"LoadStateOptions": {"LoadStateDataFileOptions": 1}} in
     ~/.config/ParaView/ParaView-UserSettings.json, which makes that search the default.
-Tested by Testing/Python/test_states.py and test_states_gui.py (pv./gui.example_states).
+Tested by Testing/ParaView/test_states.py and test_states_gui.py (pv./gui.example_states).
 """
 
 import os
