@@ -212,7 +212,7 @@ private:
     for (Id k = g.OutOffsets[c]; k < g.OutOffsets[c + 1]; ++k)
     {
       const Id d = g.OutNodes[k];
-      this->Consider(d, this->Nodes[d].Value / vc, 1, Extension::Upflow, c);
+      this->Consider(d, PersistenceRatio(this->Nodes[d].Value, vc), 1, Extension::Upflow, c);
     }
     // "Index one nodes sponsor nodes with the same dimension": siblings through
     // a common index-0 ancestor. A shorter sibling would give a ratio below 1;
@@ -230,7 +230,7 @@ private:
         const Id d = g.OutNodes[j];
         if (d != c)
         {
-          this->Consider(d, std::max(1.0, this->Nodes[d].Value / vc), 1, Extension::Horizontal, c);
+          this->Consider(d, PersistenceRatioAtLeastOne(this->Nodes[d].Value, vc), 1, Extension::Horizontal, c);
         }
       }
     }

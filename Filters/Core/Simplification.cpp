@@ -121,7 +121,7 @@ private:
     {
       return;
     }
-    const double ratio = b.Value / a.Value;
+    const double ratio = PersistenceRatio(b.Value, a.Value);
     // A pair above the threshold is never cancelled (its ratio depends on its
     // two nodes only): keeping it out of the queue keeps the queue small.
     if (std::isfinite(ratio) && ratio <= this->Threshold)
