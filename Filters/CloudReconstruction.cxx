@@ -61,8 +61,8 @@ CloudReconstructionReport ReconstructCloud(const std::vector<Point3>& samples,
   }
   FlowComplex& fc = r.Complex;
   phaseDone("drawing");
-  const CellsByNode triangles(fc.TriangleNode, fc.Nodes.size());
-  const CellsByNode tetrahedra(fc.TetrahedronNode, fc.Nodes.size());
+  const CellsByNode triangles = PositionsByRow(fc.TriangleNode, fc.Nodes.size());
+  const CellsByNode tetrahedra = PositionsByRow(fc.TetrahedronNode, fc.Nodes.size());
   std::vector<Bar> bars;
   std::vector<Id> cellNodes;
   try

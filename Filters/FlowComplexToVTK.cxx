@@ -180,9 +180,7 @@ vtkSmartPointer<vtkPolyData> HasseDiagramBlock(const FlowComplex& fc)
     connectivity->SetValue(2 * c, a.Lower);
     connectivity->SetValue(2 * c + 1, end);
     mult->SetValue(c, a.Multiplicity);
-    // Ratios are >= 1 in exact arithmetic; rounding of nearly tied values must
-    // not make them look smaller.
-    ratio->SetValue(c, lo.Value > 0 ? std::max(1.0, up.Value / lo.Value) : HUGE_VAL);
+    ratio->SetValue(c, PersistenceRatioAtLeastOne(up.Value, lo.Value));
     lowerId->SetValue(c, a.Lower);
     upperId->SetValue(c, a.Upper);
   }

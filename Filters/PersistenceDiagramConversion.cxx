@@ -154,7 +154,7 @@ void PersistenceCurveToVTK(
     }
     if (p.BirthValue > 0)
     {
-      const double r = p.DeathValue / p.BirthValue;
+      const double r = PersistenceRatio(p.DeathValue, p.BirthValue);
       ratios[p.Dimension].push_back(r);
       if (r > 1)
       {

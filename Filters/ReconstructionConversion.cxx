@@ -105,13 +105,13 @@ void ForEachCell(const FlowComplex& fc, Id node, const CellsByNode& triangles,
     const Id v[2] = { n.Simplex[0], n.Simplex[1] };
     f(n.Index == 0 ? VTK_VERTEX : VTK_LINE, n.Index + 1, v, node);
   }
-  for (Id j = triangles.Offsets[node]; j < triangles.Offsets[node + 1]; ++j)
+  for (const Id j : triangles.Row(node))
   {
-    f(VTK_TRIANGLE, 3, fc.Triangles[triangles.List[j]].data(), node);
+    f(VTK_TRIANGLE, 3, fc.Triangles[j].data(), node);
   }
-  for (Id j = tetrahedra.Offsets[node]; j < tetrahedra.Offsets[node + 1]; ++j)
+  for (const Id j : tetrahedra.Row(node))
   {
-    f(VTK_TETRA, 4, fc.Tetrahedra[tetrahedra.List[j]].data(), node);
+    f(VTK_TETRA, 4, fc.Tetrahedra[j].data(), node);
   }
 }
 
@@ -186,25 +186,6 @@ void AddStaircase(const std::vector<TopologyStep>& profile, double t, double lim
 }
 
 } // namespace
-
-CellsByNode::CellsByNode(const std::vector<Id>& cellNode, std::size_t nodes)
-{
-  this->Offsets.assign(nodes + 1, 0);
-  for (Id node : cellNode)
-  {
-    ++this->Offsets[node + 1];
-  }
-  for (std::size_t i = 0; i < nodes; ++i)
-  {
-    this->Offsets[i + 1] += this->Offsets[i];
-  }
-  this->List.resize(cellNode.size());
-  std::vector<Id> next(this->Offsets.begin(), this->Offsets.end() - 1);
-  for (std::size_t c = 0; c < cellNode.size(); ++c)
-  {
-    this->List[next[cellNode[c]]++] = static_cast<Id>(c);
-  }
-}
 
 namespace
 {
@@ -323,8 +304,8 @@ void ReconstructionGrid(const FlowComplex& fc, const std::vector<Id>& carriers,
   for (const Id node : selected)
   {
     const int own = fc.Nodes[node].Index <= 1 ? 1 : 0; // vertex or edge
-    const Id nt = triangles.Offsets[node + 1] - triangles.Offsets[node];
-    const Id nq = tetrahedra.Offsets[node + 1] - tetrahedra.Offsets[node];
+    const Id nt = triangles.RowSize(node);
+    const Id nq = tetrahedra.RowSize(node);
     cells += own + nt + nq;
     corners += own * (fc.Nodes[node].Index + 1) + 3 * nt + 4 * nq;
   }

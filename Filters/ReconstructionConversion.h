@@ -5,6 +5,7 @@
 #define ReconstructionConversion_h
 
 #include "CellHomology.h"   // core data structure
+#include "CompressedRows.h" // core data structure
 #include "FlowComplex.h"    // core data structure
 #include "Reconstruction.h" // core data structure
 
@@ -18,13 +19,8 @@ namespace flowrecon
 {
 
 /// The cells of each node: positions into a cell list (fc.Triangles or
-/// fc.Tetrahedra), grouped by node as compressed rows.
-struct CellsByNode
-{
-  std::vector<Id> Offsets, List;
-  CellsByNode() = default;
-  CellsByNode(const std::vector<Id>& cellNode, std::size_t nodes);
-};
+/// fc.Tetrahedra) grouped by node, PositionsByRow(fc.TriangleNode, nodes).
+using CellsByNode = CompressedRows<Id>;
 
 /// Port 0 (`grid`): the cells of the nodes whose carrier (CellCarriers) is in
 /// the reconstruction at `t`, over the points they use (samples keep their input

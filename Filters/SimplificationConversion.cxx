@@ -110,8 +110,8 @@ void AddSimplification(const FlowComplex& fc, const SimplificationResult& s, dou
     for (vtkIdType c = 0; c < sm->GetNumberOfCells(); ++c)
     {
       const Id node = IdValue(nodeId, c);
-      const bool none = s.OwnersBegin(node) == s.OwnersEnd(node);
-      owner->SetValue(c, s.Survives[node] ? node : (none ? -1 : *s.OwnersBegin(node)));
+      const RowRange<Id> owners = s.OwnerRow(node);
+      owner->SetValue(c, s.Survives[node] ? node : (owners.empty() ? -1 : owners[0]));
     }
     sm->GetCellData()->AddArray(owner);
   }

@@ -329,8 +329,8 @@ bool vtkFlowReconstruction::DrawGeometry(double tmax)
   }
   cache.Re.reset(); // about 1.5 KB per point; a later drawing computes it again
   flowrecon::ReleaseFreedMemory();
-  cache.TriangleGroups = flowrecon::CellsByNode(fc.TriangleNode, fc.Nodes.size());
-  cache.TetraGroups = flowrecon::CellsByNode(fc.TetrahedronNode, fc.Nodes.size());
+  cache.TriangleGroups = flowrecon::PositionsByRow(fc.TriangleNode, fc.Nodes.size());
+  cache.TetraGroups = flowrecon::PositionsByRow(fc.TetrahedronNode, fc.Nodes.size());
   cache.Full = vtkSmartPointer<vtkUnstructuredGrid>::New();
   try
   {

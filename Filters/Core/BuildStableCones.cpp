@@ -2,9 +2,8 @@
 // from the maximum over the patches that bound it (geometry builds only).
 #include "BuildPhases.h"
 
+#include "CompressedRows.h"
 #include "StableManifoldCone.h"
-
-#include <numeric>
 
 namespace flowrecon
 {
@@ -28,32 +27,23 @@ void Builder::BuildStableCones()
     }
     // The boundary patches of each maximum, in facet order (arcs are grouped by
     // lower node); fins (both flow lines here) too: see DrawStableManifolds.
-    std::vector<Id> boundaryBegin(this->Cs.Cells.size() + 1, 0), boundary;
-    for (const Arc& arc : fc.Arcs)
-    {
-      if (arc.Lower >= this->Base2 && arc.Lower < this->Base3 && arc.Upper != fc.InfinityNode)
+    const auto boundary = CompressedRows<Id>::Group(this->Cs.Cells.size(), [&](const auto& emit) {
+      for (const Arc& arc : fc.Arcs)
       {
-        ++boundaryBegin[arc.Upper - this->Base3 + 1];
+        if (arc.Lower >= this->Base2 && arc.Lower < this->Base3 && arc.Upper != fc.InfinityNode)
+        {
+          emit(arc.Upper - this->Base3, arc.Lower - this->Base2);
+        }
       }
-    }
-    std::partial_sum(boundaryBegin.begin(), boundaryBegin.end(), boundaryBegin.begin());
-    boundary.resize(static_cast<std::size_t>(boundaryBegin.back()));
-    std::vector<Id> fill(boundaryBegin.begin(), boundaryBegin.end() - 1);
-    for (const Arc& arc : fc.Arcs)
-    {
-      if (arc.Lower >= this->Base2 && arc.Lower < this->Base3 && arc.Upper != fc.InfinityNode)
-      {
-        boundary[fill[arc.Upper - this->Base3]++] = arc.Lower - this->Base2;
-      }
-    }
+    });
     ConeBoundary coneBoundary;
     for (std::size_t i = 0; i < this->Cs.Cells.size(); ++i)
     {
       const Id node = this->Base3 + static_cast<Id>(i);
       coneBoundary.Clear();
-      for (Id b = boundaryBegin[i]; b < boundaryBegin[i + 1]; ++b)
+      for (const Id b : boundary.Row(static_cast<Id>(i)))
       {
-        const std::size_t f = static_cast<std::size_t>(boundary[b]);
+        const std::size_t f = static_cast<std::size_t>(b);
         const bool fin = this->Ends[f][0] == this->Ends[f][1];
         coneBoundary.Add(fc.Triangles.data() + this->TriangleBegin[f],
           fc.Triangles.data() + this->TriangleBegin[f + 1], !fin && this->Ends[f][this->PatchFaces[f]] != node, fin);

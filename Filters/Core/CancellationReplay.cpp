@@ -84,9 +84,8 @@ void CancellationReplay::Replay(
     if (in[a->second].second % 2 == 1)
     {
       // d'y = dy + <dy, a> db over Z/2: y's incidence with each odd lower of b flips.
-      for (Id k = s.LowerOffsets[e.first]; k < s.LowerOffsets[e.first + 1]; ++k)
+      for (const Id x : RowOf(s.LowerOffsets, s.Lowers, e.first))
       {
-        const Id x = s.Lowers[k];
         const auto it = where.find(x);
         if (it == where.end())
         {

@@ -1,5 +1,6 @@
 #include "CellHomology.h"
 
+#include "CompressedRows.h"
 #include "MemoryGuard.h"
 
 #include <tbb/parallel_sort.h>
@@ -212,34 +213,21 @@ private:
   bool Cohomology;
 };
 
-/// Cofaces by rank as compressed rows: for each simplex of `lower` (by rank),
-/// the ranks in `upper` of the simplices it is a face of, sorted.
+/// Cofaces by rank: for each simplex of `lower` (by rank), the ranks in `upper`
+/// of the simplices it is a face of, increasing (they are listed by rank).
 template <int K>
-void Cofaces(const Layer<K>& upper, const Layer<K - 1>& lower, std::vector<Id>& offsets,
-  std::vector<Id>& list)
+CompressedRows<Id> Cofaces(const Layer<K>& upper, const Layer<K - 1>& lower)
 {
-  std::vector<std::pair<Id, Id>> pairs; // (face rank, coface rank)
-  pairs.reserve(K * upper.S.size());
-  for (Id r = 0; r < static_cast<Id>(upper.Order.size()); ++r)
-  {
-    const Id* faces = upper.FacesOfRank(r);
-    for (int k = 0; k < K; ++k)
+  return CompressedRows<Id>::Group(lower.S.size(), [&](const auto& emit) {
+    for (Id r = 0; r < static_cast<Id>(upper.Order.size()); ++r)
     {
-      pairs.emplace_back(faces[k], r);
+      const Id* faces = upper.FacesOfRank(r);
+      for (int k = 0; k < K; ++k)
+      {
+        emit(faces[k], r);
+      }
     }
-  }
-  tbb::parallel_sort(pairs.begin(), pairs.end());
-  offsets.assign(lower.S.size() + 1, 0);
-  list.resize(pairs.size());
-  for (std::size_t k = 0; k < pairs.size(); ++k)
-  {
-    ++offsets[pairs[k].first + 1];
-    list[k] = pairs[k].second;
-  }
-  for (std::size_t i = 0; i < lower.S.size(); ++i)
-  {
-    offsets[i + 1] += offsets[i];
-  }
+  });
 }
 
 /// The (triangle, tetrahedron) pairs by persistent cohomology: the triangles
@@ -252,8 +240,7 @@ void Cofaces(const Layer<K>& upper, const Layer<K - 1>& lower, std::vector<Id>& 
 void TrianglePairs(const Layer<4>& tets, const Layer<3>& triangles, std::vector<char>& born,
   std::vector<char>& killer, std::vector<Bar>& bars, const Progress& progress)
 {
-  std::vector<Id> offsets, list;
-  Cofaces(tets, triangles, offsets, list);
+  const CompressedRows<Id> cofaces = Cofaces(tets, triangles);
   Reducer reducer(tets.S.size(), true);
   born.assign(triangles.S.size(), 0);
   killer.assign(tets.S.size(), 0);
@@ -265,11 +252,12 @@ void TrianglePairs(const Layer<4>& tets, const Layer<3>& triangles, std::vector<
     {
       progress(0.4 + 0.3 * static_cast<double>(n - r) / static_cast<double>(n), "Betti numbers");
     }
-    if (offsets[r] == offsets[r + 1])
+    const RowRange<Id> row = cofaces.Row(r);
+    if (row.empty())
     {
       continue;
     }
-    column.assign(list.begin() + offsets[r], list.begin() + offsets[r + 1]);
+    column.assign(row.begin(), row.end());
     const Id pivot = reducer.Reduce(column);
     if (pivot >= 0)
     {

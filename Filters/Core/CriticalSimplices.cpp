@@ -1,5 +1,6 @@
 #include "CriticalSimplices.h"
 
+#include "CompressedRows.h"
 #include "Driver.h"
 #include "FastPredicates.h"
 #include "ParallelSlices.h"
@@ -42,26 +43,20 @@ std::int32_t VertexId(const CellHandle c, int i)
 constexpr int EdgePairs[6][2] = { { 0, 1 }, { 0, 2 }, { 0, 3 }, { 1, 2 }, { 1, 3 }, { 2, 3 } };
 constexpr Id Slice = Id(1) << 20; // cells per progress report
 
-/// All Delaunay edges (u < v) as adjacency lists: the v of vertex u are
-/// Neighbours[Offsets[u] .. Offsets[u+1]), sorted.
-struct EdgeLists
-{
-  std::vector<Id> Offsets;
-  std::vector<std::int32_t> Neighbours; // 32-bit: the largest table here
+/// All Delaunay edges (u < v) as adjacency lists: row u holds the v, sorted.
+/// 32-bit values: the largest table here.
+using EdgeLists = CompressedRows<std::int32_t>;
 
-  /// Position of edge uv in Neighbours (which must hold it).
-  Id Position(Id u, Id v) const
+/// Position of edge uv in lists.Values (which must hold it).
+Id EdgePosition(const EdgeLists& lists, Id u, Id v)
+{
+  if (u > v)
   {
-    if (u > v)
-    {
-      std::swap(u, v);
-    }
-    const auto first = this->Neighbours.begin() + this->Offsets[u];
-    return std::lower_bound(first, this->Neighbours.begin() + this->Offsets[u + 1],
-             static_cast<std::int32_t>(v)) -
-      this->Neighbours.begin();
+    std::swap(u, v);
   }
-};
+  const RowRange<std::int32_t> row = lists.Row(u);
+  return std::lower_bound(row.begin(), row.end(), static_cast<std::int32_t>(v)) - lists.Values.data();
+}
 
 /// Collected from the cells (CGAL's edge iterator circulates around every edge;
 /// this is much cheaper).
@@ -91,12 +86,12 @@ void BuildEdgeLists(const Triangulation& tri, EdgeLists& lists, const Progress& 
     lists.Offsets[u + 1] = lists.Offsets[u] + fill[u + 1].load(std::memory_order_relaxed);
     fill[u].store(lists.Offsets[u], std::memory_order_relaxed);
   }
-  lists.Neighbours.resize(static_cast<std::size_t>(lists.Offsets[m]));
+  lists.Values.resize(static_cast<std::size_t>(lists.Offsets[m]));
   ParallelSlices(nc, Slice, progress, 0.22, 0.24, "critical points", [&](Id first, Id last) {
     for (Id id = first; id < last; ++id)
     {
       forEachEdge(id, [&](Id u, Id v) {
-        lists.Neighbours[fill[u].fetch_add(1, std::memory_order_relaxed)] = static_cast<std::int32_t>(v);
+        lists.Values[fill[u].fetch_add(1, std::memory_order_relaxed)] = static_cast<std::int32_t>(v);
       });
     }
   });
@@ -105,8 +100,8 @@ void BuildEdgeLists(const Triangulation& tri, EdgeLists& lists, const Progress& 
   tbb::parallel_for(tbb::blocked_range<Id>(0, m), [&](const tbb::blocked_range<Id>& r) {
     for (Id u = r.begin(); u != r.end(); ++u)
     {
-      const auto first = lists.Neighbours.begin() + lists.Offsets[u];
-      const auto last = lists.Neighbours.begin() + lists.Offsets[u + 1];
+      const auto first = lists.Values.begin() + lists.Offsets[u];
+      const auto last = lists.Values.begin() + lists.Offsets[u + 1];
       std::sort(first, last);
       length[u] = std::unique(first, last) - first;
     }
@@ -115,13 +110,13 @@ void BuildEdgeLists(const Triangulation& tri, EdgeLists& lists, const Progress& 
   Id write = 0;
   for (Id u = 0; u < m; ++u)
   {
-    const auto first = lists.Neighbours.begin() + lists.Offsets[u];
+    const auto first = lists.Values.begin() + lists.Offsets[u];
     lists.Offsets[u] = write;
-    std::copy(first, first + length[u], lists.Neighbours.begin() + write);
+    std::copy(first, first + length[u], lists.Values.begin() + write);
     write += length[u];
   }
   lists.Offsets[m] = write;
-  lists.Neighbours.resize(static_cast<std::size_t>(write)); // no shrink: short-lived
+  lists.Values.resize(static_cast<std::size_t>(write)); // no shrink: short-lived
 }
 
 /// What one slice of cells contributes; slices are merged in order. Compact
@@ -195,7 +190,7 @@ CriticalSimplices FindCriticalSimplices(const Triangulation& tri, const Progress
   // Gabriel; every link vertex of an edge is the third vertex of one of its
   // facets, so the edges never marked are exactly the Gabriel edges (CGAL's
   // is_Gabriel, in one pass). The same pass finds the self-centred cells.
-  std::vector<std::atomic<std::uint8_t>> notGabriel(edges.Neighbours.size());
+  std::vector<std::atomic<std::uint8_t>> notGabriel(edges.Values.size());
   const Id nc = tri.NumberOfCells();
   const Id grain = 4096;
   std::vector<SliceResult> results(static_cast<std::size_t>((nc + grain - 1) / grain));
@@ -229,7 +224,7 @@ CriticalSimplices FindCriticalSimplices(const Triangulation& tri, const Progress
           }
           if (obtuse >= 0)
           {
-            notGabriel[edges.Position(v[(obtuse + 1) % 3]->info(), v[(obtuse + 2) % 3]->info())].store(
+            notGabriel[EdgePosition(edges, v[(obtuse + 1) % 3]->info(), v[(obtuse + 2) % 3]->info())].store(
               1, std::memory_order_relaxed);
             continue; // an obtuse facet is not self-centred
           }
@@ -333,7 +328,7 @@ CriticalSimplices FindCriticalSimplices(const Triangulation& tri, const Progress
       {
         if (!notGabriel[k].load(std::memory_order_relaxed))
         {
-          cs.Edges[next++] = { { u, edges.Neighbours[k] } };
+          cs.Edges[next++] = { { u, edges.Values[k] } };
         }
       }
     }

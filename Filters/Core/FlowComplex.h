@@ -4,6 +4,7 @@
 #ifndef flowrecon_FlowComplex_h
 #define flowrecon_FlowComplex_h
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -90,6 +91,23 @@ inline bool FiltrationLess(const std::vector<Node>& nodes, Id a, Id b)
     return x.Value < y.Value;
   }
   return x.Index != y.Index ? x.Index < y.Index : a < b;
+}
+
+/// The persistence ratio V(upper) / V(lower) of an arc or a pair (paper §3):
+/// +inf when the lower value is not positive (index-0 nodes have value 0).
+/// Not clamped: the queues of simplification and reconstruction take it as it
+/// is, so that rounding of nearly tied values reorders nothing.
+inline double PersistenceRatio(double upper, double lower)
+{
+  return lower > 0 ? upper / lower : HUGE_VAL;
+}
+
+/// The same, never below 1: ratios are >= 1 in exact arithmetic, and rounding
+/// of nearly tied values (or a shorter sibling, for horizontal extension) must
+/// not show one below (the arcs' Ratio array, horizontal priorities).
+inline double PersistenceRatioAtLeastOne(double upper, double lower)
+{
+  return std::max(1.0, PersistenceRatio(upper, lower));
 }
 
 struct FlowComplex

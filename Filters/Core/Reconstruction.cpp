@@ -1,5 +1,6 @@
 #include "Reconstruction.h"
 
+#include "CompressedRows.h"
 #include "HasseDiagram.h"
 
 #include <algorithm>
@@ -29,49 +30,35 @@ void CheckArcs(const std::vector<Node>& nodes, const std::vector<Arc>& arcs,
   }
 }
 
-/// Static In/Out lists (compressed rows); arcs of multiplicity 0 are not arcs.
-/// Even arcs are kept: the reconstruction follows incidences of the Hasse
-/// diagram (an orbit from a to b exists), not their parity.
+/// Static In/Out lists; arcs of multiplicity 0 are not arcs. Even arcs are
+/// kept: the reconstruction follows incidences of the Hasse diagram (an orbit
+/// from a to b exists), not their parity. Rows are sorted: the visiting order,
+/// hence which sponsor wins a tie, does not depend on the order of the arcs.
 struct Adjacency
 {
-  std::vector<Id> InOffsets, InNodes, OutOffsets, OutNodes;
+  CompressedRows<std::int32_t> In, Out;
 
   Adjacency(std::size_t n, const std::vector<Arc>& arcs)
-    : InOffsets(n + 1, 0)
-    , OutOffsets(n + 1, 0)
+    : In(Rows(n, arcs, &Arc::Upper, &Arc::Lower))
+    , Out(Rows(n, arcs, &Arc::Lower, &Arc::Upper))
   {
-    for (const Arc& a : arcs)
-    {
-      if (a.Multiplicity > 0)
+  }
+
+private:
+  static CompressedRows<std::int32_t> Rows(
+    std::size_t n, const std::vector<Arc>& arcs, std::int32_t Arc::*row, std::int32_t Arc::*value)
+  {
+    auto rows = CompressedRows<std::int32_t>::Group(n, [&](const auto& emit) {
+      for (const Arc& a : arcs)
       {
-        ++this->InOffsets[a.Upper + 1];
-        ++this->OutOffsets[a.Lower + 1];
+        if (a.Multiplicity > 0)
+        {
+          emit(a.*row, a.*value);
+        }
       }
-    }
-    for (std::size_t i = 0; i < n; ++i)
-    {
-      this->InOffsets[i + 1] += this->InOffsets[i];
-      this->OutOffsets[i + 1] += this->OutOffsets[i];
-    }
-    this->InNodes.resize(static_cast<std::size_t>(this->InOffsets[n]));
-    this->OutNodes.resize(static_cast<std::size_t>(this->OutOffsets[n]));
-    std::vector<Id> in(this->InOffsets.begin(), this->InOffsets.end() - 1);
-    std::vector<Id> out(this->OutOffsets.begin(), this->OutOffsets.end() - 1);
-    for (const Arc& a : arcs)
-    {
-      if (a.Multiplicity > 0)
-      {
-        this->InNodes[in[a.Upper]++] = a.Lower;
-        this->OutNodes[out[a.Lower]++] = a.Upper;
-      }
-    }
-    // Sorted rows: the visiting order, hence which sponsor wins a tie, does not
-    // depend on the order of the arcs.
-    for (std::size_t i = 0; i < n; ++i)
-    {
-      std::sort(this->InNodes.begin() + this->InOffsets[i], this->InNodes.begin() + this->InOffsets[i + 1]);
-      std::sort(this->OutNodes.begin() + this->OutOffsets[i], this->OutNodes.begin() + this->OutOffsets[i + 1]);
-    }
+    });
+    rows.SortRows();
+    return rows;
   }
 };
 
@@ -198,9 +185,9 @@ private:
       {
         this->FetchLateArcs(c);
       }
-      for (Id k = g.InOffsets[c]; k < g.InOffsets[c + 1]; ++k)
+      for (const Id x : g.In.Row(c))
       {
-        this->Consider(g.InNodes[k], 1, 0, Extension::Regularization, c);
+        this->Consider(x, 1, 0, Extension::Regularization, c);
       }
     }
     const double vc = this->Nodes[c].Value;
@@ -209,10 +196,9 @@ private:
     {
       return;
     }
-    for (Id k = g.OutOffsets[c]; k < g.OutOffsets[c + 1]; ++k)
+    for (const Id d : g.Out.Row(c))
     {
-      const Id d = g.OutNodes[k];
-      this->Consider(d, this->Nodes[d].Value / vc, 1, Extension::Upflow, c);
+      this->Consider(d, PersistenceRatio(this->Nodes[d].Value, vc), 1, Extension::Upflow, c);
     }
     // "Index one nodes sponsor nodes with the same dimension": siblings through
     // a common index-0 ancestor. A shorter sibling would give a ratio below 1;
@@ -222,15 +208,13 @@ private:
     {
       return;
     }
-    for (Id k = g.InOffsets[c]; k < g.InOffsets[c + 1]; ++k)
+    for (const Id b : g.In.Row(c))
     {
-      const Id b = g.InNodes[k];
-      for (Id j = g.OutOffsets[b]; j < g.OutOffsets[b + 1]; ++j)
+      for (const Id d : g.Out.Row(b))
       {
-        const Id d = g.OutNodes[j];
         if (d != c)
         {
-          this->Consider(d, std::max(1.0, this->Nodes[d].Value / vc), 1, Extension::Horizontal, c);
+          this->Consider(d, PersistenceRatioAtLeastOne(this->Nodes[d].Value, vc), 1, Extension::Horizontal, c);
         }
       }
     }
@@ -242,9 +226,8 @@ private:
   {
     const Adjacency& g = this->Graph;
     std::vector<Id> ask;
-    for (Id k = g.InOffsets[c]; k < g.InOffsets[c + 1]; ++k)
+    for (const Id y : g.In.Row(c))
     {
-      const Id y = g.InNodes[k];
       if (this->Late->Deferred[y] && this->Survives[y] && this->Result.Nodes[y].Step < 0 &&
         this->LateIn.find(y) == this->LateIn.end())
       {
@@ -459,12 +442,12 @@ std::vector<Id> CellCarriers(
       carrier[i] = steps[i].Step >= 0 ? static_cast<Id>(i) : -1;
       continue;
     }
-    for (const Id* o = simplification->OwnersBegin(i); o != simplification->OwnersEnd(i); ++o)
+    for (const Id o : simplification->OwnerRow(static_cast<Id>(i)))
     {
       const Id c = carrier[i];
-      if (steps[*o].Step >= 0 && (c < 0 || steps[*o].Step < steps[c].Step))
+      if (steps[o].Step >= 0 && (c < 0 || steps[o].Step < steps[c].Step))
       {
-        carrier[i] = *o;
+        carrier[i] = o;
       }
     }
   }

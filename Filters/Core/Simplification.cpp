@@ -121,7 +121,7 @@ private:
     {
       return;
     }
-    const double ratio = b.Value / a.Value;
+    const double ratio = PersistenceRatio(b.Value, a.Value);
     // A pair above the threshold is never cancelled (its ratio depends on its
     // two nodes only): keeping it out of the queue keeps the queue small.
     if (std::isfinite(ratio) && ratio <= this->Threshold)
@@ -251,9 +251,9 @@ void ResolveOwners(SimplificationResult& result, const std::vector<std::pair<Id,
   for (std::size_t p = pairs; p-- > 0;)
   {
     merged.clear();
-    for (Id k = result.DirectOwnerOffsets[p]; k < result.DirectOwnerOffsets[p + 1]; ++k)
+    for (const Id d : RowOf(result.DirectOwnerOffsets, result.DirectOwners, static_cast<Id>(p)))
     {
-      add(result.DirectOwners[k]);
+      add(d);
     }
     auto first = std::lower_bound(more.begin(), extraBegin, std::make_pair(static_cast<Id>(p), Id(-1)));
     for (auto e = first; e != extraBegin; ++e)

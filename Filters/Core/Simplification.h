@@ -3,6 +3,7 @@
 #ifndef flowrecon_Simplification_h
 #define flowrecon_Simplification_h
 
+#include "CompressedRows.h"
 #include "FlowComplex.h"
 #include "Progress.h"
 
@@ -34,6 +35,8 @@ struct SimplificationResult
   std::vector<Arc> Arcs;
   /// In the order they were made (non-decreasing Ratio).
   std::vector<CancelledPair> Pairs;
+  /// The three compressed rows below are kept as named pairs of vectors (the
+  /// names of the stored arrays, SimplificationConversion.h); RowOf reads a row.
   /// Owners of the stable manifold of each cancelled node: the surviving nodes
   /// it was redistributed to, transitively (compressed rows: node i owns nothing
   /// and has no owner when it survives). May contain the maximum at infinity,
@@ -51,11 +54,11 @@ struct SimplificationResult
   std::vector<Id> LowerOffsets, Lowers;
   bool HasLowers = false; ///< whether Lowers were recorded
 
-  const Id* OwnersBegin(Id node) const { return this->Owners.data() + this->OwnerOffsets[node]; }
-  const Id* OwnersEnd(Id node) const { return this->Owners.data() + this->OwnerOffsets[node + 1]; }
+  RowRange<Id> OwnerRow(Id node) const { return RowOf(this->OwnerOffsets, this->Owners, node); }
   std::vector<Id> OwnersOf(Id node) const
   {
-    return std::vector<Id>(this->OwnersBegin(node), this->OwnersEnd(node));
+    const RowRange<Id> row = this->OwnerRow(node);
+    return std::vector<Id>(row.begin(), row.end());
   }
 };
 

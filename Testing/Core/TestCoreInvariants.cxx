@@ -6,6 +6,7 @@
 #include "Check.h"
 #include "Clouds.h"
 
+#include "CompressedRows.h"
 #include "FlowComplexBuilder.h"
 #include "Persistence.h"
 
@@ -312,8 +313,39 @@ void CheckExactAgreement(const std::string& name, const Cloud& cloud)
 
 } // namespace
 
+/// The one compressed-rows type: stable grouping, empty rows, sorting; and the
+/// one persistence ratio with its clamping.
+void CheckDataModel()
+{
+  using Rows = CompressedRows<int>;
+  const std::vector<std::pair<Id, int>> entries = { { 2, 7 }, { 0, 9 }, { 2, 3 }, { 3, 5 }, { 0, 1 } };
+  Rows rows = Rows::Group(5, [&](const auto& emit) {
+    for (const auto& e : entries)
+      emit(e.first, e.second);
+  });
+  CHECK(rows.Offsets == (std::vector<Id>{ 0, 2, 2, 4, 5, 5 }));
+  CHECK(rows.Values == (std::vector<int>{ 9, 1, 7, 3, 5 }));
+  CHECK(rows.RowCount() == 5 && rows.ValueCount() == 5 && rows.RowSize(2) == 2);
+  CHECK(rows.Row(1).empty() && rows.Row(4).empty() && rows.Row(3).size() == 1 && rows.Row(3)[0] == 5);
+  rows.SortRows();
+  CHECK(rows.Values == (std::vector<int>{ 1, 9, 3, 7, 5 }));
+  const Rows none = Rows::Group(0, [](const auto&) {});
+  CHECK(none.Offsets == std::vector<Id>{ 0 } && none.Values.empty() && none.RowCount() == 0);
+  const CompressedRows<Id> byRow = PositionsByRow({ 1, 0, 1, 1 }, 3);
+  CHECK(byRow.Offsets == (std::vector<Id>{ 0, 1, 4, 4 }));
+  CHECK(byRow.Values == (std::vector<Id>{ 1, 0, 2, 3 }));
+  const std::vector<Id> values(byRow.Row(1).begin(), byRow.Row(1).end());
+  CHECK(values == (std::vector<Id>{ 0, 2, 3 }));
+
+  CHECK(PersistenceRatio(3, 2) == 1.5 && PersistenceRatio(0.5, 1) == 0.5);
+  CHECK(PersistenceRatio(1, 0) == HUGE_VAL && PersistenceRatio(1, std::nan("")) == HUGE_VAL);
+  CHECK(PersistenceRatioAtLeastOne(0.5, 1) == 1 && PersistenceRatioAtLeastOne(3, 2) == 1.5);
+  CHECK(PersistenceRatioAtLeastOne(1, 0) == HUGE_VAL && PersistenceRatioAtLeastOne(HUGE_VAL, 2) == HUGE_VAL);
+}
+
 int main()
 {
+  CheckDataModel();
   for (std::uint64_t seed = 1; seed <= 6; ++seed)
   {
     CheckComplex("cube " + std::to_string(seed), Cube(20 + 40 * static_cast<int>(seed), seed), true);
