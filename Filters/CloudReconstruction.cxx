@@ -65,19 +65,22 @@ CloudReconstructionReport ReconstructCloud(const std::vector<Point3>& samples,
   const CellsByNode tetrahedra = PositionsByRow(fc.TetrahedronNode, fc.Nodes.size());
   std::vector<Bar> bars;
   std::vector<Id> cellNodes;
-  try
+  if (!settings.Topology)
   {
-    if (!settings.Topology)
-    {
-      throw InputError("not asked for");
-    }
-    bars = CellBarcode(ReconstructionCells(fc, r.Carriers, r.Run, tdraw, triangles, tetrahedra,
-                         &cellNodes, settings.MaximumTopologyCells),
-      progress.Range(0.9, 0.95), settings.MaximumTopologyCells);
+    report.TopologyError = "not asked for";
   }
-  catch (const InputError& e)
+  else
   {
-    report.TopologyError = e.what(); // the reconstruction is still written
+    try
+    {
+      bars = CellBarcode(ReconstructionCells(fc, r.Carriers, r.Run, tdraw, triangles, tetrahedra,
+                           &cellNodes, settings.MaximumTopologyCells),
+        progress.Range(0.9, 0.95), settings.MaximumTopologyCells);
+    }
+    catch (const InputError& e)
+    {
+      report.TopologyError = e.what(); // the reconstruction is still written
+    }
   }
   phaseDone("Betti numbers");
   progress(0.95, "output");

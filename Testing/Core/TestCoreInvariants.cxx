@@ -9,6 +9,7 @@
 #include "CompressedRows.h"
 #include "FlowComplexBuilder.h"
 #include "Persistence.h"
+#include "ProfileJumps.h"
 
 #include <algorithm>
 #include <cmath>
@@ -315,6 +316,22 @@ void CheckExactAgreement(const std::string& name, const Cloud& cloud)
 
 /// The one compressed-rows type: stable grouping, empty rows, sorting; and the
 /// one persistence ratio with its clamping.
+// The profile's largest jumps (paper §5.2), on a profile worked by hand: rises
+// 0.2 (step 1), 0.8 (step 2), 0 (step 3), 1.4 (step 4), 0.8 (step 5).
+void CheckProfileJumps()
+{
+  const std::vector<double> t = { 1.0, 1.2, 2.0, 2.0, 3.4, 4.2 };
+  const std::vector<ProfileJump> two = LargestJumps(t, 2);
+  CHECK(two.size() == 2 && two[0].Step == 4 && two[0].Before == 2.0 && two[0].After == 3.4);
+  // 0.8 twice (steps 2 and 5, up to rounding): the largest first.
+  CHECK(two[1].Step == ((t[2] - t[1]) >= (t[5] - t[4]) ? 2u : 5u));
+  const std::vector<ProfileJump> all = LargestJumps(t, 10);
+  CHECK(all.size() == 4); // the flat step 3 is no jump
+  CHECK(all.back().Step == 1 && all.back().Before == 1.0 && all.back().After == 1.2);
+  CHECK(LargestJumps({ 1.5 }, 3).empty() && LargestJumps({}, 3).empty());
+  CHECK(LargestJumps({ 1, 2, 3 }, 2)[0].Step == 1); // equal rises: the earlier step
+}
+
 void CheckDataModel()
 {
   using Rows = CompressedRows<int>;
@@ -346,6 +363,7 @@ void CheckDataModel()
 int main()
 {
   CheckDataModel();
+  CheckProfileJumps();
   for (std::uint64_t seed = 1; seed <= 6; ++seed)
   {
     CheckComplex("cube " + std::to_string(seed), Cube(20 + 40 * static_cast<int>(seed), seed), true);
