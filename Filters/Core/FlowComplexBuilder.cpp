@@ -170,7 +170,12 @@ FlowComplex BuildFlowComplex(const std::vector<Point3>& points, const BuildOptio
       first.Report = [&](double f, const char* phase) { progress.Report(0.7 * f, phase); };
       second.Report = [&](double f, const char* phase) { progress.Report(0.7 + 0.3 * f, phase); };
     }
-    FlowComplex fc = BuildFlowComplex(points, hasse, first);
+    // The build's triangulation is kept for the drawing when there is one: the
+    // drawing would otherwise compute it again (a quarter of a surface's build),
+    // and the kept one costs no more than that second one at the drawing's peak.
+    std::unique_ptr<Retriangulation> kept;
+    FlowComplex fc = BuildFlowComplex(
+      points, hasse, first, options.MaximumGeometryCells > 0 ? &kept : nullptr);
     std::vector<Id> counts = StableManifoldCellCounts(fc.Nodes, fc.Arcs);
     for (const Id node : fc.DeferredPatches)
     {
@@ -180,7 +185,7 @@ FlowComplex BuildFlowComplex(const std::vector<Point3>& points, const BuildOptio
     }
     const std::vector<Id> draw = NodesWithinBudget(fc.Nodes, counts, options.MaximumGeometryCells);
     const auto t = Clock::now();
-    DrawStableManifolds(points, options, draw, fc, second, "lower the cell budget");
+    DrawStableManifolds(points, options, draw, fc, second, "lower the cell budget", nullptr, kept.get());
     fc.Time.StableManifolds += Seconds(t);
     fc.Time.Total = Seconds(start);
     progress(1.0, "done");
