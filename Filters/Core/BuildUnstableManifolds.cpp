@@ -124,11 +124,28 @@ void Builder::TraceUnstableManifolds()
     {
       if (record)
       {
+        // The walks in parallel first; the polylines are then gathered in facet
+        // order (shared tails belong to the first line that reaches them).
+        std::vector<Id> starts;
+        starts.reserve(2 * this->Cs.Facets.size());
+        for (const auto& facet : this->Cs.Facets)
+        {
+          const CellHandle cell = this->Tri->Cell(facet.Cell);
+          for (const CellHandle side : { cell, cell->neighbor(facet.Opposite) })
+          {
+            if (!this->Tri->Dt().is_infinite(side))
+            {
+              starts.push_back(this->Tri->CellId(side));
+            }
+          }
+        }
+        forest.PrecomputeSteps(starts, this->Report, 0.7, 0.85);
+        std::vector<Id>().swap(starts);
         for (std::size_t i = 0; i < this->Cs.Facets.size(); ++i)
         {
-          if ((i & 0x3FF) == 0)
+          if ((i & 0xFFFF) == 0)
           {
-            this->Report(0.7 + 0.2 * i / nf, "unstable manifolds");
+            this->Report(0.85 + 0.05 * i / nf, "unstable manifolds");
           }
           flowLines(i);
         }

@@ -2,7 +2,10 @@
 
 #include "VoronoiWalk.h"
 #include "Driver.h"
+#include "ParallelSlices.h"
 #include "Progress.h"
+
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <cmath>
@@ -137,6 +140,25 @@ SuccessorForest::SuccessorForest(const Triangulation& tri,
   }
 }
 
+Point3 SuccessorForest::CircumcentreOf(Id cell) const
+{
+  const std::array<Id, 4> v = this->Tri.SortedVertices(this->Tri.Cell(cell));
+  // In doubles, for drawing only (the flow lines' targets are exact). A flat
+  // cell can cancel the denominator to 0 (found by fuzzing: CGAL's own
+  // construction asserts then): its point is left out of the polyline, as
+  // non-finite points are (see the builder).
+  const KPoint& p = this->Tri.KCoord(v[0]);
+  const Kernel::Vector_3 a = this->Tri.KCoord(v[1]) - p, b = this->Tri.KCoord(v[2]) - p,
+                         c = this->Tri.KCoord(v[3]) - p;
+  const double den = 2 * CGAL::determinant(a, b, c);
+  const Kernel::Vector_3 num = a.squared_length() * CGAL::cross_product(b, c) +
+    b.squared_length() * CGAL::cross_product(c, a) + c.squared_length() * CGAL::cross_product(a, b);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  return den != 0 && std::isfinite(den)
+    ? Point3{ { p.x() + num.x() / den, p.y() + num.y() / den, p.z() + num.z() / den } }
+    : Point3{ { nan, nan, nan } };
+}
+
 Point3 SuccessorForest::Circumcentre(Id cell)
 {
   if (this->Centres.empty())
@@ -146,24 +168,59 @@ Point3 SuccessorForest::Circumcentre(Id cell)
   }
   if (!this->HasCentre[cell])
   {
-    const std::array<Id, 4> v = this->Tri.SortedVertices(this->Tri.Cell(cell));
-    // In doubles, for drawing only (the flow lines' targets are exact). A flat
-    // cell can cancel the denominator to 0 (found by fuzzing: CGAL's own
-    // construction asserts then): its point is left out of the polyline, as
-    // non-finite points are (see the builder).
-    const KPoint& p = this->Tri.KCoord(v[0]);
-    const Kernel::Vector_3 a = this->Tri.KCoord(v[1]) - p, b = this->Tri.KCoord(v[2]) - p,
-                           c = this->Tri.KCoord(v[3]) - p;
-    const double den = 2 * CGAL::determinant(a, b, c);
-    const Kernel::Vector_3 num = a.squared_length() * CGAL::cross_product(b, c) +
-      b.squared_length() * CGAL::cross_product(c, a) + c.squared_length() * CGAL::cross_product(a, b);
-    const double nan = std::numeric_limits<double>::quiet_NaN();
-    this->Centres[cell] = den != 0 && std::isfinite(den)
-      ? Point3{ { p.x() + num.x() / den, p.y() + num.y() / den, p.z() + num.z() / den } }
-      : Point3{ { nan, nan, nan } };
+    this->Centres[cell] = this->CircumcentreOf(cell);
     this->HasCentre[cell] = true;
   }
   return this->Centres[cell];
+}
+
+void SuccessorForest::PrecomputeSteps(
+  const std::vector<Id>& starts, const Progress& progress, double from, double to)
+{
+  if (!this->Record)
+  {
+    throw std::logic_error("PrecomputeSteps is for forests that record polylines");
+  }
+  const std::size_t slots = static_cast<std::size_t>(tbb::this_task_arena::max_concurrency());
+  if (slots > std::numeric_limits<std::uint16_t>::max())
+  {
+    throw std::logic_error("too many threads for the flow-line buffers");
+  }
+  if (this->Paths.size() < slots)
+  {
+    this->Paths.resize(slots);
+  }
+  // 0: free, 1: claimed. A chain stops at a cell another thread claimed: that
+  // thread follows the rest of it.
+  std::vector<std::atomic<std::int8_t>> claimed(this->Steps.size());
+  for (std::size_t c = 0; c < claimed.size(); ++c)
+  {
+    claimed[c].store(this->Steps[c].Kind == Unknown ? 0 : 1, std::memory_order_relaxed);
+  }
+  const Id n = static_cast<Id>(starts.size());
+  ParallelSlices(n, Id(1) << 16, progress, from, to, "unstable manifolds", [&](Id first, Id last) {
+    const std::size_t buffer = static_cast<std::size_t>(tbb::this_task_arena::current_thread_index());
+    for (Id k = first; k < last; ++k)
+    {
+      Id id = starts[k];
+      for (std::size_t guard = 0; guard <= this->Steps.size(); ++guard)
+      {
+        std::int8_t expected = 0;
+        if (!claimed[id].compare_exchange_strong(expected, 1, std::memory_order_relaxed))
+        {
+          break;
+        }
+        // Only this thread writes Steps[id]; readers come after the loop.
+        const Step step = this->ComputeNext(id, buffer);
+        this->Steps[id] = step;
+        if (step.Kind != ToCell)
+        {
+          break;
+        }
+        id = step.Target;
+      }
+    }
+  });
 }
 
 const SuccessorForest::Step& SuccessorForest::Next(Id cell)
@@ -176,14 +233,20 @@ const SuccessorForest::Step& SuccessorForest::Next(Id cell)
   return step;
 }
 
-SuccessorForest::Step SuccessorForest::ComputeNext(Id id)
+SuccessorForest::Step SuccessorForest::ComputeNext(Id id, std::size_t buffer)
 {
-  if (this->Paths.size() >= std::numeric_limits<std::uint32_t>::max())
+  if (this->Record && this->Paths.empty())
+  {
+    this->Paths.resize(1);
+  }
+  std::vector<Point3>* paths = this->Record ? &this->Paths[buffer] : nullptr;
+  if (paths && paths->size() >= std::numeric_limits<std::uint32_t>::max())
   {
     throw std::runtime_error("too many unstable-manifold points to record");
   }
   Step step;
-  step.PathBegin = static_cast<std::uint32_t>(this->Paths.size());
+  step.Buffer = static_cast<std::uint16_t>(buffer);
+  step.PathBegin = paths ? static_cast<std::uint32_t>(paths->size()) : 0;
   if (this->MaximumOfCell[id] >= 0)
   {
     step.Kind = ToMaximum;
@@ -213,10 +276,9 @@ SuccessorForest::Step SuccessorForest::ComputeNext(Id id)
       }
       step.Kind = ToInfinity;
       step.Target = static_cast<std::int32_t>(this->Infinity);
-      if (this->Record)
+      if (paths)
       {
-        this->Paths.push_back(
-          Along(this->Circumcentre(id), { { n.x(), n.y(), n.z() } }, this->Stub));
+        paths->push_back(Along(this->CircumcentreOf(id), { { n.x(), n.y(), n.z() } }, this->Stub));
         step.PathCount = 1;
       }
       return step;
@@ -266,14 +328,11 @@ SuccessorForest::Step SuccessorForest::ComputeNext(Id id)
     step.Target = static_cast<std::int32_t>(end.Cell < 0 ? this->Infinity : end.Cell);
     return step;
   }
-  this->Paths.insert(this->Paths.end(), end.Points.begin(), end.Points.end());
+  paths->insert(paths->end(), end.Points.begin(), end.Points.end());
   if (end.Cell < 0)
   {
-    if (this->Record)
-    {
-      const Point3 from = end.Points.empty() ? this->Circumcentre(id) : end.Points.back();
-      this->Paths.push_back(Along(from, end.Escape, this->Stub));
-    }
+    const Point3 from = end.Points.empty() ? this->CircumcentreOf(id) : end.Points.back();
+    paths->push_back(Along(from, end.Escape, this->Stub));
     step.Kind = ToInfinity;
     step.Target = static_cast<std::int32_t>(this->Infinity);
   }
@@ -282,7 +341,7 @@ SuccessorForest::Step SuccessorForest::ComputeNext(Id id)
     step.Kind = ToCell;
     step.Target = static_cast<std::int32_t>(end.Cell);
   }
-  step.PathCount = static_cast<std::uint32_t>(this->Paths.size() - step.PathBegin);
+  step.PathCount = static_cast<std::uint32_t>(paths->size() - step.PathBegin);
   return step;
 }
 
@@ -338,8 +397,9 @@ void SuccessorForest::AppendPath(Id cell, std::vector<Point3>& out, bool shareTa
       this->Drawn[id] = true;
     }
     const Step& step = this->Next(id);
-    out.insert(out.end(), this->Paths.begin() + step.PathBegin,
-      this->Paths.begin() + step.PathBegin + step.PathCount);
+    const std::vector<Point3>& paths = this->Paths[step.Buffer];
+    out.insert(out.end(), paths.begin() + step.PathBegin,
+      paths.begin() + step.PathBegin + step.PathCount);
     if (step.Kind == ToMaximum || step.Kind == ToInfinity)
     {
       return; // c_T of a maximum is already in the polyline

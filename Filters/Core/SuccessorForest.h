@@ -6,6 +6,7 @@
 #ifndef flowrecon_SuccessorForest_h
 #define flowrecon_SuccessorForest_h
 
+#include "Progress.h"
 #include "Triangulation.h"
 
 #include <atomic>
@@ -39,6 +40,13 @@ public:
   /// Circumcentre of a finite cell (for drawing; cached).
   Point3 Circumcentre(Id cell);
 
+  /// Recording forests: NEXT of every cell on the flow lines from the Voronoi
+  /// vertices of `starts` (finite cell ids), computed in parallel, so that
+  /// Root and AppendPath afterwards only read them. The walks are what costs;
+  /// each cell's is computed once, by the thread that claims it first.
+  void PrecomputeSteps(const std::vector<Id>& starts, const Progress& progress, double from,
+    double to);
+
   Id ExactFallbacks() const { return this->Fallbacks.load(); }
 
 private:
@@ -53,13 +61,16 @@ private:
   struct Step
   {
     std::int32_t Target = -1;     // node id (ToMaximum) or cell id (ToCell)
-    std::uint32_t PathBegin = 0;  // into Paths: walk points (and the stub for ToInfinity)
+    std::uint32_t PathBegin = 0;  // into Paths[Buffer]: walk points (and the stub for ToInfinity)
     std::uint32_t PathCount = 0;
     std::int8_t Kind = Unknown;
+    std::uint16_t Buffer = 0;     // which thread's buffer holds the points
   };
   const Step& Next(Id cell);
-  /// NEXT(cell); appends its walk points to Paths when recording.
-  Step ComputeNext(Id cell);
+  /// NEXT(cell); appends its walk points to Paths[buffer] when recording.
+  Step ComputeNext(Id cell, std::size_t buffer = 0);
+  /// The double circumcentre of a finite cell, uncached (any thread).
+  Point3 CircumcentreOf(Id cell) const;
 
   const Triangulation& Tri;
   const std::vector<std::int32_t>& MaximumOfCell;
@@ -70,7 +81,7 @@ private:
   std::vector<Step> Steps; // memoised NEXT, only when recording
   std::vector<std::atomic<std::int32_t>> Roots;
   std::atomic<Id> Fallbacks{ 0 };
-  std::vector<Point3> Paths;
+  std::vector<std::vector<Point3>> Paths; // one buffer per thread slot
   std::vector<Point3> Centres;
   std::vector<bool> HasCentre, Drawn;
 };
