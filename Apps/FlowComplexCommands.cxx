@@ -110,6 +110,7 @@ int RunInfo(const Arguments& args)
   {
     FlowComplexOptions options = FlowComplexOptionsOf(args);
     options.Stable = false; // info prints no geometry
+    options.Unstable = false;
     complex = ComputeFlowComplex(args.Input, options);
   }
   vtkFieldData* fd = CriticalPointsBlock(complex)->GetFieldData();

@@ -2,6 +2,7 @@
 
 #include "VoronoiWalk.h"
 #include "Driver.h"
+#include "DrawingBox.h"
 #include "ParallelSlices.h"
 #include "Progress.h"
 
@@ -42,7 +43,7 @@ struct WalkEnd
 // an acute triangle to a Voronoi vertex, or continues in another Voronoi facet.
 template <class FT>
 WalkEnd FacetWalk(const Triangulation& tri, EdgePoint<FT> x, Id a, Id b, std::vector<Id> excl,
-  CellHandle hint, bool record)
+  CellHandle hint, bool record, double scale)
 {
   WalkEnd end;
   for (Id steps = 0;; ++steps)
@@ -70,7 +71,7 @@ WalkEnd FacetWalk(const Triangulation& tri, EdgePoint<FT> x, Id a, Id b, std::ve
     const Frame<FT> frame(tri, y.G);
     if (record) // the polyline only; the walk needs no coordinates
     {
-      end.Points.push_back(RequireTight(frame.At(y.Lambda)));
+      end.Points.push_back(DrawnPoint(frame.At(y.Lambda), scale));
     }
     const int obtuse = ObtuseCorner(tri.KCoord(a), tri.KCoord(b), tri.KCoord(s));
     if (obtuse == 2)
@@ -315,7 +316,7 @@ SuccessorForest::Step SuccessorForest::ComputeNext(Id id, std::size_t buffer)
       auto P = [&](int i) { return Vec<FT>::From(this->Tri.Coord(vertices[i])); };
       const Vec<FT> centre = Circumcenter(P(0), P(1), P(2), P(3));
       start.Lambda = (centre - frame.C).Dot(frame.N) / frame.N.SquaredLength();
-      return FacetWalk<FT>(this->Tri, start, a, b, excl, c, this->Record);
+      return FacetWalk<FT>(this->Tri, start, a, b, excl, c, this->Record, this->Stub / RayStub);
     },
     fallbacks, this->ExactOnly);
   if (fallbacks > 0)
