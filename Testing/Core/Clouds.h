@@ -68,6 +68,37 @@ inline std::vector<Point3> Torus(int n, std::uint64_t seed)
   return c;
 }
 
+/// I.i.d. area-uniform points on the faces of a regular icosahedron: flat
+/// triangles in general position, as in scans sampled from meshes, where many
+/// Voronoi vertices are ill-conditioned.
+inline std::vector<Point3> Icosahedron(int n, std::uint64_t seed)
+{
+  const double t = (1 + std::sqrt(5.0)) / 2;
+  const double v[12][3] = { { -1, t, 0 }, { 1, t, 0 }, { -1, -t, 0 }, { 1, -t, 0 }, { 0, -1, t },
+    { 0, 1, t }, { 0, -1, -t }, { 0, 1, -t }, { t, 0, -1 }, { t, 0, 1 }, { -t, 0, -1 }, { -t, 0, 1 } };
+  const int f[20][3] = { { 0, 11, 5 }, { 0, 5, 1 }, { 0, 1, 7 }, { 0, 7, 10 }, { 0, 10, 11 },
+    { 1, 5, 9 }, { 5, 11, 4 }, { 11, 10, 2 }, { 10, 7, 6 }, { 7, 1, 8 }, { 3, 9, 4 }, { 3, 4, 2 },
+    { 3, 2, 6 }, { 3, 6, 8 }, { 3, 8, 9 }, { 4, 9, 5 }, { 2, 4, 11 }, { 6, 2, 10 }, { 8, 6, 7 },
+    { 9, 8, 1 } };
+  Rng r(seed);
+  std::vector<Point3> c(n);
+  for (Point3& p : c)
+  {
+    const int* face = f[std::min(19, static_cast<int>(20 * r.U()))];
+    double a = r.U(), b = r.U();
+    if (a + b > 1)
+    {
+      a = 1 - a;
+      b = 1 - b;
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      p[k] = v[face[0]][k] + a * (v[face[1]][k] - v[face[0]][k]) + b * (v[face[2]][k] - v[face[0]][k]);
+    }
+  }
+  return c;
+}
+
 } // namespace clouds
 
 #endif
