@@ -1,6 +1,10 @@
 // The vertex element of a PLY file (ASCII or binary) for vtkPointCloudReader.
 // Parsed here: VTK 9.2's vtkPLYReader aborts the process on a truncated file
-// and reads garbage numbers as 0, where this reports the element and line.
+// and reads garbage numbers as 0, and CGAL 5.5's read_PLY crashes on integer
+// coordinates, hangs on a large element without properties, allocates a
+// list's announced length, skips unknown property types (misreading the rest)
+// and reads a missing z as 0 (TestPointCloudReader pins each case); this
+// reports the element and line.
 #ifndef PlyPoints_h
 #define PlyPoints_h
 

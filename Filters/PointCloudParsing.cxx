@@ -28,22 +28,22 @@ void Fail(const std::string& file, std::size_t line, const std::string& message)
   throw ReadError(where + ": " + message);
 }
 
+namespace
+{
+constexpr std::string_view Blanks = " \t\v\f\r";
+constexpr std::string_view Separators = " \t\v\f\r,"; // of SplitLoose's fields
+}
+
 bool IsBlank(char c)
 {
-  return c == ' ' || c == '\t' || c == '\v' || c == '\f' || c == '\r';
+  return Blanks.find(c) != std::string_view::npos;
 }
 
 std::string_view Trim(std::string_view s)
 {
-  while (!s.empty() && IsBlank(s.front()))
-  {
-    s.remove_prefix(1);
-  }
-  while (!s.empty() && IsBlank(s.back()))
-  {
-    s.remove_suffix(1);
-  }
-  return s;
+  const std::size_t first = s.find_first_not_of(Blanks);
+  return first == std::string_view::npos ? std::string_view()
+                                         : s.substr(first, s.find_last_not_of(Blanks) - first + 1);
 }
 
 std::string Lower(std::string_view s)
@@ -183,23 +183,12 @@ bool Lines::NextData(std::string_view& line)
 void SplitLoose(std::string_view line, std::vector<std::string_view>& fields, std::size_t maxFields)
 {
   fields.clear();
-  std::size_t i = 0;
-  while (fields.size() < maxFields)
+  std::size_t start = line.find_first_not_of(Separators);
+  while (start != std::string_view::npos && fields.size() < maxFields)
   {
-    while (i < line.size() && (IsBlank(line[i]) || line[i] == ','))
-    {
-      ++i;
-    }
-    if (i >= line.size())
-    {
-      return;
-    }
-    const std::size_t start = i;
-    while (i < line.size() && !IsBlank(line[i]) && line[i] != ',')
-    {
-      ++i;
-    }
-    fields.push_back(line.substr(start, i - start));
+    const std::size_t end = std::min(line.find_first_of(Separators, start), line.size());
+    fields.push_back(line.substr(start, end - start));
+    start = line.find_first_not_of(Separators, end);
   }
 }
 

@@ -1,8 +1,11 @@
 // The text formats of vtkPointCloudReader: .xyz/.txt/.pts, .csv, the vertices
-// of .off and the `v` lines of .obj. Parsed here rather than by
-// vtkDelimitedTextReader or vtkOBJReader so that every bad line is reported
-// with its number (VTK's readers read a malformed number as 0 and accept
-// truncated files); see PointCloudParsing.h for the shared pieces.
+// of .off and the `v` lines of .obj. Parsed here so that every bad line is
+// reported with its number: VTK 9.2's readers read a malformed number as 0 and
+// accept truncated files, vtkDelimitedTextReader's rows are not the file's
+// lines, and CGAL 5.5's read_XYZ/read_OFF/read_OBJ read "3x" as 3 and
+// "1.2.3 4" as (1.2, 0.3, 4), skip a first line they cannot parse as a count,
+// and accept truncated OFF files (TestPointCloudReader pins each case). See
+// PointCloudParsing.h for the shared pieces.
 #ifndef PointCloudTextFormats_h
 #define PointCloudTextFormats_h
 

@@ -17,7 +17,7 @@ if (FLOWRECON_BUILD_PARAVIEW_PLUGIN AND TARGET FlowRecon)
       COMMAND sh "${_need_x}" "${FLOWRECON_PARAVIEW_GUI}" --dr
               "--script=${CMAKE_CURRENT_LIST_DIR}/gui_pipeline.py")
     set_tests_properties(gui.pipeline PROPERTIES
-      ENVIRONMENT "FLOWRECON_EXIT=1;FLOWRECON_PLUGIN=$<TARGET_FILE:FlowRecon>;FLOWRECON_DATA=${_data_dir}/two_hemispheres.xyz;FLOWRECON_OUT=${CMAKE_CURRENT_BINARY_DIR}/gui_pipeline"
+      ENVIRONMENT "FLOWRECON_EXIT=1;FLOWRECON_PLUGIN=$<TARGET_FILE:FlowRecon>;FLOWRECON_DATA=${_data_dir}/two_hemispheres.xyz;FLOWRECON_OUT=${CMAKE_CURRENT_BINARY_DIR}/gui_pipeline;FLOWRECON_TEST_DIR=${CMAKE_CURRENT_LIST_DIR}"
       PASS_REGULAR_EXPRESSION "gui_pipeline: PASS"
       FAIL_REGULAR_EXPRESSION "gui_pipeline: FAIL"
       SKIP_RETURN_CODE 77

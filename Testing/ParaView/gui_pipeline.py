@@ -2,6 +2,7 @@
 
     FLOWRECON_PLUGIN=<build>/lib/paraview-5.11/plugins/FlowRecon/FlowRecon.so \\
     FLOWRECON_DATA=<repo>/Data/two_hemispheres.xyz FLOWRECON_OUT=<prefix> \\
+    FLOWRECON_TEST_DIR=<repo>/Testing/ParaView \\
     xvfb-run -a -s "-screen 0 1280x1024x24" paraview --dr --script=gui_pipeline.py
 
 The GUI's own Python loads the plugin (unless PV_PLUGIN_PATH already did), reads the
@@ -15,19 +16,14 @@ the GUI open (interactive use).
 """
 
 import os
-import traceback
+import sys
 
-from paraview import servermanager
-from paraview.simple import *  # noqa: F401,F403
+sys.path.insert(0, os.environ.get("FLOWRECON_TEST_DIR", "."))
+from gui_plugin import load_plugin  # noqa: E402
+from gui_qt import check, run_in_gui, say  # noqa: E402
 
-
-def say(message):
-    os.write(1, (message + "\n").encode())
-
-
-def check(condition, message):
-    if not condition:
-        raise AssertionError(message)
+from paraview import servermanager  # noqa: E402
+from paraview.simple import *  # noqa: E402,F401,F403
 
 
 def block_names(proxy):
@@ -42,15 +38,10 @@ def block_names(proxy):
 
 
 def main():
-    plugin = os.environ.get("FLOWRECON_PLUGIN", "")
     data = os.environ["FLOWRECON_DATA"]
     out = os.environ.get("FLOWRECON_OUT", "gui_pipeline")
     ns = globals()
-    if "FlowComplex" not in ns:
-        check(os.path.exists(plugin), "plugin %r does not exist" % plugin)
-        LoadPlugin(plugin, remote=False, ns=ns)
-    for name in ("FlowComplex", "FlowComplexSimplification", "FlowReconstruction"):
-        check(name in ns, "the plugin did not define %s" % name)
+    load_plugin(ns, ("FlowComplex", "FlowComplexSimplification", "FlowReconstruction"))
 
     reader = CSVReader(registrationName="two_hemispheres.xyz", FileName=[data])
     reader.HaveHeaders = 0
@@ -130,12 +121,4 @@ def main():
     say("gui_pipeline: PASS")
 
 
-try:
-    main()
-    status = 0
-except Exception:  # noqa: BLE001 - report anything, then leave the GUI
-    say(traceback.format_exc())
-    say("gui_pipeline: FAIL")
-    status = 1
-if os.environ.get("FLOWRECON_EXIT", "1") == "1":
-    os._exit(status)
+run_in_gui(main, "gui_pipeline")

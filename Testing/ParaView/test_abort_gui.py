@@ -52,6 +52,7 @@ ABORT_LATENCY = 3.0   # s from the request to the end of the run (the longest st
 
 
 sys.path.insert(0, os.environ.get("FLOWRECON_TEST_DIR", "."))
+from gui_plugin import load_plugin  # noqa: E402
 from gui_qt import Qt, check, run_in_gui, say, x_click  # noqa: E402
 
 
@@ -116,13 +117,8 @@ def run(qt, points, seed, mode, accept, button, manager, warnings):
 
 
 def main():
-    plugin = os.environ.get("FLOWRECON_PLUGIN", "")
     npoints = int(os.environ.get("FLOWRECON_ABORT_POINTS", "50000"))
-    ns = globals()
-    if "FlowComplex" not in ns:
-        check(os.path.exists(plugin), "plugin %r does not exist" % plugin)
-        LoadPlugin(plugin, remote=False, ns=ns)
-    check("FlowComplex" in ns, "the plugin did not define FlowComplex")
+    load_plugin(globals())
     say("test_abort_gui: ParaView %s, %d random points" % (
         servermanager.vtkSMProxyManager.GetParaViewSourceVersion(), npoints))
 

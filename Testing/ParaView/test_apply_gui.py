@@ -30,6 +30,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.environ.get("FLOWRECON_TEST_DIR", "."))
+from gui_plugin import load_plugin  # noqa: E402
 from gui_qt import Qt, check, run_in_gui, say  # noqa: E402
 
 from paraview import servermanager  # noqa: E402
@@ -152,13 +153,9 @@ def runs_through_axis(mask, x0, x1, row=300, slack=2):
 
 
 def main():
-    plugin = os.environ.get("FLOWRECON_PLUGIN", "")
     data = os.environ["FLOWRECON_DATA"]
     out = os.environ.get("FLOWRECON_OUT", "apply_gui")
-    ns = globals()
-    if "FlowComplex" not in ns:
-        check(os.path.exists(plugin), "plugin %r does not exist" % plugin)
-        LoadPlugin(plugin, remote=False, ns=ns)
+    load_plugin(globals())
     qt = Qt()
     main_widget = qt.main_widget()
     check(main_widget, "no pqCoreUtilities::MainWidget")
