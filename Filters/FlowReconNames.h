@@ -21,6 +21,9 @@ constexpr const char* NodeId = "NodeId";
 constexpr const char* Index = "Index";
 constexpr const char* CriticalValue = "CriticalValue";
 constexpr const char* Simplex = "Simplex";
+// Point of CriticalPoints: the id of the node's critical point among the
+// StableManifolds points, -1 where that block has none.
+constexpr const char* StableManifoldPointId = "StableManifoldPointId";
 constexpr const char* Multiplicity = "Multiplicity";
 constexpr const char* Ratio = "Ratio";
 constexpr const char* LowerNodeId = "LowerNodeId";
