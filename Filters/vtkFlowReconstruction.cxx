@@ -346,26 +346,29 @@ bool vtkFlowReconstruction::DrawGeometry(double tmax)
   // The Betti numbers of every t_r <= T_max at once: one barcode of the family.
   cache.Bars.clear();
   cache.TopologyError.clear();
-  try
+  if (!this->ComputeTopology)
   {
-    if (!this->ComputeTopology)
+    cache.TopologyError = "not asked for"; // recomputed with the next drawing
+  }
+  else
+  {
+    try
     {
-      throw flowrecon::InputError("not asked for"); // recomputed with the next drawing
+      this->SetProgressText("Betti numbers");
+      this->UpdateProgress(0.9);
+      cache.Bars = flowrecon::CellBarcode(flowrecon::ReconstructionCells(fc, cache.Carrier,
+        cache.Run, tmax, cache.TriangleGroups, cache.TetraGroups, &cache.CellNodes,
+          this->MaximumTopologyCells),
+        flowrecon::Progress(), this->MaximumTopologyCells);
     }
-    this->SetProgressText("Betti numbers");
-    this->UpdateProgress(0.9);
-    cache.Bars = flowrecon::CellBarcode(flowrecon::ReconstructionCells(fc, cache.Carrier,
-      cache.Run, tmax, cache.TriangleGroups, cache.TetraGroups, &cache.CellNodes,
-        this->MaximumTopologyCells),
-      flowrecon::Progress(), this->MaximumTopologyCells);
-  }
-  catch (const flowrecon::InputError& e)
-  {
-    cache.TopologyError = e.what(); // the reconstruction itself is still shown
-  }
-  catch (const std::bad_alloc&)
-  {
-    cache.TopologyError = "out of memory";
+    catch (const flowrecon::InputError& e)
+    {
+      cache.TopologyError = e.what(); // the reconstruction itself is still shown
+    }
+    catch (const std::bad_alloc&)
+    {
+      cache.TopologyError = "out of memory";
+    }
   }
   cache.GeometryThreshold = tmax;
   return true;
