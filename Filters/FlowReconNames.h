@@ -49,6 +49,14 @@ constexpr const char* Threshold = "Threshold";
 constexpr const char* Extension = "Extension";
 constexpr const char* Sponsor = "Sponsor";
 constexpr const char* Direction = "Direction";
+// The largest jumps of the profile (its field data, one tuple per jump).
+constexpr const char* JumpStep = "JumpStep";
+constexpr const char* JumpThresholdBefore = "JumpThresholdBefore";
+constexpr const char* JumpThresholdAfter = "JumpThresholdAfter";
+constexpr const char* JumpNodeId = "JumpNodeId";
+constexpr const char* JumpIndex = "JumpIndex";
+constexpr const char* JumpCriticalValue = "JumpCriticalValue";
+constexpr const char* JumpLocation = "JumpLocation";
 
 // Persistence pairs and diagrams (TTK's layout).
 constexpr const char* Birth = "Birth";

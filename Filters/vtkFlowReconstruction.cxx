@@ -247,6 +247,7 @@ int vtkFlowReconstruction::RequestData(
     nullptr, nullptr, arrows);
   profile->ShallowCopy(c.Profile);
   flowrecon::MarkProfile(profile, t);
+  flowrecon::ProfileJumpsToVTK(fc, c.Run, static_cast<std::size_t>(this->NumberOfJumps), profile);
   flowrecon::GridBelow(c.Full, t, flowrecon::EdgeMultiplicities(fc.Nodes, fc.Arcs, c.Run, t), grid);
   flowrecon::ReleaseFreedMemory(); // the previous output's arrays, replaced just now
   if (!this->ComputeTopology)
@@ -383,5 +384,6 @@ void vtkFlowReconstruction::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumThreshold: " << this->MaximumThreshold << "\n";
   os << indent << "UnderSamplingWindow: " << this->UnderSamplingWindow << "\n";
   os << indent << "ComputeTopology: " << (this->ComputeTopology ? "on" : "off") << "\n";
+  os << indent << "NumberOfJumps: " << this->NumberOfJumps << "\n";
   os << indent << "NumberOfQueueRuns: " << this->NumberOfQueueRuns << "\n";
 }
