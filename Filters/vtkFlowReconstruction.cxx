@@ -51,8 +51,11 @@ struct vtkFlowReconstruction::Cache
   double GeometryThreshold = -1;
   /// Triangles and tetrahedra of each node (compressed rows of cell positions).
   flowrecon::CellsByNode TriangleGroups, TetraGroups;
-  /// Persistent homology of the drawn family (below GeometryThreshold); empty
-  /// with TopologyError set when it could not be computed.
+  /// Persistent homology of the drawn family (below GeometryThreshold) when
+  /// HasTopology, computed within TopologyLimit cells; empty with
+  /// TopologyError set when it could not be computed.
+  bool HasTopology = false;
+  vtkIdType TopologyLimit = -1;
   std::vector<flowrecon::Bar> Bars;
   std::vector<Id> CellNodes; ///< node of each cell the bars refer to
   std::string TopologyError;
@@ -223,6 +226,12 @@ int vtkFlowReconstruction::RequestData(
     undersampling->Initialize();
     return this->GetAbortExecute() ? 1 : 0;
   }
+  // Once per drawing and cell limit, when asked for (also when turned on later).
+  if (this->ComputeTopology &&
+    !(this->Cached->HasTopology && this->Cached->TopologyLimit == this->MaximumTopologyCells))
+  {
+    this->ComputeBettiNumbers(tmax);
+  }
 
   const Cache& c = *this->Cached;
   const flowrecon::FlowComplex& fc = c.FC;
@@ -344,35 +353,38 @@ bool vtkFlowReconstruction::DrawGeometry(double tmax)
     vtkErrorMacro(<< e.what());
     return false;
   }
-  // The Betti numbers of every t_r <= T_max at once: one barcode of the family.
+  cache.HasTopology = false; // of the family drawn before
   cache.Bars.clear();
-  cache.TopologyError.clear();
-  if (!this->ComputeTopology)
-  {
-    cache.TopologyError = "not asked for"; // recomputed with the next drawing
-  }
-  else
-  {
-    try
-    {
-      this->SetProgressText("Betti numbers");
-      this->UpdateProgress(0.9);
-      cache.Bars = flowrecon::CellBarcode(flowrecon::ReconstructionCells(fc, cache.Carrier,
-        cache.Run, tmax, cache.TriangleGroups, cache.TetraGroups, &cache.CellNodes,
-          this->MaximumTopologyCells),
-        flowrecon::Progress(), this->MaximumTopologyCells);
-    }
-    catch (const flowrecon::InputError& e)
-    {
-      cache.TopologyError = e.what(); // the reconstruction itself is still shown
-    }
-    catch (const std::bad_alloc&)
-    {
-      cache.TopologyError = "out of memory";
-    }
-  }
   cache.GeometryThreshold = tmax;
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkFlowReconstruction::ComputeBettiNumbers(double tmax)
+{
+  // The Betti numbers of every t_r <= T_max at once: one barcode of the family.
+  Cache& cache = *this->Cached;
+  cache.Bars.clear();
+  cache.TopologyError.clear();
+  cache.HasTopology = true;
+  cache.TopologyLimit = this->MaximumTopologyCells;
+  try
+  {
+    this->SetProgressText("Betti numbers");
+    this->UpdateProgress(0.9);
+    cache.Bars = flowrecon::CellBarcode(flowrecon::ReconstructionCells(cache.FC, cache.Carrier,
+      cache.Run, tmax, cache.TriangleGroups, cache.TetraGroups, &cache.CellNodes,
+        this->MaximumTopologyCells),
+      flowrecon::Progress(), this->MaximumTopologyCells);
+  }
+  catch (const flowrecon::InputError& e)
+  {
+    cache.TopologyError = e.what(); // the reconstruction itself is still shown
+  }
+  catch (const std::bad_alloc&)
+  {
+    cache.TopologyError = "out of memory";
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -190,6 +190,9 @@ private:
   std::unique_ptr<Cache> Cached; // the t_r = infinity run of the last input
   /// Draws the cells of the nodes below `tmax` into the cache (false: failed or aborted).
   bool DrawGeometry(double tmax);
+  /// The Betti numbers of the drawn family into the cache (an error there is
+  /// kept as its TopologyError: the reconstruction is still shown).
+  void ComputeBettiNumbers(double tmax);
 };
 
 #endif
