@@ -3,7 +3,6 @@
 #include "ContractArrays.h"
 #include "FlowReconNames.h"
 
-
 #include "vtkAbstractArray.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -25,35 +24,14 @@
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
-#include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
-#include <functional>
-#include <unordered_map>
 
 namespace flowrecon
 {
 
 namespace
 {
-
-// Exact coordinates as a hash key: constructed points are stored once per node,
-// so the critical point of a node is found again by its bits.
-struct PointHash
-{
-  std::size_t operator()(const Point3& p) const
-  {
-    std::size_t h = 0;
-    for (double x : p)
-    {
-      std::uint64_t bits;
-      std::memcpy(&bits, &x, sizeof bits);
-      h ^= std::hash<std::uint64_t>()(bits) + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
-    }
-    return h;
-  }
-};
 
 void ReadReport(vtkFieldData* fd, FlowComplex& fc)
 {
@@ -289,28 +267,37 @@ bool ReadStableManifolds(vtkUnstructuredGrid* ug, FlowComplex& fc, std::string& 
       fc.TetrahedronNode.push_back(node);
     }
   }
-  if (!store)
+  return true; // without `store`, fc.NumberOfInputPoints still says how many samples there are
+}
+
+/// fc.NodePoint (with `store`) from the CriticalPoints array StableManifoldPointId,
+/// checked against the `points` of StableManifolds. Files written before that
+/// array give the samples' points alone (a sample node's point is its Simplex[0]).
+bool ReadNodePoints(vtkPolyData* cp, vtkIdType points, FlowComplex& fc, std::string& error, bool store)
+{
+  const char* block = flowrecon::names::CriticalPoints;
+  const vtkIdType n = static_cast<vtkIdType>(fc.Nodes.size());
+  vtkPointData* pd = cp->GetPointData();
+  vtkDataArray* point = pd->GetArray(flowrecon::names::StableManifoldPointId);
+  if (point && !RequiredArray(pd, block, flowrecon::names::StableManifoldPointId, 1, n, error))
   {
-    return true; // fc.NumberOfInputPoints still says how many samples there are
+    return false;
   }
-  // Critical points of nodes of index >= 1 are constructed points.
-  std::unordered_map<Point3, Id, PointHash> constructed;
-  for (Id i = fc.NumberOfInputPoints; i < np; ++i)
+  vtkDataArray* nodeId = pd->GetArray(flowrecon::names::NodeId); // checked by ReadNodes
+  fc.NodePoint.assign(store ? fc.Nodes.size() : 0, -1);
+  for (vtkIdType i = 0; i < n; ++i)
   {
-    constructed.emplace(fc.Points[i], i);
-  }
-  fc.NodePoint.assign(fc.Nodes.size(), -1);
-  for (Id i = 0; i < n; ++i)
-  {
-    const Node& node = fc.Nodes[i];
-    if (node.Index == 0)
+    const Id node = IdValue(nodeId, i);
+    const Id p = point ? IdValue(point, i) : (fc.Nodes[node].Index == 0 ? fc.Nodes[node].Simplex[0] : -1);
+    if (p < -1 || p >= points)
     {
-      fc.NodePoint[i] = node.Simplex[0];
+      error = std::string("block ") + block + ": node " + std::to_string(node) +
+        (point ? " has a StableManifoldPointId" : " has a sample") + " that is not a point of StableManifolds";
+      return false;
     }
-    else if (!node.IsInfinity())
+    if (store)
     {
-      const auto it = constructed.find(node.Location);
-      fc.NodePoint[i] = it == constructed.end() ? -1 : it->second;
+      fc.NodePoint[node] = p;
     }
   }
   return true;
@@ -377,7 +364,8 @@ bool FromMultiBlock(
     return false;
   }
   if (!ReadNodes(cp, fc, error) || !ReadArcs(hd, fc, error) ||
-    !ReadStableManifolds(sm, fc, error, !diagramOnly))
+    !ReadStableManifolds(sm, fc, error, !diagramOnly) ||
+    !ReadNodePoints(cp, sm->GetNumberOfPoints(), fc, error, !diagramOnly))
   {
     fc = FlowComplex();
     return false;

@@ -17,7 +17,9 @@ namespace flowrecon
 /// coordinates as Location), arcs (HasseDiagram cell data LowerNodeId,
 /// UpperNodeId, Multiplicity), InfinityNode (the node with a negative simplex),
 /// manifold geometry (StableManifolds points, triangles and tetrahedra with
-/// NodeId; UnstableManifolds polylines) and the report arrays. The arcs are the
+/// NodeId, and each node's point among them, NodePoint, from the CriticalPoints
+/// array StableManifoldPointId: without it, as in files written before it, the
+/// samples' points alone; UnstableManifolds polylines) and the report arrays. The arcs are the
 /// ones stored, i.e. the simplified ones for a simplified complex. Returns false
 /// and sets `error` (one line) when a block or an array is missing or invalid.
 /// With `diagramOnly`, the manifold geometry and the flow lines are checked but

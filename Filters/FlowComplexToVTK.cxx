@@ -45,6 +45,10 @@ vtkSmartPointer<vtkPolyData> CriticalPointsBlock(const FlowComplex& fc)
   auto index = NamedArray<vtkIntArray>(flowrecon::names::Index);
   auto value = NamedArray<vtkDoubleArray>(flowrecon::names::CriticalValue);
   auto simplex = NamedArray<vtkIdTypeArray>(flowrecon::names::Simplex, 4);
+  // Written, not left to be found again by coordinates: a node's critical point
+  // is one point of StableManifolds (a sample's vertex cell uses Simplex[0]).
+  auto point = NamedArray<vtkIdTypeArray>(flowrecon::names::StableManifoldPointId);
+  const bool drawn = fc.NodePoint.size() == fc.Nodes.size();
   vtkNew<vtkCellArray> verts;
   for (std::size_t i = 0; i < fc.Nodes.size(); ++i)
   {
@@ -55,6 +59,7 @@ vtkSmartPointer<vtkPolyData> CriticalPointsBlock(const FlowComplex& fc)
     value->InsertNextValue(n.Value);
     const vtkIdType s[4] = { n.Simplex[0], n.Simplex[1], n.Simplex[2], n.Simplex[3] };
     simplex->InsertNextTypedTuple(s);
+    point->InsertNextValue(drawn ? fc.NodePoint[i] : (n.Index == 0 ? n.Simplex[0] : -1));
     if (!n.IsInfinity()) // the maximum at infinity is kept as data, never drawn
     {
       const vtkIdType id = static_cast<vtkIdType>(i);
@@ -68,6 +73,7 @@ vtkSmartPointer<vtkPolyData> CriticalPointsBlock(const FlowComplex& fc)
   pd->GetPointData()->AddArray(index);
   pd->GetPointData()->AddArray(value);
   pd->GetPointData()->AddArray(simplex);
+  pd->GetPointData()->AddArray(point);
   pd->GetPointData()->SetActiveScalars(flowrecon::names::Index);
   // Index on the vertex cells too: a display coloured by the cell array Index
   // draws these points and the GabrielEdges lines in one legend.

@@ -21,6 +21,9 @@ constexpr const char* NodeId = "NodeId";
 constexpr const char* Index = "Index";
 constexpr const char* CriticalValue = "CriticalValue";
 constexpr const char* Simplex = "Simplex";
+// Point of CriticalPoints: the id of the node's critical point among the
+// StableManifolds points, -1 where that block has none.
+constexpr const char* StableManifoldPointId = "StableManifoldPointId";
 constexpr const char* Multiplicity = "Multiplicity";
 constexpr const char* Ratio = "Ratio";
 constexpr const char* LowerNodeId = "LowerNodeId";
@@ -46,6 +49,14 @@ constexpr const char* Threshold = "Threshold";
 constexpr const char* Extension = "Extension";
 constexpr const char* Sponsor = "Sponsor";
 constexpr const char* Direction = "Direction";
+// The largest jumps of the profile (its field data, one tuple per jump).
+constexpr const char* JumpStep = "JumpStep";
+constexpr const char* JumpThresholdBefore = "JumpThresholdBefore";
+constexpr const char* JumpThresholdAfter = "JumpThresholdAfter";
+constexpr const char* JumpNodeId = "JumpNodeId";
+constexpr const char* JumpIndex = "JumpIndex";
+constexpr const char* JumpCriticalValue = "JumpCriticalValue";
+constexpr const char* JumpLocation = "JumpLocation";
 
 // Persistence pairs and diagrams (TTK's layout).
 constexpr const char* Birth = "Birth";

@@ -3,6 +3,7 @@
 #include "FlowComplexConversion.h"
 #include "FlowReconNames.h"
 #include "MemoryGuard.h"
+#include "ProfileJumps.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -219,6 +220,43 @@ void MarkProfile(vtkTable* profile, double t)
   mark->FillValue(t < Unbounded ? t : std::numeric_limits<double>::quiet_NaN());
   profile->RemoveColumnByName("t_r");
   profile->AddColumn(mark);
+}
+
+void ProfileJumpsToVTK(const FlowComplex& fc, const ReconstructionResult& run, std::size_t count, vtkTable* profile)
+{
+  std::vector<double> thresholds(run.Order.size());
+  for (std::size_t k = 0; k < run.Order.size(); ++k)
+  {
+    thresholds[k] = run.Nodes[run.Order[k]].Threshold;
+  }
+  auto step = NamedArray<vtkIdTypeArray>(flowrecon::names::JumpStep);
+  auto before = NamedArray<vtkDoubleArray>(flowrecon::names::JumpThresholdBefore);
+  auto after = NamedArray<vtkDoubleArray>(flowrecon::names::JumpThresholdAfter);
+  auto nodeId = NamedArray<vtkIdTypeArray>(flowrecon::names::JumpNodeId);
+  auto index = NamedArray<vtkIntArray>(flowrecon::names::JumpIndex);
+  auto value = NamedArray<vtkDoubleArray>(flowrecon::names::JumpCriticalValue);
+  auto location = NamedArray<vtkDoubleArray>(flowrecon::names::JumpLocation, 3);
+  for (const ProfileJump& jump : LargestJumps(thresholds, count))
+  {
+    const Id node = run.Order[jump.Step];
+    step->InsertNextValue(static_cast<vtkIdType>(jump.Step));
+    before->InsertNextValue(jump.Before);
+    after->InsertNextValue(jump.After);
+    nodeId->InsertNextValue(node);
+    index->InsertNextValue(fc.Nodes[node].Index);
+    value->InsertNextValue(fc.Nodes[node].Value);
+    location->InsertNextTuple(fc.Nodes[node].Location.data());
+  }
+  vtkFieldData* fd = profile->GetFieldData();
+  for (vtkDataArray* a :
+    std::initializer_list<vtkDataArray*>{ step, before, after, nodeId, index, value, location })
+  {
+    fd->RemoveArray(a->GetName());
+    if (count > 0)
+    {
+      fd->AddArray(a);
+    }
+  }
 }
 
 void GridBelow(

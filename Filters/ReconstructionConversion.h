@@ -9,6 +9,7 @@
 #include "FlowComplex.h"    // core data structure
 #include "Reconstruction.h" // core data structure
 
+#include <cstddef>
 #include <vector>
 
 class vtkPolyData;
@@ -37,6 +38,14 @@ void ReconstructionToVTK(const FlowComplex& fc, const std::vector<Id>& carriers,
 /// Sets the profile's column `t_r` (the mark of `t` in its chart, the last
 /// column): with it, a profile made at one t_r serves every other.
 void MarkProfile(vtkTable* profile, double t);
+
+/// Sets the field data of `profile` (the table of `run`'s steps) to its
+/// `count` largest jumps (LargestJumps of Threshold), largest first, one tuple
+/// each: JumpStep, JumpThresholdBefore, JumpThresholdAfter (Threshold at the
+/// step before and at the step), JumpNodeId, JumpIndex, JumpCriticalValue and
+/// JumpLocation (the node inserted at that step and its critical point): what
+/// `flowrecon reconstruct --jumps` prints. No arrays for `count` 0.
+void ProfileJumpsToVTK(const FlowComplex& fc, const ReconstructionResult& run, std::size_t count, vtkTable* profile);
 
 /// ReconstructionToVTK's grid at `t` cut out of its grid `full` at some T >= t,
 /// without drawing anything: cells come in insertion order and Threshold is a

@@ -3,7 +3,6 @@
 #include "ContractArrays.h"
 #include "FlowReconNames.h"
 
-
 #include "vtkAbstractArray.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -26,12 +25,25 @@
 #include "vtkUnstructuredGrid.h"
 
 #include <string>
+#include <vector>
 
 namespace flowrecon
 {
 
 namespace
 {
+
+/// A field array named `name` holding `values` (one half of compressed rows).
+vtkSmartPointer<vtkIdTypeArray> IdArray(const char* name, const std::vector<Id>& values)
+{
+  auto a = NamedArray<vtkIdTypeArray>(name);
+  a->SetNumberOfTuples(static_cast<vtkIdType>(values.size()));
+  for (std::size_t k = 0; k < values.size(); ++k)
+  {
+    a->SetValue(static_cast<vtkIdType>(k), values[k]);
+  }
+  return a;
+}
 
 vtkSmartPointer<vtkPolyData> PersistencePairsBlock(const FlowComplex& fc, const SimplificationResult& s)
 {
@@ -115,16 +127,8 @@ void AddSimplification(const FlowComplex& fc, const SimplificationResult& s, dou
     }
     sm->GetCellData()->AddArray(owner);
   }
-  auto offsets = NamedArray<vtkIdTypeArray>("OwnerOffsets");
-  for (Id o : s.OwnerOffsets)
-  {
-    offsets->InsertNextValue(o);
-  }
-  auto owners = NamedArray<vtkIdTypeArray>("Owners");
-  for (Id o : s.Owners)
-  {
-    owners->InsertNextValue(o);
-  }
+  auto offsets = IdArray("OwnerOffsets", s.Owners.Offsets);
+  auto owners = IdArray("Owners", s.Owners.Values);
   auto tp = NamedArray<vtkDoubleArray>("PersistenceThreshold");
   tp->InsertNextValue(threshold);
   auto pairs = NamedArray<vtkIdTypeArray>("CancelledPairCount");
@@ -134,19 +138,10 @@ void AddSimplification(const FlowComplex& fc, const SimplificationResult& s, dou
   std::vector<vtkSmartPointer<vtkIdTypeArray>> replay;
   if (s.HasLowers)
   {
-    for (const auto& rows : { std::make_pair(flowrecon::names::PairLowerOffsets, &s.LowerOffsets),
-           std::make_pair(flowrecon::names::PairLowers, &s.Lowers),
-           std::make_pair(flowrecon::names::PairOwnerOffsets, &s.DirectOwnerOffsets),
-           std::make_pair(flowrecon::names::PairOwners, &s.DirectOwners) })
-    {
-      auto a = NamedArray<vtkIdTypeArray>(rows.first);
-      a->SetNumberOfTuples(static_cast<vtkIdType>(rows.second->size()));
-      for (std::size_t k = 0; k < rows.second->size(); ++k)
-      {
-        a->SetValue(static_cast<vtkIdType>(k), (*rows.second)[k]);
-      }
-      replay.push_back(a);
-    }
+    replay = { IdArray(flowrecon::names::PairLowerOffsets, s.Lowers.Offsets),
+      IdArray(flowrecon::names::PairLowers, s.Lowers.Values),
+      IdArray(flowrecon::names::PairOwnerOffsets, s.DirectOwners.Offsets),
+      IdArray(flowrecon::names::PairOwners, s.DirectOwners.Values) };
   }
   for (vtkFieldData* fd : { cp ? cp->GetFieldData() : nullptr, output->GetFieldData() })
   {
@@ -172,9 +167,9 @@ namespace
 {
 
 /// Compressed rows of `fd` named `offsetsName` (`rows` + 1 increasing values
-/// from 0) and `valuesName` (node ids), into `offsets` and `values`.
+/// from 0) and `valuesName` (node ids), into `out`.
 bool ReadRows(vtkFieldData* fd, const char* offsetsName, const char* valuesName, Id rows,
-  Id nodeCount, std::vector<Id>& offsets, std::vector<Id>& values, std::string& error)
+  Id nodeCount, CompressedRows<Id>& out, std::string& error)
 {
   vtkDataArray* o = fd->GetArray(offsetsName);
   vtkDataArray* v = fd->GetArray(valuesName);
@@ -182,9 +177,10 @@ bool ReadRows(vtkFieldData* fd, const char* offsetsName, const char* valuesName,
   if (!o || !v || o->GetNumberOfComponents() != 1 || v->GetNumberOfComponents() != 1 ||
     o->GetNumberOfTuples() != rows + 1)
   {
-    error = where + " missing or not one row per cancelled pair";
+    error = where + " missing or not " + std::to_string(rows) + " rows";
     return false;
   }
+  std::vector<Id>& offsets = out.Offsets;
   offsets.resize(static_cast<std::size_t>(rows + 1));
   for (vtkIdType k = 0; k <= rows; ++k)
   {
@@ -200,6 +196,7 @@ bool ReadRows(vtkFieldData* fd, const char* offsetsName, const char* valuesName,
     error = where + " offsets do not match the values";
     return false;
   }
+  std::vector<Id>& values = out.Values;
   values.resize(static_cast<std::size_t>(v->GetNumberOfTuples()));
   for (vtkIdType k = 0; k < v->GetNumberOfTuples(); ++k)
   {
@@ -255,9 +252,9 @@ bool ReadReplay(vtkMultiBlockDataSet* input, vtkFieldData* fd, Id nodeCount,
     }
   }
   if (!ReadRows(fd, flowrecon::names::PairLowerOffsets, flowrecon::names::PairLowers, pairs,
-        nodeCount, s.LowerOffsets, s.Lowers, error) ||
+        nodeCount, s.Lowers, error) ||
     !ReadRows(fd, flowrecon::names::PairOwnerOffsets, flowrecon::names::PairOwners, pairs,
-      nodeCount, s.DirectOwnerOffsets, s.DirectOwners, error))
+      nodeCount, s.DirectOwners, error))
   {
     return false;
   }
@@ -272,7 +269,7 @@ bool SimplificationFromMultiBlock(vtkMultiBlockDataSet* input, Id nodeCount,
 {
   s = SimplificationResult();
   s.Survives.assign(static_cast<std::size_t>(nodeCount), true);
-  s.OwnerOffsets.assign(static_cast<std::size_t>(nodeCount + 1), 0);
+  s.Owners.Offsets.assign(static_cast<std::size_t>(nodeCount + 1), 0);
   error.clear();
   auto* cp = vtkPolyData::SafeDownCast(NamedBlock(input, flowrecon::names::CriticalPoints));
   vtkDataArray* cancelled = cp ? cp->GetPointData()->GetArray(flowrecon::names::Cancelled) : nullptr;
@@ -282,11 +279,7 @@ bool SimplificationFromMultiBlock(vtkMultiBlockDataSet* input, Id nodeCount,
   }
   const char* block = flowrecon::names::CriticalPoints;
   vtkDataArray* nodeId = RequiredArray(cp->GetPointData(), block, flowrecon::names::NodeId, 1, nodeCount, error);
-  vtkDataArray* offsets = nodeId
-    ? RequiredArray(cp->GetFieldData(), block, "OwnerOffsets", 1, nodeCount + 1, error)
-    : nullptr;
-  vtkDataArray* owners = cp->GetFieldData()->GetArray("Owners");
-  if (!offsets || !owners || cancelled->GetNumberOfTuples() != nodeCount)
+  if (!nodeId || cancelled->GetNumberOfTuples() != nodeCount)
   {
     error = error.empty() ? "block CriticalPoints: the simplification arrays are incomplete" : error;
     return false;
@@ -294,27 +287,10 @@ bool SimplificationFromMultiBlock(vtkMultiBlockDataSet* input, Id nodeCount,
   for (vtkIdType i = 0; i < nodeCount; ++i)
   {
     s.Survives[IdValue(nodeId, i)] = cancelled->GetComponent(i, 0) == 0;
-    s.OwnerOffsets[i + 1] = IdValue(offsets, i + 1);
-    if (s.OwnerOffsets[i + 1] < s.OwnerOffsets[i])
-    {
-      error = "block CriticalPoints: OwnerOffsets is not increasing";
-      return false;
-    }
   }
-  if (s.OwnerOffsets[0] != 0 || s.OwnerOffsets.back() != owners->GetNumberOfTuples())
+  if (!ReadRows(cp->GetFieldData(), "OwnerOffsets", "Owners", nodeCount, nodeCount, s.Owners, error))
   {
-    error = "block CriticalPoints: OwnerOffsets does not match Owners";
     return false;
-  }
-  s.Owners.resize(static_cast<std::size_t>(owners->GetNumberOfTuples()));
-  for (vtkIdType k = 0; k < owners->GetNumberOfTuples(); ++k)
-  {
-    s.Owners[k] = IdValue(owners, k);
-    if (s.Owners[k] < 0 || s.Owners[k] >= nodeCount)
-    {
-      error = "block CriticalPoints: Owners names a node that does not exist";
-      return false;
-    }
   }
   return ReadReplay(input, cp->GetFieldData(), nodeCount, s, error);
 }

@@ -6,8 +6,10 @@
  * vtkTable whose first three numeric columns (or columns named x, y, z) are the
  * coordinates. Output: a vtkMultiBlockDataSet with the blocks
  * - `CriticalPoints` (vtkPolyData): one point per Hasse node with point data
- *   `NodeId`, `Index`, `CriticalValue`; the maximum at infinity is the last point
- *   (value +inf) and has no vertex cell, so it is never drawn.
+ *   `NodeId`, `Index`, `CriticalValue`, `Simplex`, `StableManifoldPointId` (the
+ *   critical point's id among the StableManifolds points, -1 where that block
+ *   has none); the maximum at infinity is the last point (value +inf) and has
+ *   no vertex cell, so it is never drawn.
  * - `HasseDiagram` (vtkPolyData): one line per arc, cell data `Multiplicity`,
  *   `Ratio`, `LowerNodeId`, `UpperNodeId`; point data `NodeId`. Arcs to infinity
  *   end on a short outward stub.

@@ -51,8 +51,11 @@ struct vtkFlowReconstruction::Cache
   double GeometryThreshold = -1;
   /// Triangles and tetrahedra of each node (compressed rows of cell positions).
   flowrecon::CellsByNode TriangleGroups, TetraGroups;
-  /// Persistent homology of the drawn family (below GeometryThreshold); empty
-  /// with TopologyError set when it could not be computed.
+  /// Persistent homology of the drawn family (below GeometryThreshold) when
+  /// HasTopology, computed within TopologyLimit cells; empty with
+  /// TopologyError set when it could not be computed.
+  bool HasTopology = false;
+  vtkIdType TopologyLimit = -1;
   std::vector<flowrecon::Bar> Bars;
   std::vector<Id> CellNodes; ///< node of each cell the bars refer to
   std::string TopologyError;
@@ -223,6 +226,12 @@ int vtkFlowReconstruction::RequestData(
     undersampling->Initialize();
     return this->GetAbortExecute() ? 1 : 0;
   }
+  // Once per drawing and cell limit, when asked for (also when turned on later).
+  if (this->ComputeTopology &&
+    !(this->Cached->HasTopology && this->Cached->TopologyLimit == this->MaximumTopologyCells))
+  {
+    this->ComputeBettiNumbers(tmax);
+  }
 
   const Cache& c = *this->Cached;
   const flowrecon::FlowComplex& fc = c.FC;
@@ -247,6 +256,7 @@ int vtkFlowReconstruction::RequestData(
     nullptr, nullptr, arrows);
   profile->ShallowCopy(c.Profile);
   flowrecon::MarkProfile(profile, t);
+  flowrecon::ProfileJumpsToVTK(fc, c.Run, static_cast<std::size_t>(this->NumberOfJumps), profile);
   flowrecon::GridBelow(c.Full, t, flowrecon::EdgeMultiplicities(fc.Nodes, fc.Arcs, c.Run, t), grid);
   flowrecon::ReleaseFreedMemory(); // the previous output's arrays, replaced just now
   if (!this->ComputeTopology)
@@ -343,18 +353,26 @@ bool vtkFlowReconstruction::DrawGeometry(double tmax)
     vtkErrorMacro(<< e.what());
     return false;
   }
+  cache.HasTopology = false; // of the family drawn before
+  cache.Bars.clear();
+  cache.GeometryThreshold = tmax;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkFlowReconstruction::ComputeBettiNumbers(double tmax)
+{
   // The Betti numbers of every t_r <= T_max at once: one barcode of the family.
+  Cache& cache = *this->Cached;
   cache.Bars.clear();
   cache.TopologyError.clear();
+  cache.HasTopology = true;
+  cache.TopologyLimit = this->MaximumTopologyCells;
   try
   {
-    if (!this->ComputeTopology)
-    {
-      throw flowrecon::InputError("not asked for"); // recomputed with the next drawing
-    }
     this->SetProgressText("Betti numbers");
     this->UpdateProgress(0.9);
-    cache.Bars = flowrecon::CellBarcode(flowrecon::ReconstructionCells(fc, cache.Carrier,
+    cache.Bars = flowrecon::CellBarcode(flowrecon::ReconstructionCells(cache.FC, cache.Carrier,
       cache.Run, tmax, cache.TriangleGroups, cache.TetraGroups, &cache.CellNodes,
         this->MaximumTopologyCells),
       flowrecon::Progress(), this->MaximumTopologyCells);
@@ -367,8 +385,6 @@ bool vtkFlowReconstruction::DrawGeometry(double tmax)
   {
     cache.TopologyError = "out of memory";
   }
-  cache.GeometryThreshold = tmax;
-  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -380,5 +396,6 @@ void vtkFlowReconstruction::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumThreshold: " << this->MaximumThreshold << "\n";
   os << indent << "UnderSamplingWindow: " << this->UnderSamplingWindow << "\n";
   os << indent << "ComputeTopology: " << (this->ComputeTopology ? "on" : "off") << "\n";
+  os << indent << "NumberOfJumps: " << this->NumberOfJumps << "\n";
   os << indent << "NumberOfQueueRuns: " << this->NumberOfQueueRuns << "\n";
 }

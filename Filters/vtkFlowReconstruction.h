@@ -34,6 +34,9 @@
  * `Threshold`, `Extension`, `Sponsor`, and `t_r` (the current t_r on every
  * row, for a horizontal mark in a chart). Steps with Threshold < t_r form the
  * current reconstruction; jumps of Threshold point at under-sampled regions.
+ * Its field data holds the NumberOfJumps largest jumps, one tuple each:
+ * `JumpStep`, `JumpThresholdBefore`, `JumpThresholdAfter`, `JumpNodeId`,
+ * `JumpIndex`, `JumpCriticalValue`, `JumpLocation`.
  *
  * Output port 2 (vtkPolyData): sponsor arrows of the current reconstruction,
  * one line from the sponsor's critical point to the node's critical point for
@@ -137,6 +140,19 @@ public:
   vtkGetMacro(MaximumTopologyCells, vtkIdType);
   ///@}
 
+  ///@{
+  /**
+   * The number of largest jumps of the profile's Threshold reported as the
+   * field data of the profile (port 1): JumpStep, JumpThresholdBefore,
+   * JumpThresholdAfter, JumpNodeId, JumpIndex, JumpCriticalValue and
+   * JumpLocation, one tuple per jump, largest first (what `flowrecon
+   * reconstruct --jumps K` prints). A large jump is where the sampling is
+   * poorest. 0 for none. Default 5.
+   */
+  vtkSetClampMacro(NumberOfJumps, int, 0, VTK_INT_MAX);
+  vtkGetMacro(NumberOfJumps, int);
+  ///@}
+
   /// How many times the priority queue has run (once per new input).
   vtkGetMacro(NumberOfQueueRuns, int);
 
@@ -163,6 +179,7 @@ protected:
   double UnderSamplingWindow = 1.1;
   bool ComputeTopology = true;
   vtkIdType MaximumTopologyCells = 4000000;
+  int NumberOfJumps = 5;
   int NumberOfQueueRuns = 0;
 
 private:
@@ -173,6 +190,9 @@ private:
   std::unique_ptr<Cache> Cached; // the t_r = infinity run of the last input
   /// Draws the cells of the nodes below `tmax` into the cache (false: failed or aborted).
   bool DrawGeometry(double tmax);
+  /// The Betti numbers of the drawn family into the cache (an error there is
+  /// kept as its TopologyError: the reconstruction is still shown).
+  void ComputeBettiNumbers(double tmax);
 };
 
 #endif

@@ -58,12 +58,12 @@ void Builder::FindCriticalPoints()
   // Gabriel edge: checking those, in parallel, is checking them all.
   {
     const double tiny = 1e-20 * this->In.Diagonal;
-    const bool close = tbb::parallel_reduce(tbb::blocked_range<std::size_t>(0, this->Cs.Edges.size()), false,
+    const bool close = tbb::parallel_reduce(tbb::blocked_range<std::size_t>(0, this->Cs.Edges.Values.size()), false,
       [&](const tbb::blocked_range<std::size_t>& r, bool found) {
         for (std::size_t i = r.begin(); i != r.end() && !found; ++i)
         {
-          const Point3& a = this->Coords()[this->Cs.Edges[i][0]];
-          const Point3& b = this->Coords()[this->Cs.Edges[i][1]];
+          const Point3& a = this->Coords()[this->Cs.Edges.Values[i][0]];
+          const Point3& b = this->Coords()[this->Cs.Edges.Values[i][1]];
           const double dx = a[0] - b[0], dy = a[1] - b[1], dz = a[2] - b[2];
           found = !(std::sqrt(dx * dx + dy * dy + dz * dz) > tiny);
         }
@@ -86,7 +86,7 @@ void Builder::FindCriticalPoints()
   }
   // Node ids: by index; within an index in the (Hilbert) order of their vertices.
   this->M = this->Tri->NumberOfVertices();
-  this->NEdges = static_cast<Id>(this->Cs.Edges.size());
+  this->NEdges = static_cast<Id>(this->Cs.Edges.Values.size());
   this->NFacets = static_cast<Id>(this->Cs.Facets.size());
   this->Base1 = this->M;
   this->Base2 = this->Base1 + this->NEdges;
@@ -113,8 +113,8 @@ void Builder::FindCriticalPoints()
   ReserveHuge(fc.Arcs, static_cast<std::size_t>(2 * this->NEdges + 6 * this->NFacets));
   for (Id i = 0; i < this->NEdges; ++i)
   {
-    fc.Arcs.emplace_back(this->Cs.Edges[i][0], this->Base1 + i, 1);
-    fc.Arcs.emplace_back(this->Cs.Edges[i][1], this->Base1 + i, 1);
+    fc.Arcs.emplace_back(this->Cs.Edges.Values[i][0], this->Base1 + i, 1);
+    fc.Arcs.emplace_back(this->Cs.Edges.Values[i][1], this->Base1 + i, 1);
   }
 }
 
@@ -133,7 +133,7 @@ void Builder::DeferFarPatches()
       [&](const tbb::blocked_range<Id>& r, double v) {
         for (Id i = r.begin(); i != r.end(); ++i)
         {
-          v = std::max(v, this->MakeNode(1, this->Cs.Edges[i].data(), this->Coords()).Value);
+          v = std::max(v, this->MakeNode(1, this->Cs.Edges.Values[i].data(), this->Coords()).Value);
         }
         return v;
       },

@@ -44,7 +44,7 @@ void Builder::AssembleHasseDiagram()
       }
       else if (n < this->Base2)
       {
-        fc.Nodes[n] = this->MakeNode(1, this->Cs.Edges[n - this->Base1].data(), this->Coords());
+        fc.Nodes[n] = this->MakeNode(1, this->Cs.Edges.Values[n - this->Base1].data(), this->Coords());
       }
       else if (n < this->Base3)
       {

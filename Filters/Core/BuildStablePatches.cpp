@@ -179,10 +179,11 @@ void Builder::WalkStablePatches()
   {
     this->TriangleBegin[this->Cs.Facets.size()] = static_cast<Id>(fc.Triangles.size());
   }
-  // The edge index served the walks only (unless the walks go on later).
+  // The rows of the edges (FindEdge) served the walks only (unless the walks
+  // go on later); the edges themselves stay, their positions are node ids.
   if (!this->Keep)
   {
-    std::vector<Id>().swap(this->Cs.EdgeOffsets);
+    std::vector<Id>().swap(this->Cs.Edges.Offsets);
   }
 }
 

@@ -12,7 +12,7 @@ CancellationReplay::CancellationReplay(std::size_t nodeCount, const Simplificati
   , LowerPair(nodeCount, -1)
   , RemovedBy(nodeCount, -1)
 {
-  if (s.Survives.size() != nodeCount || !s.HasLowers || s.LowerOffsets.size() != s.Pairs.size() + 1)
+  if (s.Survives.size() != nodeCount || !s.HasLowers || s.Lowers.RowCount() != static_cast<Id>(s.Pairs.size()))
   {
     throw InputError("replay: the simplification did not record what a replay needs");
   }
@@ -84,7 +84,7 @@ void CancellationReplay::Replay(
     if (in[a->second].second % 2 == 1)
     {
       // d'y = dy + <dy, a> db over Z/2: y's incidence with each odd lower of b flips.
-      for (const Id x : RowOf(s.LowerOffsets, s.Lowers, e.first))
+      for (const Id x : s.Lowers.Row(e.first))
       {
         const auto it = where.find(x);
         if (it == where.end())

@@ -35,14 +35,6 @@ private:
   const T* Last;
 };
 
-/// Row r of compressed rows kept as two named vectors (where the names are an
-/// interface, e.g. SimplificationResult's OwnerOffsets and Owners).
-template <class T>
-RowRange<T> RowOf(const std::vector<Id>& offsets, const std::vector<T>& values, Id r)
-{
-  return RowRange<T>(values.data() + offsets[r], values.data() + offsets[r + 1]);
-}
-
 /// Offsets has one entry per row plus one, starts at 0 and never decreases;
 /// its last entry is the number of values. Offsets are 64-bit (flow complexes
 /// have more arcs than 2^31), the values' type is the caller's.
@@ -55,7 +47,18 @@ struct CompressedRows
   Id RowCount() const { return static_cast<Id>(this->Offsets.size()) - 1; }
   Id ValueCount() const { return static_cast<Id>(this->Values.size()); }
   Id RowSize(Id r) const { return this->Offsets[r + 1] - this->Offsets[r]; }
-  RowRange<T> Row(Id r) const { return RowOf(this->Offsets, this->Values, r); }
+  RowRange<T> Row(Id r) const
+  {
+    return RowRange<T>(this->Values.data() + this->Offsets[r], this->Values.data() + this->Offsets[r + 1]);
+  }
+
+  /// Adds a row after the last one (rows made one at a time, in order).
+  template <class It>
+  void AppendRow(It first, It last)
+  {
+    this->Values.insert(this->Values.end(), first, last);
+    this->Offsets.push_back(this->ValueCount());
+  }
 
   /// The entries grouped by row (a counting sort): `forEach(emit)` must call
   /// emit(row, value) for every entry, 0 <= row < rows, the same entries in the

@@ -18,11 +18,10 @@ namespace flowrecon
 Id CriticalSimplices::FindEdge(Id u, Id v) const
 {
   const Id a = std::min(u, v), b = std::max(u, v);
-  const auto first = this->Edges.begin() + this->EdgeOffsets[a];
-  const auto last = this->Edges.begin() + this->EdgeOffsets[a + 1];
+  const RowRange<std::array<Id, 2>> row = this->Edges.Row(a);
   const auto it = std::lower_bound(
-    first, last, b, [](const std::array<Id, 2>& e, Id value) { return e[1] < value; });
-  return (it != last && (*it)[1] == b) ? it - this->Edges.begin() : -1;
+    row.begin(), row.end(), b, [](const std::array<Id, 2>& e, Id value) { return e[1] < value; });
+  return (it != row.end() && (*it)[1] == b) ? it - this->Edges.Values.data() : -1;
 }
 
 namespace
@@ -303,7 +302,8 @@ CriticalSimplices FindCriticalSimplices(const Triangulation& tri, const Progress
 
   // Gabriel edges in adjacency order: count per vertex, then fill.
   const Id m = tri.NumberOfVertices();
-  cs.EdgeOffsets.assign(static_cast<std::size_t>(m + 1), 0);
+  std::vector<Id>& offsets = cs.Edges.Offsets;
+  offsets.assign(static_cast<std::size_t>(m + 1), 0);
   tbb::parallel_for(tbb::blocked_range<Id>(0, m), [&](const tbb::blocked_range<Id>& r) {
     for (Id u = r.begin(); u != r.end(); ++u)
     {
@@ -312,23 +312,23 @@ CriticalSimplices FindCriticalSimplices(const Triangulation& tri, const Progress
       {
         count += notGabriel[k].load(std::memory_order_relaxed) ? 0 : 1;
       }
-      cs.EdgeOffsets[u + 1] = count;
+      offsets[u + 1] = count;
     }
   });
   for (Id u = 0; u < m; ++u)
   {
-    cs.EdgeOffsets[u + 1] += cs.EdgeOffsets[u];
+    offsets[u + 1] += offsets[u];
   }
-  cs.Edges.resize(static_cast<std::size_t>(cs.EdgeOffsets[m]));
+  cs.Edges.Values.resize(static_cast<std::size_t>(offsets[m]));
   tbb::parallel_for(tbb::blocked_range<Id>(0, m), [&](const tbb::blocked_range<Id>& r) {
     for (Id u = r.begin(); u != r.end(); ++u)
     {
-      Id next = cs.EdgeOffsets[u];
+      Id next = offsets[u];
       for (Id k = edges.Offsets[u]; k < edges.Offsets[u + 1]; ++k)
       {
         if (!notGabriel[k].load(std::memory_order_relaxed))
         {
-          cs.Edges[next++] = { { u, edges.Values[k] } };
+          cs.Edges.Values[next++] = { { u, edges.Values[k] } };
         }
       }
     }

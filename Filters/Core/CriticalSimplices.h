@@ -5,6 +5,7 @@
 #ifndef flowrecon_CriticalSimplices_h
 #define flowrecon_CriticalSimplices_h
 
+#include "CompressedRows.h"
 #include "Progress.h"
 #include "Triangulation.h"
 
@@ -34,16 +35,16 @@ struct CriticalCell
 
 struct CriticalSimplices
 {
-  /// Gabriel edges (u < v) in lexicographic order; those of vertex u are
-  /// Edges[EdgeOffsets[u] .. EdgeOffsets[u+1]).
-  std::vector<std::array<Id, 2>> Edges;
-  std::vector<Id> EdgeOffsets;
+  /// Gabriel edges (u < v) in lexicographic order, one row per vertex u; an
+  /// edge's position in Edges.Values is its id (node Base1 + id).
+  CompressedRows<std::array<Id, 2>> Edges;
   std::vector<CriticalFacet> Facets; ///< sorted by vertices
   std::vector<CriticalCell> Cells;   ///< sorted by vertices
   Id RightAngles = 0;  ///< right triangles among the Delaunay facets
   Id ApexOnSphere = 0; ///< facets with an apex on their diametral sphere
 
-  /// Position of Gabriel edge (u, v) in Edges, or -1 if uv is not Gabriel.
+  /// Position of Gabriel edge (u, v) in Edges.Values, or -1 if uv is not
+  /// Gabriel. Needs Edges.Offsets (freed after the walks unless kept).
   Id FindEdge(Id u, Id v) const;
   bool Degenerate() const { return this->RightAngles > 0 || this->ApexOnSphere > 0; }
 };

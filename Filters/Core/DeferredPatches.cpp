@@ -61,7 +61,7 @@ std::vector<Arc> DeferredPatches::Walk(const std::vector<Id>& nodes, const Progr
   std::sort(todo.begin(), todo.end());
   todo.erase(std::unique(todo.begin(), todo.end()), todo.end());
   const CriticalSimplices& cs = this->Re.Critical();
-  const Id base1 = this->Re.Base2() - static_cast<Id>(cs.Edges.size());
+  const Id base1 = this->Re.Base2() - cs.Edges.ValueCount();
   std::vector<std::vector<Id>> arrivals(todo.size());
   std::vector<Id> fallbacks(todo.size(), 0);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, todo.size()),

@@ -123,8 +123,10 @@ struct FlowComplex
   /// index, in a deterministic order that follows the samples along a Hilbert curve.
   std::vector<Node> Nodes;
   Id InfinityNode = -1;
-  /// Point id (into Points) of each node's critical point (-1 for index 1 and
-  /// infinity); empty when the stable-manifold geometry was not computed.
+  /// Point id (into Points) of each node's critical point (-1 for index 1,
+  /// infinity and nodes whose geometry was not drawn); empty when the
+  /// stable-manifold geometry was not computed. Stored as the CriticalPoints
+  /// array StableManifoldPointId.
   std::vector<Id> NodePoint;
   /// Arcs: 0->1 arcs first, then 1->2, then 2->3, each group in node order
   /// (deterministic); one entry per pair of nodes.

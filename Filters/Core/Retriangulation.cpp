@@ -64,7 +64,7 @@ Retriangulation::Retriangulation(const std::vector<Point3>& points, const BuildO
   const Triangulation& tri = *this->Tri_;
   this->SetBases();
   const Id m = tri.NumberOfVertices();
-  const Id nEdges = static_cast<Id>(this->Cs.Edges.size());
+  const Id nEdges = this->Cs.Edges.ValueCount();
   const Id nFacets = static_cast<Id>(this->Cs.Facets.size());
   const Id nCells = static_cast<Id>(this->Cs.Cells.size());
   if (tri.Dimension() < 3 || m != n[0] || nEdges != n[1] || nFacets != n[2] || nCells != n[3] ||
@@ -102,7 +102,7 @@ Retriangulation::Retriangulation(PreparedInput in, const BuildOptions& options,
 
 void Retriangulation::SetBases()
 {
-  this->Base2_ = this->Tri_->NumberOfVertices() + static_cast<Id>(this->Cs.Edges.size());
+  this->Base2_ = this->Tri_->NumberOfVertices() + this->Cs.Edges.ValueCount();
   this->Base3_ = this->Base2_ + static_cast<Id>(this->Cs.Facets.size());
 }
 

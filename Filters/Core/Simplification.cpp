@@ -42,8 +42,6 @@ public:
     this->Threshold = threshold;
     this->RecordLowers = recordLowers;
     SimplificationResult result;
-    result.DirectOwnerOffsets.assign(1, 0);
-    result.LowerOffsets.assign(1, 0);
     this->Result = &result;
     std::vector<Candidate> initial;
     for (Id lower = 0; lower < this->Diagram.NodeCount(); ++lower)
@@ -100,7 +98,7 @@ public:
     result.Arcs = this->Diagram.Arcs();
     if (!this->RecordLowers)
     {
-      result.LowerOffsets.assign(result.Pairs.size() + 1, 0);
+      result.Lowers.Offsets.assign(result.Pairs.size() + 1, 0);
     }
     result.HasLowers = this->RecordLowers;
     ResolveOwners(result, {});
@@ -164,16 +162,14 @@ private:
     }
     std::sort(owners.begin(), owners.end());
     SimplificationResult& r = *this->Result;
-    r.DirectOwners.insert(r.DirectOwners.end(), owners.begin(), owners.end());
-    r.DirectOwnerOffsets.push_back(static_cast<Id>(r.DirectOwners.size()));
+    r.DirectOwners.AppendRow(owners.begin(), owners.end());
     if (this->RecordLowers)
     {
-      if (this->Nodes[a].Index == 1)
-      {
-        r.Lowers.insert(r.Lowers.end(), this->Lowers.begin(), this->Lowers.end());
-        std::sort(r.Lowers.end() - static_cast<std::ptrdiff_t>(this->Lowers.size()), r.Lowers.end());
-      }
-      r.LowerOffsets.push_back(static_cast<Id>(r.Lowers.size()));
+      // Rows of 2-3 pairs stay empty; the row is sorted in place.
+      const std::vector<Id>& lowers = this->Lowers;
+      const Id start = r.Lowers.ValueCount();
+      r.Lowers.AppendRow(lowers.begin(), this->Nodes[a].Index == 1 ? lowers.end() : lowers.begin());
+      std::sort(r.Lowers.Values.begin() + start, r.Lowers.Values.end());
     }
     this->Diagram.Remove(a);
     this->Diagram.Remove(b);
@@ -213,7 +209,7 @@ SimplificationResult Simplify(const std::vector<Node>& nodes, const std::vector<
 void ResolveOwners(SimplificationResult& result, const std::vector<std::pair<Id, Id>>& extra)
 {
   const std::size_t pairs = result.Pairs.size();
-  if (result.DirectOwnerOffsets.size() != pairs + 1)
+  if (result.DirectOwners.RowCount() != static_cast<Id>(pairs))
   {
     throw InputError("simplification: direct owners do not match the pairs");
   }
@@ -251,7 +247,7 @@ void ResolveOwners(SimplificationResult& result, const std::vector<std::pair<Id,
   for (std::size_t p = pairs; p-- > 0;)
   {
     merged.clear();
-    for (const Id d : RowOf(result.DirectOwnerOffsets, result.DirectOwners, static_cast<Id>(p)))
+    for (const Id d : result.DirectOwners.Row(static_cast<Id>(p)))
     {
       add(d);
     }
@@ -266,16 +262,10 @@ void ResolveOwners(SimplificationResult& result, const std::vector<std::pair<Id,
     resolved[result.Pairs[p].Lower] = merged;
     resolved[result.Pairs[p].Upper] = merged;
   }
-  result.OwnerOffsets.assign(n + 1, 0);
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    result.OwnerOffsets[i + 1] = result.OwnerOffsets[i] + static_cast<Id>(resolved[i].size());
-  }
-  result.Owners.clear();
-  result.Owners.reserve(static_cast<std::size_t>(result.OwnerOffsets.back()));
+  result.Owners = CompressedRows<Id>();
   for (const std::vector<Id>& r : resolved)
   {
-    result.Owners.insert(result.Owners.end(), r.begin(), r.end());
+    result.Owners.AppendRow(r.begin(), r.end());
   }
 }
 

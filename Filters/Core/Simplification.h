@@ -35,26 +35,24 @@ struct SimplificationResult
   std::vector<Arc> Arcs;
   /// In the order they were made (non-decreasing Ratio).
   std::vector<CancelledPair> Pairs;
-  /// The three compressed rows below are kept as named pairs of vectors (the
-  /// names of the stored arrays, SimplificationConversion.h); RowOf reads a row.
-  /// Owners of the stable manifold of each cancelled node: the surviving nodes
-  /// it was redistributed to, transitively (compressed rows: node i owns nothing
-  /// and has no owner when it survives). May contain the maximum at infinity,
-  /// and may be empty when Out(a) was {b} alone.
-  std::vector<Id> OwnerOffsets; ///< size = nodes + 1
-  std::vector<Id> Owners;       ///< sorted within each row
+  /// Owners of the stable manifold of each cancelled node, one row per node:
+  /// the surviving nodes it was redistributed to, transitively, sorted (node i
+  /// owns nothing and has no owner when it survives). May contain the maximum
+  /// at infinity, and may be empty when Out(a) was {b} alone. Stored as the
+  /// arrays OwnerOffsets and Owners (SimplificationConversion.h).
+  CompressedRows<Id> Owners;
 
-  /// Per pair, in the order of Pairs: its direct owners, the successors of
-  /// Lower other than Upper when the pair was cancelled (compressed rows, sorted).
-  std::vector<Id> DirectOwnerOffsets, DirectOwners;
-  /// When asked for (recordLowers): per pair, the lowers x != Lower of odd arcs
-  /// x -> Upper when it was cancelled, for 1-2 pairs (rows of 2-3 pairs are
-  /// empty). With DirectOwners, enough to replay the cancellations on a node
-  /// whose In list was not known (DeferredPatches.h).
-  std::vector<Id> LowerOffsets, Lowers;
+  /// One row per pair, in the order of Pairs: its direct owners, the successors
+  /// of Lower other than Upper when the pair was cancelled (sorted).
+  CompressedRows<Id> DirectOwners;
+  /// When asked for (recordLowers), one row per pair: the lowers x != Lower of
+  /// odd arcs x -> Upper when it was cancelled, for 1-2 pairs (rows of 2-3 pairs
+  /// are empty). With DirectOwners, enough to replay the cancellations on a
+  /// node whose In list was not known (DeferredPatches.h).
+  CompressedRows<Id> Lowers;
   bool HasLowers = false; ///< whether Lowers were recorded
 
-  RowRange<Id> OwnerRow(Id node) const { return RowOf(this->OwnerOffsets, this->Owners, node); }
+  RowRange<Id> OwnerRow(Id node) const { return this->Owners.Row(node); }
   std::vector<Id> OwnersOf(Id node) const
   {
     const RowRange<Id> row = this->OwnerRow(node);
@@ -76,7 +74,7 @@ SimplificationResult Simplify(const std::vector<Node>& nodes, const std::vector<
 SimplificationResult Simplify(const std::vector<Node>& nodes, std::vector<Arc>&& arcs,
   double persistenceThreshold, const Progress& progress, bool recordLowers = false);
 
-/// Recomputes Owners and OwnerOffsets from DirectOwners plus `extra` direct
+/// Recomputes Owners from DirectOwners plus `extra` direct
 /// owners, (pair position, node) entries: the successors a replay found that
 /// the diagram did not hold when the pair was cancelled (deferred patches).
 void ResolveOwners(SimplificationResult& result, const std::vector<std::pair<Id, Id>>& extra);

@@ -18,7 +18,7 @@ struct Patch
   /// They are oriented consistently (neighbours run through a shared edge in
   /// opposite directions), so that the patch has a side: see PatchFacesSide.
   std::vector<std::array<Id, 3>> Triangles;
-  /// Positions in CriticalSimplices::Edges of the Gabriel edges reached, one per arrival.
+  /// Positions in CriticalSimplices::Edges.Values of the Gabriel edges reached, one per arrival.
   std::vector<Id> Arrivals;
 };
 

@@ -72,3 +72,14 @@ if (TARGET flowrecon)
   set_tests_properties(py.reconstruction.contractible PROPERTIES LABELS "python" TIMEOUT 300
     PASS_REGULAR_EXPRESSION "PASS")
 endif ()
+
+# The largest jumps of the profile (the field data of Flow Reconstruction's
+# profile) equal what `flowrecon reconstruct --jumps` prints for the same cloud
+# through the core, and the largest rises of the profile's Threshold column.
+if (TARGET flowrecon)
+  add_test(NAME py.reconstruction.profile_jumps
+    COMMAND "${FLOWRECON_TEST_PYTHON}" "${CMAKE_CURRENT_LIST_DIR}/test_profile_jumps.py"
+            "$<TARGET_FILE:flowrecon>" "${CMAKE_CURRENT_BINARY_DIR}/profile_jumps")
+  set_tests_properties(py.reconstruction.profile_jumps PROPERTIES
+    ENVIRONMENT "PYTHONPATH=${FLOWRECON_PYTHONPATH}" LABELS "python" TIMEOUT 300)
+endif ()

@@ -116,8 +116,8 @@ void Compare(const std::string& name, const FlowComplex& fc, double tp, Exercise
 
   // Owners: complete only with the replays' share.
   ResolveOwners(lazy, owners);
-  CHECK(lazy.OwnerOffsets == eager.OwnerOffsets);
-  CHECK(lazy.Owners == eager.Owners);
+  CHECK(lazy.Owners.Offsets == eager.Owners.Offsets);
+  CHECK(lazy.Owners.Values == eager.Owners.Values);
 }
 
 } // namespace

@@ -346,6 +346,13 @@ void CheckDataModel()
   CHECK(rows.Row(1).empty() && rows.Row(4).empty() && rows.Row(3).size() == 1 && rows.Row(3)[0] == 5);
   rows.SortRows();
   CHECK(rows.Values == (std::vector<int>{ 1, 9, 3, 7, 5 }));
+  Rows appended; // rows made one at a time: an empty row keeps its place
+  const std::vector<int> row = { 4, 2 };
+  appended.AppendRow(row.begin(), row.end());
+  appended.AppendRow(row.begin(), row.begin());
+  appended.AppendRow(row.begin() + 1, row.end());
+  CHECK(appended.Offsets == (std::vector<Id>{ 0, 2, 2, 3 }) && appended.Values == (std::vector<int>{ 4, 2, 2 }));
+  CHECK(appended.RowCount() == 3 && appended.Row(1).empty() && appended.Row(2)[0] == 2);
   const Rows none = Rows::Group(0, [](const auto&) {});
   CHECK(none.Offsets == std::vector<Id>{ 0 } && none.Values.empty() && none.RowCount() == 0);
   const CompressedRows<Id> byRow = PositionsByRow({ 1, 0, 1, 1 }, 3);

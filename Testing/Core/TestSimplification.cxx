@@ -44,7 +44,7 @@ void TestFigure2()
     CHECK(r.Pairs.empty());
     CHECK(ArcMap(r.Arcs) == original);
     CHECK(std::count(r.Survives.begin(), r.Survives.end(), true) == 12);
-    CHECK(r.Owners.empty() && r.OwnerOffsets.size() == 13);
+    CHECK(r.Owners.Values.empty() && r.Owners.Offsets.size() == 13);
   }
 
   // t_p = 1.1: cancel (s2, M1). In(M1) \ s2 = {s1, s3}, Out(s2) \ M1 = {M2}: new
@@ -165,7 +165,7 @@ void TestEvenArcs()
     const SimplificationResult a = Simplify(d.Nodes, d.Arcs, 1.07, Progress());
     const SimplificationResult b = Simplify(split.Nodes, split.Arcs, 1.07, Progress());
     CHECK(ArcMap(a.Arcs) == ArcMap(b.Arcs) && a.Pairs.size() == b.Pairs.size());
-    CHECK(a.Survives == b.Survives && a.Owners == b.Owners);
+    CHECK(a.Survives == b.Survives && a.Owners.Values == b.Owners.Values);
     const SimplificationResult none = Simplify(split.Nodes, split.Arcs, 0, Progress());
     CHECK(ArcMap(none.Arcs) == ArcMap(d.Arcs));
   }
@@ -548,7 +548,7 @@ void CheckProperties(const std::string& name, const std::vector<Point3>& cloud)
     CHECK(PersistenceOf(nodes, r.Arcs, r.Survives) == expected);
 
     // Owners: cancelled nodes only, survivors only, sorted; count the empty ones.
-    bool ownersOk = r.OwnerOffsets.size() == nodes.size() + 1;
+    bool ownersOk = r.Owners.Offsets.size() == nodes.size() + 1;
     Id empty = 0, toInfinity = 0;
     for (std::size_t i = 0; ownersOk && i < nodes.size(); ++i)
     {

@@ -6,7 +6,9 @@ port equals `--topology-profile` row by row, and its Under Sampling port holds
 a point at every place the CLI warns about, all inside the thinned cap (z > 0.7,
 up to a sample spacing), and none for the clean sample. The t_r and t_p
 sliders span their useful ranges, and Every Step shows the reconstruction at
-Maximum Threshold whatever t_r says.
+Maximum Threshold whatever t_r says. The Profile port's field data lists the
+Number Of Jumps (default 5) largest jumps as `--jumps 5 --tr-max inf` prints
+them (the cloud's run is then complete, as the filter's), none for 0.
 Usage: pvpython test_topology_ports.py PLUGIN FLOWRECON WORKDIR
 """
 import csv
@@ -65,6 +67,27 @@ def paraview(path):
     return betti, pts, rows, recon, simplified
 
 
+def cli_jumps(path):
+    p = subprocess.run([FLOWRECON, "reconstruct", path, "-o", path + "_all.vtu", "--tr-max", "inf",
+                        "--no-betti", "--jumps", "5"], capture_output=True, text=True)
+    assert p.returncode == 0, p.stderr
+    return [l for l in p.stdout.splitlines() if l.startswith("  step ")]
+
+
+def paraview_jumps(recon):
+    """The Profile port's jumps in the CLI's words (C++ prints doubles as %g)."""
+    fd = servermanager.Fetch(recon, idx=1).GetFieldData()
+    if fd.GetArray("JumpStep") is None:
+        return []
+    a = {n: vtk_to_numpy(fd.GetArray(n)) for n in (
+        "JumpStep", "JumpThresholdBefore", "JumpThresholdAfter", "JumpNodeId", "JumpIndex",
+        "JumpCriticalValue", "JumpLocation")}
+    return ["  step %d: %g -> %g, node %d, index %d, value %g, at (%g, %g, %g)" % (
+        a["JumpStep"][r], a["JumpThresholdBefore"][r], a["JumpThresholdAfter"][r],
+        a["JumpNodeId"][r], a["JumpIndex"][r], a["JumpCriticalValue"][r], *a["JumpLocation"][r])
+        for r in range(len(a["JumpStep"]))]
+
+
 def slider(proxy, name):
     d = proxy.GetProperty(name).SMProperty.FindDomain("vtkSMDoubleRangeDomain")
     return d.GetMinimum(0), d.GetMaximum(0)
@@ -89,6 +112,16 @@ for name, points in (("clean", base), ("thinned", thinned)):
     for q in cplaces:
         if not len(ppts) or np.min(np.linalg.norm(ppts - q, axis=1)) > 1e-4:
             failures.append("%s: CLI warning at %s has no Under Sampling point" % (name, q))
+    cjumps, pjumps = cli_jumps(path), paraview_jumps(recon)
+    print("%s: largest jump%s" % (name, pjumps[:1]))
+    if recon.NumberOfJumps != 5 or len(cjumps) != 5 or pjumps != cjumps:
+        failures.append("%s: Number Of Jumps %s, jumps:\n ParaView %s\n CLI %s"
+                        % (name, recon.NumberOfJumps, pjumps, cjumps))
+    recon.NumberOfJumps = 0
+    recon.UpdatePipeline()
+    if paraview_jumps(recon):
+        failures.append("%s: jumps listed with Number Of Jumps 0" % name)
+    recon.NumberOfJumps = 5
     if name == "clean" and (len(ppts) or cplaces or cb != (1, 0, 1)):
         failures.append("clean: expected Betti (1, 0, 1) and no warning")
     if name == "thinned":
