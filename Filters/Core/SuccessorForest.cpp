@@ -134,11 +134,26 @@ SuccessorForest::SuccessorForest(const Triangulation& tri,
   , ExactOnly(exactOnly)
   , Steps(record ? static_cast<std::size_t>(tri.NumberOfCells()) : 0)
   , Roots(static_cast<std::size_t>(tri.NumberOfCells()))
+  , FellBack(static_cast<std::size_t>(tri.NumberOfCells()))
 {
+  for (auto& f : this->FellBack)
+  {
+    f.store(0, std::memory_order_relaxed);
+  }
   for (auto& r : this->Roots)
   {
     r.store(-1, std::memory_order_relaxed);
   }
+}
+
+Id SuccessorForest::ExactFallbacks() const
+{
+  Id count = 0;
+  for (const auto& f : this->FellBack)
+  {
+    count += f.load(std::memory_order_relaxed);
+  }
+  return count;
 }
 
 Point3 SuccessorForest::CircumcentreOf(Id cell) const
@@ -321,7 +336,7 @@ SuccessorForest::Step SuccessorForest::ComputeNext(Id id, std::size_t buffer)
     fallbacks, this->ExactOnly);
   if (fallbacks > 0)
   {
-    this->Fallbacks += fallbacks;
+    this->FellBack[id].store(1, std::memory_order_relaxed);
   }
   if (!this->Record)
   {

@@ -47,7 +47,9 @@ public:
   void PrecomputeSteps(const std::vector<Id>& starts, const Progress& progress, double from,
     double to);
 
-  Id ExactFallbacks() const { return this->Fallbacks.load(); }
+  /// The cells whose NEXT needed exact arithmetic. Counted per cell, not per
+  /// computation: threads racing on one chain may compute a cell twice.
+  Id ExactFallbacks() const;
 
 private:
   enum : std::int8_t
@@ -80,7 +82,7 @@ private:
   bool ExactOnly;
   std::vector<Step> Steps; // memoised NEXT, only when recording
   std::vector<std::atomic<std::int32_t>> Roots;
-  std::atomic<Id> Fallbacks{ 0 };
+  std::vector<std::atomic<std::uint8_t>> FellBack; // per cell: NEXT needed exact arithmetic
   std::vector<std::vector<Point3>> Paths; // one buffer per thread slot
   std::vector<Point3> Centres;
   std::vector<bool> HasCentre, Drawn;
