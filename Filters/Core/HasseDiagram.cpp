@@ -75,7 +75,7 @@ void HasseDiagram::MergeRepeatedArcs()
   std::vector<std::uint32_t> erase;
   for (Id lower = 0; lower < this->NodeCount(); ++lower)
   {
-    std::vector<HalfArc>& out = this->OutLists[lower];
+    HalfArcs& out = this->OutLists[lower];
     if (out.size() < 2)
     {
       continue;
@@ -116,8 +116,8 @@ void HasseDiagram::MergeRepeatedArcs()
 
 std::int64_t HasseDiagram::Find(Id lower, Id upper) const
 {
-  const std::vector<HalfArc>& out = this->OutLists[lower];
-  const std::vector<HalfArc>& in = this->InLists[upper];
+  const HalfArcs& out = this->OutLists[lower];
+  const HalfArcs& in = this->InLists[upper];
   if (out.size() <= in.size())
   {
     for (std::size_t k = 0; k < out.size(); ++k)
@@ -147,8 +147,8 @@ int HasseDiagram::Multiplicity(Id lower, Id upper) const
 
 void HasseDiagram::Insert(Id lower, Id upper, int multiplicity)
 {
-  std::vector<HalfArc>& out = this->OutLists[lower];
-  std::vector<HalfArc>& in = this->InLists[upper];
+  HalfArcs& out = this->OutLists[lower];
+  HalfArcs& in = this->InLists[upper];
   out.push_back(HalfArc{ static_cast<std::int32_t>(upper), static_cast<std::int32_t>(multiplicity),
     static_cast<std::uint32_t>(in.size()) });
   in.push_back(HalfArc{ static_cast<std::int32_t>(lower), static_cast<std::int32_t>(multiplicity),
@@ -157,7 +157,7 @@ void HasseDiagram::Insert(Id lower, Id upper, int multiplicity)
 
 void HasseDiagram::EraseOut(Id lower, std::size_t k)
 {
-  std::vector<HalfArc>& out = this->OutLists[lower];
+  HalfArcs& out = this->OutLists[lower];
   const Id upper = out[k].Node;
   const std::size_t j = out[k].Twin;
   // Swap-and-pop in both lists; the moved entries' mirrors learn where they
@@ -171,7 +171,7 @@ void HasseDiagram::EraseOut(Id lower, std::size_t k)
     }
   }
   out.pop_back();
-  std::vector<HalfArc>& in = this->InLists[upper];
+  HalfArcs& in = this->InLists[upper];
   if (j + 1 != in.size())
   {
     in[j] = in.back();
@@ -205,15 +205,15 @@ int HasseDiagram::FlipParity(Id lower, Id upper)
 void HasseDiagram::Remove(Id node)
 {
   this->Removed[node] = 1;
-  std::vector<HalfArc>().swap(this->InLists[node]);
-  std::vector<HalfArc>().swap(this->OutLists[node]);
+  HalfArcs().swap(this->InLists[node]);
+  HalfArcs().swap(this->OutLists[node]);
 }
 
 std::vector<Arc> HasseDiagram::Arcs() const
 {
   std::vector<Arc> arcs;
   std::size_t count = 0;
-  for (const std::vector<HalfArc>& out : this->OutLists)
+  for (const HalfArcs& out : this->OutLists)
   {
     count += out.size(); // an upper bound: entries of removed nodes are skipped
   }

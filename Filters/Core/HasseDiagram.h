@@ -5,6 +5,8 @@
 
 #include "FlowComplex.h"
 
+#include <tbb/scalable_allocator.h>
+
 #include <cstdint>
 #include <vector>
 
@@ -32,6 +34,7 @@ public:
     std::int32_t Multiplicity;
     std::uint32_t Twin;          ///< position of the mirror entry in the other end's list
   };
+  using HalfArcs = std::vector<HalfArc, tbb::scalable_allocator<HalfArc>>;
 
   /// Validates the arcs against `nodes` (ids in range, index goes up by one,
   /// multiplicity >= 0; duplicate arcs are merged by adding multiplicities) and
@@ -42,8 +45,8 @@ public:
   /// Ancestors / successors of `node` with multiplicities, in no particular
   /// order. The lists may still hold entries of removed nodes: skip them
   /// (IsRemoved).
-  const std::vector<HalfArc>& In(Id node) const { return this->InLists[node]; }
-  const std::vector<HalfArc>& Out(Id node) const { return this->OutLists[node]; }
+  const HalfArcs& In(Id node) const { return this->InLists[node]; }
+  const HalfArcs& Out(Id node) const { return this->OutLists[node]; }
   bool IsRemoved(Id node) const { return this->Removed[node] != 0; }
   /// 0 when there is no arc. Both nodes must not be removed.
   int Multiplicity(Id lower, Id upper) const;
@@ -72,7 +75,7 @@ private:
   /// Merges arcs given more than once (adding their multiplicities).
   void MergeRepeatedArcs();
 
-  std::vector<std::vector<HalfArc>> InLists, OutLists;
+  std::vector<HalfArcs> InLists, OutLists;
   std::vector<char> Removed;
 };
 
