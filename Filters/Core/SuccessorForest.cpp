@@ -68,10 +68,9 @@ WalkEnd FacetWalk(const Triangulation& tri, EdgePoint<FT> x, Id a, Id b, std::ve
         p[2] - 0.5 * (pa[2] + pb[2]) } };
       return end;
     }
-    const Frame<FT> frame(tri, y.G);
     if (record) // the polyline only; the walk needs no coordinates
     {
-      end.Points.push_back(DrawnPoint(frame.At(y.Lambda), scale));
+      end.Points.push_back(DrawnPoint(CachedFrame<FT>(tri, y.G).At(y.Lambda), scale));
     }
     const int obtuse = ObtuseCorner(tri.KCoord(a), tri.KCoord(b), tri.KCoord(s));
     if (obtuse == 2)
@@ -115,7 +114,7 @@ WalkEnd FacetWalk(const Triangulation& tri, EdgePoint<FT> x, Id a, Id b, std::ve
       }
     }
     // No finite apex ahead: the Voronoi edge is a ray to infinity.
-    const Point3 n = frame.N.ToDouble();
+    const Point3 n = CachedFrame<FT>(tri, y.G).N.ToDouble();
     end.Escape = { { side * n[0], side * n[1], side * n[2] } };
     return end;
   }

@@ -20,6 +20,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace flowrecon
@@ -164,6 +166,259 @@ inline ExactFT Moebius(
   return large ? next.Reduced() : next;
 }
 
+/// The terms deciding where a walk point z = C + lambda N (on `frame`) leaves
+/// V(uv) for candidate s: num = |z-s|^2 - |z-u|^2 >= 0 and den = +-(m - z).(s - u)
+/// > 0 (away from m_uv when ascending); the exit parameter is num / (2 den), and
+/// both terms are affine in lambda.
+template <class FT>
+struct ExitTerms
+{
+  const Frame<FT>& F;
+  const Vec<FT>& Pu;
+  const Vec<FT>& Cm; // C - m_uv
+  const FT& Uu;      // |u|^2
+  const FT& Lambda;
+  bool Descending;
+
+  FT Den(const Vec<FT>& ps) const
+  {
+    const Vec<FT> su = ps - this->Pu;
+    const FT den = -(this->Cm.Dot(su) + this->Lambda * this->F.N.Dot(su)); // (m - z).(s - u)
+    return this->Descending ? den : -den;
+  }
+  FT Num(const Vec<FT>& ps) const
+  {
+    return FT(2) * (this->F.C.Dot(this->Pu - ps) + this->Lambda * this->F.N.Dot(this->Pu - ps)) +
+      (ps.SquaredLength() - this->Uu);
+  }
+};
+
+/// Decides the comparisons of ChooseExit in the walk's own number type.
+template <class FT>
+class PlainJudge
+{
+public:
+  PlainJudge(const Triangulation& tri, const ExitTerms<FT>& terms)
+    : Tri(tri)
+    , Terms(terms)
+  {
+  }
+  int DenSign(Id s)
+  {
+    this->Ps = Vec<FT>::From(this->Tri.Coord(s));
+    this->Den = this->Terms.Den(this->Ps);
+    return CertainSign(this->Den);
+  }
+  int NumSign()
+  {
+    this->Num = this->Terms.Num(this->Ps);
+    return CertainSign(this->Num);
+  }
+  /// Sign of (this candidate's exit parameter) - (the best one's).
+  int CompareWithBest() const
+  {
+    return CertainSign(this->Num * this->BestDen - this->BestNum * this->Den);
+  }
+  void Accept()
+  {
+    this->BestNum = this->Num;
+    this->BestDen = this->Den;
+  }
+  /// Sign of (the best exit parameter) - 1: whether the exit comes after m_uv.
+  int BestBeyondMidpoint() const { return CertainSign(this->BestNum - FT(2) * this->BestDen); }
+
+private:
+  const Triangulation& Tri;
+  const ExitTerms<FT>& Terms;
+  Vec<FT> Ps;
+  FT Num, Den, BestNum{ 0 }, BestDen{ 1 };
+};
+
+/// For exact walks: intervals around the exact lambda decide almost every
+/// comparison, and only the others are made exactly. Lambda is an iterated
+/// Moebius image whose terms grow with every step, so the exact products of the
+/// candidates' terms were nearly all of an exact walk's cost (the bunny-mesh
+/// sample of 10^7 points spent most of its 40 minutes there). The decisions are
+/// the exact ones either way.
+class FilteredJudge
+{
+public:
+  FilteredJudge(const Triangulation& tri, const ExitTerms<ExactFT>& exact, const EdgePoint<ExactFT>& z,
+    Id u, Id v)
+    : Tri(tri)
+    , Exact(exact)
+  {
+    const std::pair<double, double> n = z.Lambda.Numerator().to_interval();
+    const std::pair<double, double> d = z.Lambda.Denominator().to_interval();
+    // Terms past the range of doubles give infinite bounds: then exactly.
+    this->Usable = std::isfinite(n.first) && std::isfinite(n.second) && std::isfinite(d.first) &&
+      std::isfinite(d.second) && d.first > 0;
+    if (!this->Usable)
+    {
+      return;
+    }
+    CGAL::Protect_FPU_rounding<true> protect;
+    this->Lambda = IntervalFT(n) / IntervalFT(d);
+    this->F = CachedFrame<IntervalFT>(tri, z.G);
+    this->Pu = Vec<IntervalFT>::From(tri.Coord(u));
+    this->Cm = this->F.C - (this->Pu + Vec<IntervalFT>::From(tri.Coord(v))) / IntervalFT(2);
+    this->Uu = this->Pu.SquaredLength();
+    this->Usable = std::isfinite(this->Lambda.inf()) && std::isfinite(this->Lambda.sup());
+  }
+  int DenSign(Id s)
+  {
+    this->S = s;
+    this->HasExact = false;
+    if (this->Usable)
+    {
+      CGAL::Protect_FPU_rounding<true> protect;
+      const ExitTerms<IntervalFT> terms{ this->F, this->Pu, this->Cm, this->Uu, this->Lambda,
+        this->Exact.Descending };
+      this->Ps = Vec<IntervalFT>::From(this->Tri.Coord(s));
+      this->Den = terms.Den(this->Ps);
+      const CGAL::Uncertain<CGAL::Sign> sign = CGAL::sign(this->Den);
+      if (CGAL::is_certain(sign))
+      {
+        return static_cast<int>(CGAL::get_certain(sign));
+      }
+    }
+    this->MakeExact();
+    return CertainSign(this->EDen);
+  }
+  int NumSign()
+  {
+    if (!this->HasExact)
+    {
+      CGAL::Protect_FPU_rounding<true> protect;
+      const ExitTerms<IntervalFT> terms{ this->F, this->Pu, this->Cm, this->Uu, this->Lambda,
+        this->Exact.Descending };
+      this->Num = terms.Num(this->Ps);
+      const CGAL::Uncertain<CGAL::Sign> sign = CGAL::sign(this->Num);
+      if (CGAL::is_certain(sign))
+      {
+        return static_cast<int>(CGAL::get_certain(sign));
+      }
+      this->MakeExact();
+    }
+    return CertainSign(this->ENum);
+  }
+  int CompareWithBest()
+  {
+    if (!this->HasExact && !this->BestHasExact)
+    {
+      CGAL::Protect_FPU_rounding<true> protect;
+      const CGAL::Uncertain<CGAL::Sign> sign =
+        CGAL::sign(this->Num * this->BestDen - this->BestNum * this->Den);
+      if (CGAL::is_certain(sign))
+      {
+        return static_cast<int>(CGAL::get_certain(sign));
+      }
+    }
+    this->MakeExact();
+    this->MakeBestExact();
+    return CertainSign(this->ENum * this->EBestDen - this->EBestNum * this->EDen);
+  }
+  void Accept()
+  {
+    this->Best = this->S;
+    this->BestNum = this->Num;
+    this->BestDen = this->Den;
+    this->BestHasExact = this->HasExact;
+    if (this->HasExact)
+    {
+      this->EBestNum = this->ENum;
+      this->EBestDen = this->EDen;
+    }
+  }
+  int BestBeyondMidpoint()
+  {
+    if (!this->BestHasExact)
+    {
+      CGAL::Protect_FPU_rounding<true> protect;
+      const CGAL::Uncertain<CGAL::Sign> sign =
+        CGAL::sign(this->BestNum - IntervalFT(2) * this->BestDen);
+      if (CGAL::is_certain(sign))
+      {
+        return static_cast<int>(CGAL::get_certain(sign));
+      }
+    }
+    this->MakeBestExact();
+    return CertainSign(this->EBestNum - ExactFT(2) * this->EBestDen);
+  }
+
+private:
+  void MakeExact()
+  {
+    if (!this->HasExact)
+    {
+      const Vec<ExactFT> ps = Vec<ExactFT>::From(this->Tri.Coord(this->S));
+      this->EDen = this->Exact.Den(ps);
+      this->ENum = this->Exact.Num(ps);
+      this->HasExact = true;
+    }
+  }
+  void MakeBestExact()
+  {
+    if (!this->BestHasExact)
+    {
+      const Vec<ExactFT> ps = Vec<ExactFT>::From(this->Tri.Coord(this->Best));
+      this->EBestDen = this->Exact.Den(ps);
+      this->EBestNum = this->Exact.Num(ps);
+      this->BestHasExact = true;
+    }
+  }
+
+  const Triangulation& Tri;
+  const ExitTerms<ExactFT>& Exact;
+  bool Usable = false;
+  IntervalFT Lambda;
+  Frame<IntervalFT> F;
+  Vec<IntervalFT> Pu, Cm, Ps;
+  IntervalFT Uu, Num, Den, BestNum{ 0 }, BestDen{ 1 };
+  Id S = -1, Best = -1;
+  bool HasExact = false, BestHasExact = false;
+  ExactFT ENum, EDen, EBestNum, EBestDen;
+};
+
+/// The candidate of `link` (not in `excluded`) where the walk leaves V(uv)
+/// first, or -1. Throws Degenerate on ties.
+template <class Judge>
+std::ptrdiff_t ChooseExit(Judge& judge, const std::vector<Id>& link, const std::vector<Id>& excluded)
+{
+  std::ptrdiff_t best = -1;
+  for (std::size_t k = 0; k < link.size(); ++k)
+  {
+    const Id s = link[k];
+    if (std::find(excluded.begin(), excluded.end(), s) != excluded.end())
+    {
+      continue;
+    }
+    if (judge.DenSign(s) <= 0)
+    {
+      continue;
+    }
+    if (judge.NumSign() <= 0)
+    {
+      throw Degenerate("walk starts on a Voronoi vertex");
+    }
+    if (best >= 0)
+    {
+      const int cmp = judge.CompareWithBest();
+      if (cmp == 0)
+      {
+        throw Degenerate("walk meets a Voronoi vertex");
+      }
+      if (cmp > 0)
+      {
+        continue;
+      }
+    }
+    best = static_cast<std::ptrdiff_t>(k);
+    judge.Accept();
+  }
+  return best;
+}
+
 /// The first exit of the walk from z (on V(z.G), inside V(uv)) along the line
 /// through m_uv: toward m_uv if `descending`, away from it otherwise. Candidates
 /// are link samples of uv not in `excluded`. Returns false if no sample is met
@@ -183,66 +438,34 @@ bool FirstExit(const Triangulation& tri, const EdgePoint<FT>& z, Id u, Id v,
   const Vec<FT> cm = frame.C - m; // z - m = cm + lambda N
   const FT uu = pu.SquaredLength();
   const LinkView view = CachedLink(tri, u, v, hint);
-  const std::vector<Id>& link = view.Samples;
-  const std::vector<CellHandle>& linkCells = view.Cells;
-  Id best = -1;
-  CellHandle bestCell;
-  // For candidate s: num = |z-s|^2 - |z-u|^2 >= 0 and D = +-(m - z).(s - u) > 0;
-  // the exit parameter is num / (2 D). Both are affine in lambda.
-  FT bestNum(0), bestDen(1);
-  for (std::size_t k = 0; k < link.size(); ++k)
+  const ExitTerms<FT> terms{ frame, pu, cm, uu, z.Lambda, descending };
+  std::ptrdiff_t k = -1;
+  bool beyond = false;
+  if constexpr (std::is_same<FT, ExactFT>::value)
   {
-    const Id s = link[k];
-    if (std::find(excluded.begin(), excluded.end(), s) != excluded.end())
-    {
-      continue;
-    }
-    const Vec<FT> ps = Vec<FT>::From(tri.Coord(s));
-    const Vec<FT> su = ps - pu;
-    FT den = -(cm.Dot(su) + z.Lambda * frame.N.Dot(su)); // (m - z).(s - u)
-    if (!descending)
-    {
-      den = -den;
-    }
-    if (CertainSign(den) <= 0)
-    {
-      continue;
-    }
-    const FT num = FT(2) * (frame.C.Dot(pu - ps) + z.Lambda * frame.N.Dot(pu - ps)) +
-      (ps.SquaredLength() - uu);
-    if (CertainSign(num) <= 0)
-    {
-      throw Degenerate("walk starts on a Voronoi vertex");
-    }
-    if (best >= 0)
-    {
-      const int cmp = CertainSign(num * bestDen - bestNum * den);
-      if (cmp == 0)
-      {
-        throw Degenerate("walk meets a Voronoi vertex");
-      }
-      if (cmp > 0)
-      {
-        continue;
-      }
-    }
-    best = s;
-    bestCell = linkCells[k];
-    bestNum = num;
-    bestDen = den;
+    FilteredJudge judge(tri, terms, z, u, v);
+    k = ChooseExit(judge, view.Samples, excluded);
+    beyond = k >= 0 && descending && judge.BestBeyondMidpoint() >= 0;
   }
-  if (best < 0)
+  else
+  {
+    PlainJudge<FT> judge(tri, terms);
+    k = ChooseExit(judge, view.Samples, excluded);
+    beyond = k >= 0 && descending && judge.BestBeyondMidpoint() >= 0;
+  }
+  if (k < 0)
   {
     return false;
   }
-  if (descending && CertainSign(bestNum - FT(2) * bestDen) >= 0)
+  if (beyond)
   {
     throw Degenerate("descending walk reaches the driver of a non-Gabriel edge");
   }
+  const Id best = view.Samples[static_cast<std::size_t>(k)];
   // The exit point y = c' + lambda' n' of V(u v s) is collinear with m and z in
   // the bisector plane of uv (normal e): ((y - m) x (z - m)).e = 0.
   exitSample = best;
-  exitCell = bestCell;
+  exitCell = view.Cells[static_cast<std::size_t>(k)];
   exitPoint.G = SortedTriangle(u, v, best);
   const Frame<FT> next = CachedFrame<FT>(tri, exitPoint.G);
   const Vec<FT> e = pv - pu;
