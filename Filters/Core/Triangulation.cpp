@@ -116,6 +116,9 @@ bool Triangulation::Link(Id u, Id v, std::vector<Id>& out, std::vector<CellHandl
     return false;
   }
   // Consecutive cells around the edge share one link vertex: collect each once.
+  // Around the edge the link vertices form a cycle w0 w1 ... and cell i holds
+  // w_i and w_i+1, so a repeat is one of the last two vertices collected (the
+  // cell's new one may come first) or of the first two; no search of the list.
   const std::size_t first = out.size();
   auto start = this->DT.incident_cells(Delaunay::Edge(cell, i, j));
   auto cc = start;
@@ -129,11 +132,10 @@ bool Triangulation::Link(Id u, Id v, std::vector<Id>& out, std::vector<CellHandl
         continue;
       }
       const Id id = w->info();
-      bool seen = false;
-      for (std::size_t t = first; t < out.size() && !seen; ++t)
-      {
-        seen = out[t] == id;
-      }
+      const std::size_t count = out.size() - first;
+      const bool seen = count > 0 &&
+        (out.back() == id || out[first] == id ||
+          (count > 1 && (out[out.size() - 2] == id || out[first + 1] == id)));
       if (!seen)
       {
         out.push_back(id);

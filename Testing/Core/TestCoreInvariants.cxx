@@ -10,6 +10,7 @@
 #include "FlowComplexBuilder.h"
 #include "Persistence.h"
 #include "ProfileJumps.h"
+#include "Triangulation.h"
 
 #include <algorithm>
 #include <cmath>
@@ -398,8 +399,59 @@ void CheckDrawingAddsNoExactWalks()
   CHECK(drawnEnds == arcs); // each drawn line ends where its 2-3 arc says
 }
 
+/// Triangulation::Link skips repeats by where they can be in the cycle of link
+/// vertices, not by a search: against CGAL's own incident cells, every finite
+/// edge's link is each finite vertex of its cells once, and each recorded cell
+/// holds its facet.
+void CheckLinks(const std::string& name, const Cloud& cloud)
+{
+  const Triangulation tri(cloud);
+  const Delaunay& dt = tri.Dt();
+  std::size_t edges = 0;
+  for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e)
+  {
+    const VertexHandle a = e->first->vertex(e->second), b = e->first->vertex(e->third);
+    std::set<Id> expected;
+    auto start = dt.incident_cells(*e), c = start;
+    do
+    {
+      for (int k = 0; k < 4; ++k)
+      {
+        const VertexHandle w = c->vertex(k);
+        if (w != a && w != b && !dt.is_infinite(w))
+        {
+          expected.insert(w->info());
+        }
+      }
+    } while (++c != start);
+    std::vector<Id> link;
+    std::vector<CellHandle> cells;
+    // With and without a hint: the circulation then starts elsewhere.
+    for (const CellHandle hint : { CellHandle(), CellHandle(e->first) })
+    {
+      link.clear();
+      cells.clear();
+      CHECK(tri.Link(a->info(), b->info(), link, &cells, hint));
+      CHECK(link.size() == expected.size() && cells.size() == link.size());
+      CHECK(std::set<Id>(link.begin(), link.end()) == expected);
+      for (std::size_t k = 0; k < link.size() && k < cells.size(); ++k)
+      {
+        CHECK(cells[k]->has_vertex(a) && cells[k]->has_vertex(b) &&
+          cells[k]->has_vertex(tri.Vertex(link[k])));
+      }
+    }
+    ++edges;
+  }
+  CHECK(edges > cloud.size());
+  std::cout << name << ": links of " << edges << " edges checked\n";
+}
+
 int main()
 {
+  CheckLinks("cube", Cube(2000, 51));
+  CheckLinks("exact grid", Grid(6, 0, 0));
+  CheckLinks("cospherical", Cospherical());
+  CheckLinks("sphere", Sphere(1500, 52));
   CheckDrawingAddsNoExactWalks();
   CheckDataModel();
   CheckProfileJumps();
