@@ -250,15 +250,25 @@ public:
   {
     const std::pair<double, double> n = z.Lambda.Numerator().to_interval();
     const std::pair<double, double> d = z.Lambda.Denominator().to_interval();
-    // Terms past the range of doubles give infinite bounds: then exactly.
-    this->Usable = std::isfinite(n.first) && std::isfinite(n.second) && std::isfinite(d.first) &&
-      std::isfinite(d.second) && d.first > 0;
-    if (!this->Usable)
+    const bool small = std::isfinite(n.first) && std::isfinite(n.second) &&
+      std::isfinite(d.first) && std::isfinite(d.second) && d.first > 0;
+    double low = 0, high = 0;
+    if (!small)
     {
-      return;
+      // Terms past the range of doubles (long exact walks: their reduced terms
+      // still grow with every step, and without this the rest of the walk was
+      // exact throughout): the truncated quotient is within an ulp.
+      const double x = z.Lambda.ToDouble();
+      if (!std::isfinite(x))
+      {
+        return;
+      }
+      low = std::nextafter(x, -HUGE_VAL);
+      high = std::nextafter(x, HUGE_VAL);
     }
+    this->Usable = true;
     CGAL::Protect_FPU_rounding<true> protect;
-    this->Lambda = IntervalFT(n) / IntervalFT(d);
+    this->Lambda = small ? IntervalFT(n) / IntervalFT(d) : IntervalFT(low, high);
     this->F = CachedFrame<IntervalFT>(tri, z.G);
     this->Pu = Vec<IntervalFT>::From(tri.Coord(u));
     this->Cm = this->F.C - (this->Pu + Vec<IntervalFT>::From(tri.Coord(v))) / IntervalFT(2);

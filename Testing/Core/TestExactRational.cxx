@@ -83,7 +83,7 @@ int main()
 
   // Chains of Moebius maps, as along a walk: the terms outgrow a double (the
   // reduction path) and the value stays exact.
-  long chainMismatches = 0, parallel = 0;
+  long chainMismatches = 0, parallel = 0, enclosureMisses = 0, hugeTerms = 0;
   for (int chain = 0; chain < 200; ++chain)
   {
     ExactRational lambda(u(g));
@@ -102,9 +102,37 @@ int main()
       lambda = Moebius(a, b, c, d, lambda);
       L = -(A + B * L) / (C + D * L);
       chainMismatches += !Same(lambda, L);
+      // What exact walks enclose lambda in when its terms are past doubles
+      // (FilteredJudge): the truncated quotient and its neighbours.
+      const double x = lambda.ToDouble();
+      hugeTerms += !std::isfinite(lambda.Numerator().to_interval().second) ||
+        !std::isfinite(lambda.Denominator().to_interval().second);
+      enclosureMisses += !(Q(std::nextafter(x, -HUGE_VAL)) <= L && L <= Q(std::nextafter(x, HUGE_VAL)));
     }
   }
   CHECK(chainMismatches == 0);
+  CHECK(enclosureMisses == 0);
+  // Terms past the range of doubles, quotients of any size.
+  for (int k = 0; k < 2000; ++k)
+  {
+    const int e = 600 + static_cast<int>(g() % 400);
+    const ExactRational n = ExactRational(std::ldexp(u(g), e)) * ExactRational(std::ldexp(u(g), e));
+    const ExactRational d = ExactRational(std::ldexp(u(g), e)) * ExactRational(std::ldexp(u(g), e)) +
+      ExactRational(std::ldexp(u(g), e - 700));
+    if (d.Sign() == CGAL::ZERO)
+    {
+      continue;
+    }
+    const ExactRational r = n / d * ExactRational(std::ldexp(1.0, static_cast<int>(g() % 1200) - 600));
+    const double x = r.ToDouble();
+    hugeTerms += !std::isfinite(r.Numerator().to_interval().second) ||
+      !std::isfinite(r.Denominator().to_interval().second);
+    const CGAL::Gmpq R = r.Quotient();
+    enclosureMisses += !std::isfinite(x) ||
+      !(Q(std::nextafter(x, -HUGE_VAL)) <= R && R <= Q(std::nextafter(x, HUGE_VAL)));
+  }
+  CHECK(enclosureMisses == 0);
+  CHECK(hugeTerms > 1000);
   CHECK(parallel == 0);
 
   // Zero denominators are refused, not divided by.
