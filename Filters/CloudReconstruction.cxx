@@ -5,9 +5,6 @@
 #include "ReconstructionConversion.h"
 #include "StableManifoldGeometry.h"
 
-#include "vtkNew.h"
-#include "vtkPolyData.h"
-
 #include <algorithm>
 #include <iomanip>
 #include <sstream>
@@ -84,9 +81,9 @@ CloudReconstructionReport ReconstructCloud(const std::vector<Point3>& samples,
   }
   phaseDone("Betti numbers");
   progress(0.95, "output");
-  vtkNew<vtkPolyData> arrows;
+  // No sponsor arrows: nothing here reads them (millions at 10^6 points).
   ReconstructionToVTK(fc, r.Carriers, r.Run, settings.OutputThreshold, triangles, tetrahedra,
-    outputs.Grid, outputs.Profile, arrows);
+    outputs.Grid, outputs.Profile, nullptr);
   if (report.TopologyError.empty())
   {
     TopologyToVTK(bars, settings.OutputThreshold, tdraw, outputs.Grid, outputs.Topology);

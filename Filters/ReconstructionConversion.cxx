@@ -27,7 +27,6 @@
 #include <cstring>
 #include <limits>
 #include <stdexcept>
-#include <utility>
 
 namespace flowrecon
 {
@@ -48,13 +47,21 @@ struct InsertionArrays
   vtkSmartPointer<vtkIntArray> Extension = NamedArray<vtkIntArray>(flowrecon::names::Extension);
   vtkSmartPointer<vtkIdTypeArray> Sponsor = NamedArray<vtkIdTypeArray>(flowrecon::names::Sponsor);
 
-  void Append(Id step, Id node, const flowrecon::Insertion& in)
+  /// `n` rows, to be filled by Set (millions of steps: no growth by copies).
+  void Resize(vtkIdType n)
   {
-    this->Step->InsertNextValue(step);
-    this->NodeId->InsertNextValue(node);
-    this->Priority->InsertNextValue(in.Priority);
-    this->Extension->InsertNextValue(static_cast<int>(in.Kind));
-    this->Sponsor->InsertNextValue(in.Sponsor);
+    for (vtkDataArray* a : this->All())
+    {
+      a->SetNumberOfTuples(n);
+    }
+  }
+  void Set(vtkIdType row, Id step, Id node, const flowrecon::Insertion& in)
+  {
+    this->Step->SetValue(row, step);
+    this->NodeId->SetValue(row, node);
+    this->Priority->SetValue(row, in.Priority);
+    this->Extension->SetValue(row, static_cast<int>(in.Kind));
+    this->Sponsor->SetValue(row, in.Sponsor);
   }
   std::array<vtkDataArray*, 5> All() const
   {
@@ -72,24 +79,42 @@ vtkSmartPointer<A> Sized(const char* name, vtkIdType n)
 }
 
 /// Nodes whose cells are in the reconstruction at t, by insertion step of
-/// their carrier: the order of the output cells.
+/// their carrier, then by id: the order of the output cells. A counting sort
+/// by step (nodes visited by id keep that order within a step): the same order
+/// as sorting (step, node) pairs, in linear time (millions of nodes).
 std::vector<Id> SelectedNodes(const FlowComplex& fc, const std::vector<Id>& carriers,
   const ReconstructionResult& run, double t)
 {
-  std::vector<std::pair<Id, Id>> selected; // (step of the carrier, node)
+  auto stepOf = [&](std::size_t i) -> Id {
+    const Id carrier = carriers[i];
+    return carrier >= 0 && run.Contains(carrier, t) ? run.Nodes[carrier].Step : -1;
+  };
+  // Nodes before each step, then its next free place (steps index run.Order).
+  std::vector<Id> start(run.Order.size() + 1, 0);
   for (std::size_t i = 0; i < fc.Nodes.size(); ++i)
   {
-    const Id carrier = carriers[i];
-    if (carrier >= 0 && run.Contains(carrier, t))
+    const Id step = stepOf(i);
+    if (step >= 0)
     {
-      selected.emplace_back(run.Nodes[carrier].Step, static_cast<Id>(i));
+      if (static_cast<std::size_t>(step) + 1 >= start.size())
+      {
+        start.resize(static_cast<std::size_t>(step) + 2, 0);
+      }
+      ++start[step + 1];
     }
   }
-  std::sort(selected.begin(), selected.end());
-  std::vector<Id> nodes(selected.size());
-  for (std::size_t k = 0; k < selected.size(); ++k)
+  for (std::size_t k = 1; k < start.size(); ++k)
   {
-    nodes[k] = selected[k].second;
+    start[k] += start[k - 1];
+  }
+  std::vector<Id> nodes(static_cast<std::size_t>(start.back()));
+  for (std::size_t i = 0; i < fc.Nodes.size(); ++i)
+  {
+    const Id step = stepOf(i);
+    if (step >= 0)
+    {
+      nodes[start[step]++] = static_cast<Id>(i);
+    }
   }
   return nodes;
 }
@@ -330,6 +355,47 @@ void GridBelow(
 namespace
 {
 
+/// The cells of `selected` in order (`cells`, `corners`: their numbers) as
+/// offsets and connectivity of id array type A, over points numbered by first
+/// use (`used`: fc's point of each), into `cellArray` and `types`. Filled
+/// through raw pointers: millions of cells.
+template <class A>
+void FillCells(const FlowComplex& fc, const std::vector<Id>& selected, const CellsByNode& triangles,
+  const CellsByNode& tetrahedra, vtkIdType cells, vtkIdType corners, vtkUnsignedCharArray* types,
+  std::vector<Id>& used, vtkCellArray* cellArray)
+{
+  using T = typename A::ValueType;
+  auto offsets = vtkSmartPointer<A>::New();
+  auto connectivity = vtkSmartPointer<A>::New();
+  offsets->SetNumberOfValues(cells + 1);
+  connectivity->SetNumberOfValues(corners);
+  T* const offset = offsets->GetPointer(0);
+  T* const corner = connectivity->GetPointer(0);
+  unsigned char* const type = types->GetPointer(0);
+  std::vector<T> pointOf(fc.Points.size(), T(-1));
+  used.reserve(fc.Points.size()); // address space only; no growth by copies
+  vtkIdType c = 0, k = 0;
+  for (const Id node : selected)
+  {
+    ForEachCell(fc, node, triangles, tetrahedra, [&](int cellType, int n, const Id* ids, Id) {
+      offset[c] = static_cast<T>(k);
+      type[c++] = static_cast<unsigned char>(cellType);
+      for (int j = 0; j < n; ++j)
+      {
+        T& p = pointOf[ids[j]];
+        if (p < 0)
+        {
+          p = static_cast<T>(used.size());
+          used.push_back(ids[j]);
+        }
+        corner[k++] = p;
+      }
+    });
+  }
+  offset[c] = static_cast<T>(k);
+  cellArray->SetData(offsets, connectivity);
+}
+
 void ReconstructionGrid(const FlowComplex& fc, const std::vector<Id>& carriers,
   const ReconstructionResult& run, double t, const CellsByNode& triangles,
   const CellsByNode& tetrahedra, vtkUnstructuredGrid* grid)
@@ -359,33 +425,20 @@ void ReconstructionGrid(const FlowComplex& fc, const std::vector<Id>& carriers,
   // a reconstructed solid has some 70 cells per sample, and 64-bit ids would be
   // a third of its memory.
   const bool narrow = corners < std::numeric_limits<std::int32_t>::max();
-  auto offsets = vtkSmartPointer<vtkTypeInt32Array>::New();
-  auto connectivity = vtkSmartPointer<vtkTypeInt32Array>::New();
-  auto wideOffsets = vtkSmartPointer<vtkIdTypeArray>::New();
-  auto wideConnectivity = vtkSmartPointer<vtkIdTypeArray>::New();
-  if (!narrow)
-  {
-    offsets = nullptr;
-    connectivity = nullptr;
-  }
   auto types = vtkSmartPointer<vtkUnsignedCharArray>::New();
+  types->SetNumberOfValues(cells);
+  std::vector<Id> used; // fc point of each output point
+  vtkNew<vtkCellArray> cellArray;
   if (narrow)
   {
-    offsets->SetNumberOfValues(cells + 1);
-    connectivity->SetNumberOfValues(corners);
+    FillCells<vtkTypeInt32Array>(
+      fc, selected, triangles, tetrahedra, cells, corners, types, used, cellArray);
   }
   else
   {
-    wideOffsets->SetNumberOfValues(cells + 1);
-    wideConnectivity->SetNumberOfValues(corners);
+    FillCells<vtkIdTypeArray>(
+      fc, selected, triangles, tetrahedra, cells, corners, types, used, cellArray);
   }
-  auto setOffset = [&](vtkIdType i, vtkIdType v) {
-    narrow ? offsets->SetValue(i, static_cast<std::int32_t>(v)) : wideOffsets->SetValue(i, v);
-  };
-  auto setCorner = [&](vtkIdType i, vtkIdType v) {
-    narrow ? connectivity->SetValue(i, static_cast<std::int32_t>(v)) : wideConnectivity->SetValue(i, v);
-  };
-  types->SetNumberOfValues(cells);
   auto step = Sized<vtkIntArray>(flowrecon::names::Step, cells);
   auto nodeId = Sized<vtkIntArray>(flowrecon::names::NodeId, cells);
   auto priority = Sized<vtkDoubleArray>(flowrecon::names::Priority, cells);
@@ -396,58 +449,44 @@ void ReconstructionGrid(const FlowComplex& fc, const std::vector<Id>& carriers,
   auto threshold = Sized<vtkDoubleArray>(flowrecon::names::Threshold, cells);
   auto owner = Sized<vtkIntArray>(flowrecon::names::Owner, cells);
   auto mult = Sized<vtkIntArray>(flowrecon::names::Multiplicity, cells);
-  std::vector<vtkIdType> pointOf(fc.Points.size(), -1);
-  std::vector<Id> used; // fc point of each output point
-  vtkIdType c = 0, k = 0;
-  auto add = [&](int type, int n, const Id* ids, Id node) {
-    const Id carrier = carriers[node];
-    const flowrecon::Insertion& in = steps[carrier];
-    setOffset(c, k);
-    for (int j = 0; j < n; ++j)
-    {
-      if (pointOf[ids[j]] < 0)
-      {
-        pointOf[ids[j]] = static_cast<vtkIdType>(used.size());
-        used.push_back(ids[j]);
-      }
-      setCorner(k++, pointOf[ids[j]]);
-    }
-    types->SetValue(c, static_cast<unsigned char>(type));
-    step->SetValue(c, static_cast<int>(in.Step));
-    nodeId->SetValue(c, static_cast<int>(node));
-    priority->SetValue(c, in.Priority);
-    extension->SetValue(c, static_cast<int>(in.Kind));
-    sponsor->SetValue(c, static_cast<int>(in.Sponsor));
-    index->SetValue(c, fc.Nodes[node].Index);
-    value->SetValue(c, fc.Nodes[node].Value);
-    threshold->SetValue(c, in.Threshold);
-    owner->SetValue(c, static_cast<int>(carrier));
-    mult->SetValue(c, fc.Nodes[node].Index == 1 ? multiplicity[node] : 0);
-    ++c;
-  };
+  // The cell data is per node: one run of equal values for its cells (one for
+  // a vertex or an edge, hundreds for a patch or a cone).
+  int* const ints[7] = { step->GetPointer(0), nodeId->GetPointer(0), extension->GetPointer(0),
+    sponsor->GetPointer(0), index->GetPointer(0), owner->GetPointer(0), mult->GetPointer(0) };
+  double* const doubles[3] = { priority->GetPointer(0), value->GetPointer(0),
+    threshold->GetPointer(0) };
+  vtkIdType c = 0;
   for (const Id node : selected)
   {
-    ForEachCell(fc, node, triangles, tetrahedra, add);
+    const flowrecon::Node& n = fc.Nodes[node];
+    const vtkIdType count =
+      (n.Index <= 1 ? 1 : 0) + triangles.RowSize(node) + tetrahedra.RowSize(node);
+    const Id carrier = carriers[node];
+    const flowrecon::Insertion& in = steps[carrier];
+    const int intValues[7] = { static_cast<int>(in.Step), static_cast<int>(node),
+      static_cast<int>(in.Kind), static_cast<int>(in.Sponsor), n.Index,
+      static_cast<int>(carrier), n.Index == 1 ? multiplicity[node] : 0 };
+    const double doubleValues[3] = { in.Priority, n.Value, in.Threshold };
+    for (int a = 0; a < 7; ++a)
+    {
+      std::fill_n(ints[a] + c, count, intValues[a]);
+    }
+    for (int a = 0; a < 3; ++a)
+    {
+      std::fill_n(doubles[a] + c, count, doubleValues[a]);
+    }
+    c += count;
   }
-  setOffset(c, k);
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(static_cast<vtkIdType>(used.size()));
   auto original = Sized<vtkIdTypeArray>(flowrecon::names::OriginalPointIds, static_cast<vtkIdType>(used.size()));
+  double* const xyz = vtkDoubleArray::SafeDownCast(points->GetData())->GetPointer(0);
+  vtkIdType* const ids = original->GetPointer(0);
   for (std::size_t p = 0; p < used.size(); ++p)
   {
-    points->SetPoint(static_cast<vtkIdType>(p), fc.Points[used[p]].data());
-    original->SetValue(static_cast<vtkIdType>(p),
-      used[p] < fc.NumberOfInputPoints ? static_cast<vtkIdType>(used[p]) : -1);
-  }
-  vtkNew<vtkCellArray> cellArray;
-  if (narrow)
-  {
-    cellArray->SetData(offsets, connectivity);
-  }
-  else
-  {
-    cellArray->SetData(wideOffsets, wideConnectivity);
+    std::copy_n(fc.Points[used[p]].data(), 3, xyz + 3 * p);
+    ids[p] = used[p] < fc.NumberOfInputPoints ? static_cast<vtkIdType>(used[p]) : -1;
   }
   grid->Initialize();
   grid->SetPoints(points);
@@ -465,16 +504,18 @@ void ReconstructionGrid(const FlowComplex& fc, const std::vector<Id>& carriers,
 void ProfileTable(const FlowComplex& fc, const ReconstructionResult& run, double t, vtkTable* profile)
 {
   const auto& steps = run.Nodes;
+  const vtkIdType rows = static_cast<vtkIdType>(run.Order.size());
   InsertionArrays rowInsertion;
-  auto pIndex = NamedArray<vtkIntArray>(flowrecon::names::Index);
-  auto pThreshold = NamedArray<vtkDoubleArray>(flowrecon::names::Threshold);
-  for (std::size_t k = 0; k < run.Order.size(); ++k)
+  rowInsertion.Resize(rows);
+  auto pIndex = Sized<vtkIntArray>(flowrecon::names::Index, rows);
+  auto pThreshold = Sized<vtkDoubleArray>(flowrecon::names::Threshold, rows);
+  for (vtkIdType k = 0; k < rows; ++k)
   {
     const Id node = run.Order[k];
     const flowrecon::Insertion& in = steps[node];
-    rowInsertion.Append(static_cast<Id>(k), node, in);
-    pIndex->InsertNextValue(fc.Nodes[node].Index);
-    pThreshold->InsertNextValue(in.Threshold);
+    rowInsertion.Set(k, static_cast<Id>(k), node, in);
+    pIndex->SetValue(k, fc.Nodes[node].Index);
+    pThreshold->SetValue(k, in.Threshold);
   }
   profile->Initialize();
   for (vtkDataArray* a : rowInsertion.All())
@@ -499,23 +540,38 @@ void SponsorArrows(const FlowComplex& fc, const ReconstructionResult& run, doubl
   // the point copy of Priority.
   auto direction = NamedArray<vtkDoubleArray>(flowrecon::names::Direction, 3);
   auto pointPriority = NamedArray<vtkDoubleArray>(flowrecon::names::Priority);
+  auto drawn = [&](Id node) { return run.Contains(node, t) && steps[node].Sponsor >= 0; };
+  // Counted first: millions of arrows fill preallocated arrays.
+  vtkIdType n = 0;
   for (const Id node : run.Order)
   {
-    const flowrecon::Insertion& in = steps[node];
-    if (!run.Contains(node, t) || in.Sponsor < 0)
+    n += drawn(node) ? 1 : 0;
+  }
+  arrowPoints->SetNumberOfPoints(2 * n);
+  lines->AllocateExact(n, 2 * n);
+  arrowInsertion.Resize(n);
+  direction->SetNumberOfTuples(2 * n);
+  pointPriority->SetNumberOfValues(2 * n);
+  vtkIdType a = 0;
+  for (const Id node : run.Order)
+  {
+    if (!drawn(node))
     {
       continue;
     }
+    const flowrecon::Insertion& in = steps[node];
     const auto& from = fc.Nodes[in.Sponsor].Location;
     const auto& to = fc.Nodes[node].Location;
-    const vtkIdType ids[2] = { arrowPoints->InsertNextPoint(from.data()),
-      arrowPoints->InsertNextPoint(to.data()) };
+    const vtkIdType ids[2] = { 2 * a, 2 * a + 1 };
+    arrowPoints->SetPoint(ids[0], from.data());
+    arrowPoints->SetPoint(ids[1], to.data());
     lines->InsertNextCell(2, ids);
-    arrowInsertion.Append(in.Step, node, in);
-    direction->InsertNextTuple3(to[0] - from[0], to[1] - from[1], to[2] - from[2]);
-    direction->InsertNextTuple3(0, 0, 0);
-    pointPriority->InsertNextValue(in.Priority);
-    pointPriority->InsertNextValue(in.Priority);
+    arrowInsertion.Set(a, in.Step, node, in);
+    direction->SetTuple3(ids[0], to[0] - from[0], to[1] - from[1], to[2] - from[2]);
+    direction->SetTuple3(ids[1], 0, 0, 0);
+    pointPriority->SetValue(ids[0], in.Priority);
+    pointPriority->SetValue(ids[1], in.Priority);
+    ++a;
   }
   arrows->Initialize();
   arrows->SetPoints(arrowPoints);

@@ -278,7 +278,10 @@ void DrawStableManifolds(const std::vector<Point3>& points, const BuildOptions& 
     }
   }
   std::vector<Id> patchBegin(static_cast<std::size_t>(nFacets) + 1, -1), patchEnd(patchBegin);
-  std::vector<std::array<Id, 3>> walked; // triangles of every walked patch, for the cones
+  // Triangles of every walked patch, kept for the cones only (without cones
+  // they would copy fc.Triangles: 24 B per drawn triangle).
+  std::vector<std::array<Id, 3>> walked;
+  Id walkedCount = 0;
   const std::size_t chunk = 4096;
   Id fallbacks = 0;
   for (std::size_t begin = 0; begin < facets.size(); begin += chunk)
@@ -315,6 +318,7 @@ void DrawStableManifolds(const std::vector<Point3>& points, const BuildOptions& 
       }
       fc.NodePoint[node] = offset; // Constructed[0] is the critical point
       patchBegin[f] = static_cast<Id>(walked.size());
+      walkedCount += static_cast<Id>(patch.Triangles.size());
       for (const auto& t : patch.Triangles)
       {
         std::array<Id, 3> w;
@@ -322,7 +326,10 @@ void DrawStableManifolds(const std::vector<Point3>& points, const BuildOptions& 
         {
           w[j] = t[j] >= 0 ? in.InputId[t[j]] : offset + (-1 - t[j]);
         }
-        walked.push_back(w);
+        if (!cones.empty())
+        {
+          walked.push_back(w);
+        }
         if (drawPatch[f])
         {
           fc.Triangles.push_back(w);
@@ -333,12 +340,26 @@ void DrawStableManifolds(const std::vector<Point3>& points, const BuildOptions& 
       patch = Patch();
     }
     // The drawing so far predicts the rest: refuse before it no longer fits.
-    const double perFacet = static_cast<double>(walked.size()) / static_cast<double>(last);
+    const double perFacet = static_cast<double>(walkedCount) / static_cast<double>(last);
     RequireMemory(BytesPerCell * perFacet * static_cast<double>(facets.size() - last) *
         (cones.empty() ? 1.0 : 2.0),
       "drawing the stable manifolds of " + std::to_string(patches.size() + cones.size()) +
         " nodes of a " + std::to_string(points.size()) + "-point cloud",
       advice);
+    if (begin == 0 && last < facets.size())
+    {
+      // Room for the predicted rest and a quarter more (which fits: checked
+      // above), so that the largest vectors do not grow by copies into fresh,
+      // page-faulting memory. Only address space until written.
+      const double scale = 1.25 * static_cast<double>(facets.size()) / static_cast<double>(last);
+      auto room = [&](auto& v, std::size_t fixed) {
+        v.reserve(fixed + static_cast<std::size_t>(scale * static_cast<double>(v.size() - fixed)));
+      };
+      room(fc.Points, points.size());
+      room(fc.Triangles, 0);
+      room(fc.TriangleNode, 0);
+      room(walked, 0);
+    }
   }
   fc.Report.ExactFallbacks += fallbacks;
 
