@@ -3,6 +3,7 @@
 #include "CappedReconstruction.h"
 #include "CellHomology.h"
 #include "ReconstructionConversion.h"
+#include "TopologyConversion.h"
 #include "StableManifoldGeometry.h"
 
 #include <algorithm>

@@ -4,6 +4,7 @@
 #include "FlowReconNames.h"
 #include "MemoryGuard.h"
 #include "ProfileJumps.h"
+#include "TopologyConversion.h" // Unbounded
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -138,76 +139,6 @@ void ForEachCell(const FlowComplex& fc, Id node, const CellsByNode& triangles,
   for (const Id j : tetrahedra.Row(node))
   {
     f(VTK_TETRA, 4, fc.Tetrahedra[j].data(), node);
-  }
-}
-
-/// Thresholds from here on are "no bound" in the charts' marks: the GUI's way
-/// to say every step (its fields take no inf), which would squash a chart.
-constexpr double Unbounded = 1e308;
-
-/// The topology profile drawn as steps, for its line chart: a chart joins
-/// rows with slopes, and the rows (one per change) are what the command line
-/// writes, so the steps go to the table's field data. Two points per row, at
-/// the start and the end of its interval, and two at x = t for a vertical mark
-/// (`t_r`, NaN elsewhere) from 0 to the largest Betti number.
-void AddStaircase(const std::vector<TopologyStep>& profile, double t, double limit,
-  vtkFieldData* field)
-{
-  if (profile.empty())
-  {
-    return;
-  }
-  const char* names[4] = { flowrecon::names::Threshold, "b0", "b1", "b2" };
-  vtkSmartPointer<vtkDoubleArray> steps[5];
-  for (int k = 0; k < 4; ++k)
-  {
-    steps[k] = NamedArray<vtkDoubleArray>(names[k]);
-  }
-  steps[4] = NamedArray<vtkDoubleArray>("t_r");
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  double height = 1;
-  for (const TopologyStep& step : profile)
-  {
-    for (int d = 0; d < 3; ++d)
-    {
-      height = std::max(height, static_cast<double>(step.Betti[d]));
-    }
-  }
-  // A point of the curves (of `step`, NaN without) and of the mark.
-  auto point = [&](double x, const TopologyStep* step, double m) {
-    steps[0]->InsertNextValue(x);
-    for (int d = 0; d < 3; ++d)
-    {
-      steps[d + 1]->InsertNextValue(step ? static_cast<double>(step->Betti[d]) : nan);
-    }
-    steps[4]->InsertNextValue(m);
-  };
-  const bool mark = t < Unbounded;
-  if (mark && t <= profile.front().Threshold)
-  {
-    point(t, nullptr, 0); // before the first interval: the mark alone
-    point(t, nullptr, height);
-  }
-  for (std::size_t k = 0; k < profile.size(); ++k)
-  {
-    const double start = profile[k].Threshold;
-    // The last interval ends at the limit; with none, at t or where it starts.
-    double end = k + 1 < profile.size() ? profile[k + 1].Threshold : limit;
-    if (end >= Unbounded)
-    {
-      end = mark ? std::max(start, t) : start;
-    }
-    point(start, &profile[k], nan);
-    if (mark && start < t && t <= end)
-    {
-      point(t, &profile[k], 0);
-      point(t, &profile[k], height);
-    }
-    point(end, &profile[k], nan);
-  }
-  for (auto& a : steps)
-  {
-    field->AddArray(a);
   }
 }
 
@@ -639,78 +570,6 @@ FilteredCells ReconstructionCells(const FlowComplex& fc, const std::vector<Id>& 
     });
   }
   return cells;
-}
-
-void UnderSamplingToVTK(const std::vector<TopologyChange>& changes,
-  const std::vector<Id>& cellNodes, const FlowComplex& fc, vtkPolyData* output)
-{
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  vtkNew<vtkCellArray> vertices;
-  auto threshold = NamedArray<vtkDoubleArray>(flowrecon::names::Threshold);
-  auto dimension = NamedArray<vtkIntArray>(flowrecon::names::Dimension);
-  auto change = NamedArray<vtkIntArray>(flowrecon::names::Change);
-  auto spacing = NamedArray<vtkDoubleArray>(flowrecon::names::Spacing);
-  auto nodeId = NamedArray<vtkIdTypeArray>(flowrecon::names::NodeId);
-  for (const TopologyChange& c : changes)
-  {
-    const Id node = c.Cell >= 0 && c.Cell < static_cast<Id>(cellNodes.size()) ? cellNodes[c.Cell] : -1;
-    if (node < 0)
-    {
-      continue;
-    }
-    const vtkIdType id = points->InsertNextPoint(fc.Nodes[node].Location.data());
-    vertices->InsertNextCell(1, &id);
-    threshold->InsertNextValue(c.Threshold);
-    dimension->InsertNextValue(c.Dimension);
-    change->InsertNextValue(c.Change);
-    // The diameter of the empty ball at the node's critical point: the gap in
-    // the sampling there (a sample's node has value 0: its nearest Gabriel edge
-    // would do, but a sample brings no change above t_r > 1).
-    spacing->InsertNextValue(2 * fc.Nodes[node].Value);
-    nodeId->InsertNextValue(node);
-  }
-  output->Initialize();
-  output->SetPoints(points);
-  output->SetVerts(vertices);
-  for (vtkDataArray* a : std::initializer_list<vtkDataArray*>{ threshold, dimension, change,
-         spacing, nodeId })
-  {
-    output->GetPointData()->AddArray(a);
-  }
-  output->GetPointData()->SetActiveScalars(flowrecon::names::Threshold);
-}
-
-void TopologyToVTK(const std::vector<Bar>& bars, double t, double limit,
-  vtkUnstructuredGrid* grid, vtkTable* table)
-{
-  const std::array<Id, 4> betti = BettiNumbersBelow(bars, t);
-  auto field = NamedArray<vtkIdTypeArray>(flowrecon::names::BettiNumbers);
-  for (int d = 0; d < 3; ++d)
-  {
-    field->InsertNextValue(static_cast<vtkIdType>(betti[d]));
-  }
-  grid->GetFieldData()->AddArray(field);
-
-  table->Initialize();
-  auto threshold = NamedArray<vtkDoubleArray>(flowrecon::names::Threshold);
-  vtkSmartPointer<vtkIdTypeArray> b[3] = { NamedArray<vtkIdTypeArray>("b0"),
-    NamedArray<vtkIdTypeArray>("b1"), NamedArray<vtkIdTypeArray>("b2") };
-  const std::vector<TopologyStep> profile = TopologyProfile(bars, 1, limit);
-  for (const TopologyStep& step : profile)
-  {
-    threshold->InsertNextValue(step.Threshold);
-    for (int d = 0; d < 3; ++d)
-    {
-      b[d]->InsertNextValue(static_cast<vtkIdType>(step.Betti[d]));
-    }
-  }
-  table->AddColumn(threshold);
-  for (auto& column : b)
-  {
-    table->AddColumn(column);
-  }
-  AddStaircase(profile, t, limit, table->GetFieldData());
 }
 
 } // namespace flowrecon

@@ -25,6 +25,7 @@ vtk_module_add_module(FlowRecon::Filters
     ${_flowrecon_filters_dir}/ReconstructionReport.h
     ${_flowrecon_filters_dir}/SamplesFromVTK.h
     ${_flowrecon_filters_dir}/SimplificationConversion.h
+    ${_flowrecon_filters_dir}/TopologyConversion.h
     ${_flowrecon_filters_dir}/VtkFilePoints.h
     ${_flowrecon_filters_dir}/VtkMessageCapture.h
     ${_flowrecon_filters_dir}/XmlBlockHeaders.h
@@ -43,6 +44,7 @@ vtk_module_add_module(FlowRecon::Filters
     ${_flowrecon_filters_dir}/ReconstructionReport.cxx
     ${_flowrecon_filters_dir}/SamplesFromVTK.cxx
     ${_flowrecon_filters_dir}/SimplificationConversion.cxx
+    ${_flowrecon_filters_dir}/TopologyConversion.cxx
     ${_flowrecon_filters_dir}/VtkFilePoints.cxx
     ${_flowrecon_filters_dir}/VtkMessageCapture.cxx
     ${_flowrecon_filters_dir}/XmlBlockHeaders.cxx

@@ -6,6 +6,7 @@
 #include "FlowReconNames.h"
 #include "MemoryGuard.h"
 #include "ReconstructionConversion.h"
+#include "TopologyConversion.h"
 #include "Retriangulation.h"
 #include "Reconstruction.h"
 #include "Simplification.h"

@@ -1,0 +1,46 @@
+// The topology outputs of Flow Reconstruction built from the core's results:
+// the Betti numbers and topology profile at a threshold, and the under-sampling
+// warnings. Shared by vtkFlowReconstruction and the command line.
+#ifndef TopologyConversion_h
+#define TopologyConversion_h
+
+#include "CellHomology.h" // core data structure
+#include "FlowComplex.h"  // core data structure
+
+#include <vector>
+
+class vtkPolyData;
+class vtkTable;
+class vtkUnstructuredGrid;
+
+namespace flowrecon
+{
+
+/// Thresholds from here on are "no bound" in the charts' marks: the GUI's way
+/// to say every step (its fields take no inf), which would squash a chart.
+constexpr double Unbounded = 1e308;
+
+/// The under-sampling warnings as points (vtkPolyData with vertices): one per
+/// change, at the critical point of the node whose cell brings it
+/// (`cellNodes`: the node of each cell of ReconstructionCells), point data
+/// `Threshold` (the t_r above which it happens), `Dimension`, `Change` (+1 a
+/// class appears, -1 one goes), `Spacing` (twice the node's critical value: the
+/// diameter of the empty ball there) and `NodeId`.
+void UnderSamplingToVTK(const std::vector<TopologyChange>& changes,
+  const std::vector<Id>& cellNodes, const FlowComplex& fc, vtkPolyData* output);
+
+/// Field data `BettiNumbers` (b0, b1, b2 of the cells below t) on `grid`, and
+/// the topology profile in `table`: columns `Threshold`, `b0`, `b1`, `b2`, one
+/// row per change, each holding for t_r in (Threshold, next row's Threshold]
+/// (the last up to `limit`). The table's field data holds the same profile as
+/// steps for a line chart: arrays `Threshold`, `b0`, `b1`, `b2` with two
+/// points per row (the start and the end of its interval; a `limit` >= 1e308,
+/// every step, ends the last at t or at its start) and two at x = `t` (none
+/// for t >= 1e308), where `t_r` (NaN elsewhere) draws a vertical mark from 0
+/// to the largest Betti number.
+void TopologyToVTK(const std::vector<Bar>& bars, double t, double limit,
+  vtkUnstructuredGrid* grid, vtkTable* table);
+
+} // namespace flowrecon
+
+#endif
