@@ -18,7 +18,7 @@ namespace flowrecon
 double AvailableMemory();
 
 /// Throws InputError("<what> needs about X GB, Y GB are available; <advice>")
-/// when `bytes` exceeds AvailableMemory().
+/// when `bytes` exceeds AvailableMemory(), also after ReleaseFreedMemory().
 void RequireMemory(double bytes, const std::string& what, const std::string& advice);
 
 /// Hands the pages of freed blocks back to the system (tbbmalloc's buffers and
