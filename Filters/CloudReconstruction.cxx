@@ -30,9 +30,10 @@ CloudReconstructionReport ReconstructCloud(const std::vector<Point3>& samples,
       r = ReconstructBelow(
         samples, build, settings.PersistenceThreshold, settings.Cap, defer, progress.Range(0, 0.7));
       phaseDone("flow complex, simplification, reconstruction queue");
-      DrawStableManifolds(samples, build, NodesToDraw(r.Complex.Nodes, r.Carriers, r.Run, tdraw),
-        r.Complex, progress.Range(0.7, 0.9), settings.Advice, &r.Cones,
-        r.Triangulation.get());
+      const std::vector<Id> draw = NodesToDraw(r.Complex.Nodes, r.Carriers, r.Run, tdraw);
+      CompleteCones(r, draw);
+      DrawStableManifolds(samples, build, draw, r.Complex, progress.Range(0.7, 0.9),
+        settings.Advice, &r.Cones, r.Triangulation.get());
       break;
     }
     catch (const Degenerate&)
@@ -43,13 +44,16 @@ CloudReconstructionReport ReconstructCloud(const std::vector<Point3>& samples,
       }
     }
   }
-  r.Triangulation.reset();
   CloudReconstructionReport report;
   {
     const Timings& t = r.Complex.Time;
     std::ostringstream work;
     work << "patches deferred: " << r.DeferredPatches << " of " << r.Complex.CountByIndex()[2]
          << ", walked late: " << r.WalkedLate << ", owners found by replays: " << r.ReplayedOwners
+         << "\nflow lines deferred: " << (r.Lines ? r.Lines->LinesDeferred() : 0) << " of "
+         << 2 * r.Complex.CountByIndex()[2]
+         << ", followed late: " << (r.Lines ? r.Lines->LinesFollowed() : 0)
+         << (r.EagerBecause.empty() ? "" : "\nbuilt again without deferral: " + r.EagerBecause)
          << std::fixed << std::setprecision(3) << "\nflow complex (s): Delaunay " << t.Delaunay
          << "; critical points " << t.CriticalPoints << "; stable manifolds " << t.StableManifolds
          << "; unstable manifolds " << t.UnstableManifolds << "; assembly " << t.Assembly
@@ -57,6 +61,8 @@ CloudReconstructionReport ReconstructCloud(const std::vector<Point3>& samples,
          << r.QueueSeconds << ";";
     report.Work = work.str();
   }
+  r.Lines.reset(); // it refers to the triangulation
+  r.Triangulation.reset();
   FlowComplex& fc = r.Complex;
   phaseDone("drawing");
   const CellsByNode triangles = PositionsByRow(fc.TriangleNode, fc.Nodes.size());

@@ -66,7 +66,18 @@ void Builder::AssembleHasseDiagram()
   for (std::size_t i = 0; i < this->Ends.size(); ++i)
   {
     const Id node = this->Base2 + static_cast<Id>(i);
-    if (this->Ends[i][0] == this->Ends[i][1])
+    // A pending flow line (SuccessorForest::Pending) has no arc yet.
+    if (this->Ends[i][0] < 0 || this->Ends[i][1] < 0)
+    {
+      for (const std::int32_t end : this->Ends[i])
+      {
+        if (end >= 0)
+        {
+          fc.Arcs.emplace_back(node, end, 1);
+        }
+      }
+    }
+    else if (this->Ends[i][0] == this->Ends[i][1])
     {
       fc.Arcs.emplace_back(node, this->Ends[i][0], 2);
     }

@@ -35,6 +35,9 @@ inline double Seconds(Clock::time_point since)
 /// simplex of 2..4 points; double constructions, relative to its first vertex.
 std::array<double, 4> CentreAndSquaredRadius(const KPoint* p, std::size_t n);
 
+/// The largest float at most x >= 0 (FLT_MAX above it): a lower bound stays one.
+float RoundedDown(double x);
+
 /// The one-line refusal of a cloud whose critical values underflow.
 extern const char* const TooClose;
 

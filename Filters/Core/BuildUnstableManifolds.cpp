@@ -9,12 +9,30 @@
 #include "SuccessorForest.h"
 
 #include <algorithm>
+#include <tbb/enumerable_thread_specific.h>
+
 #include <cmath>
+#include <limits>
+#include <tuple>
 
 namespace flowrecon
 {
 namespace internal
 {
+
+float RoundedDown(double x)
+{
+  if (!(x < static_cast<double>(std::numeric_limits<float>::max())))
+  {
+    return std::numeric_limits<float>::max();
+  }
+  float f = static_cast<float>(x);
+  if (static_cast<double>(f) > x)
+  {
+    f = std::nextafter(f, 0.0f);
+  }
+  return f;
+}
 
 void Builder::TraceUnstableManifolds()
 {
@@ -36,32 +54,30 @@ void Builder::TraceUnstableManifolds()
       *this->Tri, maximumOfCell, fc.InfinityNode, stub, this->Options.UnstableManifolds,
       this->Options.ExactOnly);
     const bool record = this->Options.UnstableManifolds;
+    // Deferred flow lines: stopped where their ratio is certainly above the
+    // deferral ratio (a geometry-free build only: drawing needs every line).
+    const double defer = this->Options.DeferFlowLinesAboveRatio;
+    const bool stop = defer < HUGE_VAL && !record && !this->Options.StableManifolds;
+    tbb::enumerable_thread_specific<std::vector<PendingFlowLine>> pending;
     // The two flow lines of index-2 point i: Ends[i], and their polylines when
     // recording (which memoises NEXT and shares tails, so runs on this thread).
     auto flowLines = [&](std::size_t i) {
       const Id node = this->Base2 + static_cast<Id>(i);
       const auto& f = this->Cs.Facets[i].Vertices;
-      const CellHandle cell = this->Tri->Cell(this->Cs.Facets[i].Cell);
-      const int opposite = this->Cs.Facets[i].Opposite;
-      CellHandle sides[2] = { cell, cell->neighbor(opposite) };
-      // Which cell holds the facet depends on the triangulation's cell order, so
-      // order the two sides by their apex (vertex index, infinite last) to keep
-      // the output deterministic.
+      const std::array<CellHandle, 2> sides =
+        FlowLineSides(*this->Tri, this->Cs.Facets[i].Cell, this->Cs.Facets[i].Opposite);
+      if (!this->PatchFaces.empty())
       {
-        const VertexHandle a0 = cell->vertex(opposite);
-        const VertexHandle a1 = sides[1]->vertex(sides[1]->index(cell));
-        const Id k0 = this->Tri->Dt().is_infinite(a0) ? this->M : a0->info();
-        const Id k1 = this->Tri->Dt().is_infinite(a1) ? this->M : a1->info();
-        if (k1 < k0)
-        {
-          std::swap(sides[0], sides[1]);
-        }
-        if (!this->PatchFaces.empty())
-        {
-          this->PatchFaces[i] = static_cast<char>(PatchFacesSide(*this->Tri, this->Cs, i) ^ (k1 < k0 ? 1 : 0));
-        }
+        const bool swapped = sides[0] != this->Tri->Cell(this->Cs.Facets[i].Cell);
+        this->PatchFaces[i] = static_cast<char>(PatchFacesSide(*this->Tri, this->Cs, i) ^ (swapped ? 1 : 0));
       }
       Point3 centre{ { 0, 0, 0 } };
+      double limitSq = HUGE_VAL;
+      if (stop)
+      {
+        const KPoint pts[3] = { this->Tri->KCoord(f[0]), this->Tri->KCoord(f[1]), this->Tri->KCoord(f[2]) };
+        limitSq = defer * defer * CentreAndSquaredRadius(pts, 3)[3];
+      }
       if (record)
       {
         const KPoint pts[3] = { this->Tri->KCoord(f[0]), this->Tri->KCoord(f[1]), this->Tri->KCoord(f[2]) };
@@ -98,7 +114,14 @@ void Builder::TraceUnstableManifolds()
         else
         {
           const Id id = this->Tri->CellId(sides[s]);
-          line.Target = forest.Root(id);
+          double boundSq = 0;
+          line.Target = forest.RootBelow(id, limitSq, &boundSq);
+          if (line.Target == SuccessorForest::Pending)
+          {
+            // In the triangulation's units, like the values (ScaleBack).
+            pending.local().push_back(
+              PendingFlowLine{ static_cast<std::int32_t>(node), s, RoundedDown(std::sqrt(boundSq)) });
+          }
           if (record)
           {
             line.Points.push_back(forest.Circumcentre(id));
@@ -170,6 +193,15 @@ void Builder::TraceUnstableManifolds()
       throw;
     }
     fc.Report.ExactFallbacks += forest.ExactFallbacks();
+    fc.PendingFlowLines.clear();
+    for (const std::vector<PendingFlowLine>& lines : pending)
+    {
+      fc.PendingFlowLines.insert(fc.PendingFlowLines.end(), lines.begin(), lines.end());
+    }
+    std::sort(fc.PendingFlowLines.begin(), fc.PendingFlowLines.end(),
+      [](const PendingFlowLine& a, const PendingFlowLine& b) {
+        return std::tie(a.Node, a.Side) < std::tie(b.Node, b.Side);
+      });
   }
 }
 

@@ -21,6 +21,7 @@ CappedReconstruction Attempt(const std::vector<Point3>& points, const BuildOptio
   build.StableManifolds = false;
   build.UnstableManifolds = false;
   build.DeferPatchesAboveRatio = defer ? cap : HUGE_VAL;
+  build.DeferFlowLinesAboveRatio = defer ? FlowLineDeferralRatio(cap, tp) : HUGE_VAL;
   // The build's triangulation is kept: the deferred patches and the drawing
   // walk on it (computing it again cost a quarter of a torus's run).
   r.Complex = BuildFlowComplex(points, build, progress.Range(0, 0.7), &r.Triangulation);
@@ -41,12 +42,45 @@ CappedReconstruction Attempt(const std::vector<Point3>& points, const BuildOptio
     return seconds;
   };
   r.Simplified = tp >= 1; // below 1 nothing is cancelled
-  const bool late = !fc.DeferredPatches.empty();
+  if (!fc.PendingFlowLines.empty())
+  {
+    r.Lines = std::make_unique<DeferredFlowLines>(fc, r.Cones, *r.Triangulation);
+    std::vector<PendingFlowLine>().swap(fc.PendingFlowLines);
+    if (r.Simplified)
+    {
+      // The likely lowers of 2-3 cancellations: their Out lists move (see
+      // DeferredFlowLines.h). Any other one makes the run start again eagerly.
+      std::vector<Id> pivots;
+      for (const Arc& a : r.Cones)
+      {
+        if (r.Lines->IsPending(a.Lower) &&
+          PersistenceRatio(fc.Nodes[a.Upper].Value, fc.Nodes[a.Lower].Value) <= tp * tp)
+        {
+          pivots.push_back(a.Lower);
+        }
+      }
+      r.Lines->Follow(pivots);
+      r.Lines->CompleteRawArcs(fc.Arcs);
+    }
+  }
+  const bool late = !fc.DeferredPatches.empty() || r.Lines;
   if (r.Simplified)
   {
     r.Simplification = Simplify(fc.Nodes, std::move(fc.Arcs), tp, progress.Range(0.7, 0.8), late);
     fc.Arcs = std::move(r.Simplification.Arcs); // the reconstruction grows on the simplified diagram
     r.Simplification.Arcs = {};
+  }
+  else if (r.Lines)
+  {
+    std::sort(fc.Arcs.begin(), fc.Arcs.end(),
+      [](const Arc& a, const Arc& b) { return std::tie(a.Lower, a.Upper) < std::tie(b.Lower, b.Upper); });
+  }
+  if (r.Lines)
+  {
+    r.Lines->SetSimplification(r.Simplified ? &r.Simplification : nullptr, tp);
+    // Upflow below the cap must see every arc it could use.
+    r.Lines->Follow(r.Lines->NodesBelowRatio(cap));
+    r.Lines->CompleteSimplifiedArcs(fc.Arcs);
   }
   r.SimplificationSeconds = lap();
   const std::vector<bool> survives =
@@ -63,7 +97,7 @@ CappedReconstruction Attempt(const std::vector<Point3>& points, const BuildOptio
   }
   DeferredReconstruction walked = ReconstructDeferred(fc,
     r.Simplified ? &r.Simplification : nullptr, *r.Triangulation, init, cap,
-    progress.Range(0.8, 1.0));
+    progress.Range(0.8, 1.0), r.Lines.get());
   r.Run = std::move(walked.Run);
   r.Carriers = std::move(walked.Carriers);
   r.WalkedLate = walked.WalkedLate;
@@ -74,6 +108,32 @@ CappedReconstruction Attempt(const std::vector<Point3>& points, const BuildOptio
 
 } // namespace
 
+double FlowLineDeferralRatio(double cap, double persistenceThreshold)
+{
+  return 1.25 * cap * std::max(1.0, persistenceThreshold);
+}
+
+void CompleteCones(CappedReconstruction& r, const std::vector<Id>& nodes)
+{
+  if (!r.Lines)
+  {
+    return;
+  }
+  double highest = -HUGE_VAL;
+  for (const Id n : nodes)
+  {
+    if (r.Complex.Nodes[n].Index == 3)
+    {
+      highest = std::max(highest, r.Complex.Nodes[n].Value);
+    }
+  }
+  if (highest > -HUGE_VAL)
+  {
+    r.Lines->FollowBoundsUpTo(highest);
+  }
+  r.Lines->CompleteRawArcs(r.Cones);
+}
+
 CappedReconstruction ReconstructBelow(const std::vector<Point3>& points, BuildOptions options,
   double persistenceThreshold, double cap, bool allowDeferral, const Progress& progress)
 {
@@ -82,20 +142,25 @@ CappedReconstruction ReconstructBelow(const std::vector<Point3>& points, BuildOp
     throw InputError("reconstruction: the cap must be above 1 and t_p a number");
   }
   const bool defer = allowDeferral && cap < HUGE_VAL && persistenceThreshold < cap;
+  std::string because;
   try
   {
     return Attempt(points, options, persistenceThreshold, cap, defer, progress);
   }
-  catch (const Degenerate&)
+  catch (const Degenerate& e)
   {
     if (!defer)
     {
       throw;
     }
+    because = e.what();
   }
-  // A deferred walk met a tie the build never saw: the eager build retries
-  // with another perturbation, as it would have.
-  return Attempt(points, options, persistenceThreshold, cap, false, progress);
+  // A deferred walk met a tie the build never saw, or the deferred flow lines
+  // could not be shown harmless: the eager build retries (with another
+  // perturbation, as it would have).
+  CappedReconstruction r = Attempt(points, options, persistenceThreshold, cap, false, progress);
+  r.EagerBecause = because;
+  return r;
 }
 
 } // namespace flowrecon

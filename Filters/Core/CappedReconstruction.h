@@ -5,6 +5,7 @@
 #ifndef flowrecon_CappedReconstruction_h
 #define flowrecon_CappedReconstruction_h
 
+#include "DeferredFlowLines.h"
 #include "FlowComplexBuilder.h"
 #include "Reconstruction.h"
 #include "Retriangulation.h"
@@ -36,14 +37,29 @@ struct CappedReconstruction
   Id DeferredPatches = 0; ///< patches not walked by the build
   Id WalkedLate = 0;      ///< deferred patches walked for the reconstruction
   Id ReplayedOwners = 0;  ///< owners of cancelled pairs found by the replays
+  /// The flow lines the build stopped (null: none), followed when needed; the
+  /// drawing of cones needs them (CompleteCones). Refers to Triangulation.
+  std::unique_ptr<DeferredFlowLines> Lines;
+  /// Why the deferring run was abandoned for an eager one ("" when it was not).
+  std::string EagerBecause;
   double SimplificationSeconds = 0, QueueSeconds = 0; ///< wall-clock, after the build
 };
+
+/// Makes Cones hold every 2-3 arc into the maxima among `nodes` (the nodes to
+/// draw): the deferred flow lines that may end there are followed. Throws
+/// Degenerate when a walk meets a tie (build again without deferral).
+void CompleteCones(CappedReconstruction& r, const std::vector<Id>& nodes);
+
+/// The ratio from which the capped build stops flow lines: above the cap and
+/// t_p by a margin, so that few lines are needed below them (DeferredFlowLines.h).
+double FlowLineDeferralRatio(double cap, double persistenceThreshold);
 
 /// Builds the Hasse diagram of `points` (`options`: seed, attempts; no geometry),
 /// simplifies it at `persistenceThreshold` (t_p < 1: none) and reconstructs it
 /// up to `cap` (> 1; HUGE_VAL: every step, which is the eager computation).
 /// With a finite cap above t_p, the patches of index-2 nodes at least `cap`
-/// times above the largest Gabriel edge are deferred; a walk that meets a tie
+/// times above the largest Gabriel edge are deferred, and so are the flow lines
+/// beyond FlowLineDeferralRatio; a walk that meets a tie
 /// in a deferred patch makes it start again without deferral (drawing a
 /// deferred patch later may meet one too: then call again with
 /// `allowDeferral` false). Throws what the stages throw (InputError, Aborted).

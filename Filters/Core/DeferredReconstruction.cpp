@@ -1,5 +1,6 @@
 #include "DeferredReconstruction.h"
 
+#include "DeferredFlowLines.h"
 #include "DeferredPatches.h"
 
 #include <algorithm>
@@ -9,7 +10,8 @@ namespace flowrecon
 {
 
 DeferredReconstruction ReconstructDeferred(FlowComplex& fc, SimplificationResult* s,
-  const Retriangulation& re, const std::vector<Id>& init, double cap, const Progress& progress)
+  const Retriangulation& re, const std::vector<Id>& init, double cap, const Progress& progress,
+  DeferredFlowLines* lines)
 {
   if (!(cap <= fc.DeferralRatio))
   {
@@ -31,6 +33,12 @@ DeferredReconstruction ReconstructDeferred(FlowComplex& fc, SimplificationResult
     r.WalkedLate += static_cast<Id>(nodes.size());
     return arcs;
   };
+  if (lines)
+  {
+    late.FlowLinesInto = [&](Id maximum) {
+      return lines->InChangesUpTo(fc.Nodes[maximum].Value, fc.Arcs);
+    };
+  }
   r.Run = Reconstruct(fc.Nodes, fc.Arcs, survives, init, cap, progress, late);
   r.Carriers = CellCarriers(r.Run, s);
   if (s)

@@ -16,6 +16,7 @@
 namespace flowrecon
 {
 
+class DeferredFlowLines;
 class Retriangulation;
 
 struct DeferredReconstruction
@@ -33,9 +34,13 @@ struct DeferredReconstruction
 /// The arcs walked are added to fc.Arcs, which stays sorted by (Lower, Upper).
 /// Throws InputError when these do not fit together, Degenerate when a late
 /// walk meets a tie the build never saw (build again without deferral).
+/// With `lines` (set up with the same simplification), the In lists of maxima
+/// also follow the deferred flow lines (DeferredFlowLines.h); fc.Arcs then
+/// lacks the 2-3 arcs of the lines not followed.
 DeferredReconstruction ReconstructDeferred(FlowComplex& fc,
   SimplificationResult* simplification, const Retriangulation& retriangulation,
-  const std::vector<Id>& initializationEdges, double cap, const Progress& progress);
+  const std::vector<Id>& initializationEdges, double cap, const Progress& progress,
+  DeferredFlowLines* lines = nullptr);
 
 } // namespace flowrecon
 

@@ -31,6 +31,16 @@ struct Node
   bool IsInfinity() const { return Simplex[0] < 0; }
 };
 
+/// A flow line (side 0 or 1, in the builder's order of the two cells of the
+/// node's triangle) stopped at a point of distance Bound: the maximum it
+/// reaches has a value above Bound (the distance grows along the flow).
+struct PendingFlowLine
+{
+  std::int32_t Node = -1;
+  std::int32_t Side = 0;
+  float Bound = 0; ///< rounded down (12 bytes a line: they are most lines)
+};
+
 /// Arc of the Hasse diagram from an index-i node to an index-(i+1) node.
 /// Multiplicity counts how many times the flow arrives: for 1->2 arcs the number of
 /// descending walks of the upper stable manifold ending on the Gabriel edge, for
@@ -145,6 +155,11 @@ struct FlowComplex
   /// those arcs is at least DeferralRatio. Empty for a complete diagram.
   std::vector<Id> DeferredPatches;
   double DeferralRatio = HUGE_VAL;
+
+  /// Flow lines of index-2 nodes not followed to their maximum
+  /// (BuildOptions::DeferFlowLinesAboveRatio), sorted: their 2-3 arcs are
+  /// missing. Empty for a complete diagram.
+  std::vector<PendingFlowLine> PendingFlowLines;
 
   /// Unstable manifolds of index-2 nodes: two flow lines each.
   std::vector<FlowLine> FlowLines;

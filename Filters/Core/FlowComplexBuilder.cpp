@@ -130,6 +130,10 @@ void Builder::ScaleBack()
   {
     back(fc.Points[k]);
   }
+  for (PendingFlowLine& line : fc.PendingFlowLines)
+  {
+    line.Bound = RoundedDown(std::ldexp(static_cast<double>(line.Bound), e));
+  }
   for (FlowLine& line : fc.FlowLines)
   {
     for (Point3& p : line.Points)

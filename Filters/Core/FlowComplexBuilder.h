@@ -30,6 +30,12 @@ struct BuildOptions
   /// of their 1-2 arcs is then >= it: no cancellation below it and no upflow
   /// below it uses them (DeferredPatches.h walks them when they are needed).
   double DeferPatchesAboveRatio = HUGE_VAL;
+  /// Without StableManifolds and UnstableManifolds: a flow line of an index-2
+  /// node x is stopped at the first Voronoi vertex certainly this many times
+  /// farther from the samples than x (listed in FlowComplex::PendingFlowLines,
+  /// no 2-3 arc): every ratio of its arc is above it. DeferredFlowLines.h
+  /// follows them when a stage needs them.
+  double DeferFlowLinesAboveRatio = HUGE_VAL;
 };
 
 /// The flow complex of `points`. Throws InputError for unusable input (non-finite

@@ -8,6 +8,7 @@
 #include <queue>
 #include <string>
 #include <tuple>
+#include <stdexcept>
 #include <unordered_map>
 
 namespace flowrecon
@@ -179,12 +180,17 @@ private:
         this->Consider(x, 1, 0, Extension::Regularization, c);
       }
     }
+    else if (this->Late && this->Nodes[c].Index == 3)
+    {
+      const std::vector<Id> in = this->InOfMaximum(c);
+      this->FetchLateArcs(in);
+      for (const Id x : in)
+      {
+        this->Consider(x, 1, 0, Extension::Regularization, c);
+      }
+    }
     else
     {
-      if (this->Late && this->Nodes[c].Index == 3)
-      {
-        this->FetchLateArcs(c);
-      }
       for (const Id x : g.In.Row(c))
       {
         this->Consider(x, 1, 0, Extension::Regularization, c);
@@ -220,13 +226,51 @@ private:
     }
   }
 
-  /// The In lists of the deferred faces of maximum `c` that its regularization
-  /// is about to insert (the sorted rows of Adjacency, for the same ties).
-  void FetchLateArcs(Id c)
+  /// In(c) of maximum `c`, sorted, with the changes deferred flow lines make.
+  std::vector<Id> InOfMaximum(Id c)
   {
-    const Adjacency& g = this->Graph;
+    const auto row = this->Graph.In.Row(c);
+    std::vector<Id> in(row.begin(), row.end());
+    if (!this->Late->FlowLinesInto)
+    {
+      return in;
+    }
+    for (const InListChange& change : this->Late->FlowLinesInto(c))
+    {
+      if (change.Upper != c && this->Result.Nodes[change.Upper].Step >= 0)
+      {
+        throw std::logic_error("reconstruction: a flow line into a maximum already inserted");
+      }
+      this->FlowLineChanges[change.Upper].push_back(change);
+    }
+    const auto it = this->FlowLineChanges.find(c);
+    if (it == this->FlowLineChanges.end())
+    {
+      return in;
+    }
+    for (const InListChange& change : it->second)
+    {
+      if (change.Added)
+      {
+        in.push_back(change.Lower);
+      }
+      else
+      {
+        in.erase(std::remove(in.begin(), in.end(), change.Lower), in.end());
+      }
+    }
+    this->FlowLineChanges.erase(it);
+    std::sort(in.begin(), in.end());
+    in.erase(std::unique(in.begin(), in.end()), in.end());
+    return in;
+  }
+
+  /// The In lists of the deferred faces in `in` (of a maximum) that its
+  /// regularization is about to insert.
+  void FetchLateArcs(const std::vector<Id>& in)
+  {
     std::vector<Id> ask;
-    for (const Id y : g.In.Row(c))
+    for (const Id y : in)
     {
       if (this->Late->Deferred[y] && this->Survives[y] && this->Result.Nodes[y].Step < 0 &&
         this->LateIn.find(y) == this->LateIn.end())
@@ -289,6 +333,7 @@ private:
   ReconstructionResult Result;
   const LateArcs* Late;
   std::unordered_map<Id, std::vector<Id>> LateIn;
+  std::unordered_map<Id, std::vector<InListChange>> FlowLineChanges;
 };
 
 } // namespace

@@ -79,11 +79,22 @@ ReconstructionResult Reconstruct(const std::vector<Node>& nodes, const std::vect
 /// Index-2 nodes whose 1-2 arcs `arcs` lacks (deferred patches, see
 /// DeferredPatches.h), and how to get them: Walk(ids) returns the arcs into
 /// those nodes. Every ratio of their 1-2 arcs is at least Ratio.
+/// A lower entering (Added) or leaving the In list of a maximum.
+struct InListChange
+{
+  Id Lower = -1, Upper = -1;
+  bool Added = true;
+};
+
 struct LateArcs
 {
   std::vector<char> Deferred; ///< one flag per node
   double Ratio = HUGE_VAL;
   std::function<std::vector<Arc>(const std::vector<Id>&)> Walk;
+  /// Optional: deferred flow lines (DeferredFlowLines.h). Called with each
+  /// maximum about to be inserted; returns the changes of the In lists of the
+  /// maxima not inserted yet that the lines it follows make.
+  std::function<std::vector<InListChange>(Id)> FlowLinesInto;
 };
 
 /// The same run, with the 1-2 arcs of `late.Deferred` nodes asked for when
@@ -91,7 +102,8 @@ struct LateArcs
 /// a maximum, so their arcs are asked for (all of one maximum at once) when a
 /// maximum is inserted. Needs tr <= late.Ratio (throws InputError otherwise);
 /// then it equals the run on the complete diagram (same steps, priorities,
-/// kinds, sponsors), by the argument of DeferredPatches.h.
+/// kinds, sponsors), by the argument of DeferredPatches.h. With FlowLinesInto,
+/// the In list of a maximum is the one of `arcs` changed by those calls.
 ReconstructionResult Reconstruct(const std::vector<Node>& nodes, const std::vector<Arc>& arcs,
   const std::vector<bool>& survives, const std::vector<Id>& initializationEdges, double tr,
   const Progress& progress, const LateArcs& late);

@@ -99,6 +99,7 @@ public:
     if (!this->RecordLowers)
     {
       result.Lowers.Offsets.assign(result.Pairs.size() + 1, 0);
+      result.Uppers.Offsets.assign(result.Pairs.size() + 1, 0);
     }
     result.HasLowers = this->RecordLowers;
     ResolveOwners(result, {});
@@ -168,8 +169,12 @@ private:
       // Rows of 2-3 pairs stay empty; the row is sorted in place.
       const std::vector<Id>& lowers = this->Lowers;
       const Id start = r.Lowers.ValueCount();
-      r.Lowers.AppendRow(lowers.begin(), this->Nodes[a].Index == 1 ? lowers.end() : lowers.begin());
+      const bool edge = this->Nodes[a].Index == 1;
+      r.Lowers.AppendRow(lowers.begin(), edge ? lowers.end() : lowers.begin());
       std::sort(r.Lowers.Values.begin() + start, r.Lowers.Values.end());
+      const Id first = r.Uppers.ValueCount();
+      r.Uppers.AppendRow(this->Uppers.begin(), edge ? this->Uppers.begin() : this->Uppers.end());
+      std::sort(r.Uppers.Values.begin() + first, r.Uppers.Values.end());
     }
     this->Diagram.Remove(a);
     this->Diagram.Remove(b);

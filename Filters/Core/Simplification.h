@@ -50,7 +50,11 @@ struct SimplificationResult
   /// are empty). With DirectOwners, enough to replay the cancellations on a
   /// node whose In list was not known (DeferredPatches.h).
   CompressedRows<Id> Lowers;
-  bool HasLowers = false; ///< whether Lowers were recorded
+  /// With Lowers, one row per pair: the y != Upper with odd arcs Lower -> y
+  /// when it was cancelled, for 2-3 pairs (rows of 1-2 pairs are empty): what
+  /// an arc x -> Upper turned into then (DeferredFlowLines.h).
+  CompressedRows<Id> Uppers;
+  bool HasLowers = false; ///< whether Lowers and Uppers were recorded
 
   RowRange<Id> OwnerRow(Id node) const { return this->Owners.Row(node); }
   std::vector<Id> OwnersOf(Id node) const

@@ -122,6 +122,20 @@ WalkEnd FacetWalk(const Triangulation& tri, EdgePoint<FT> x, Id a, Id b, std::ve
 
 } // namespace
 
+std::array<CellHandle, 2> FlowLineSides(const Triangulation& tri, Id cell, int opposite)
+{
+  const CellHandle c = tri.Cell(cell);
+  std::array<CellHandle, 2> sides{ { c, c->neighbor(opposite) } };
+  const VertexHandle a0 = c->vertex(opposite);
+  const VertexHandle a1 = sides[1]->vertex(sides[1]->index(c));
+  const bool i0 = tri.Dt().is_infinite(a0), i1 = tri.Dt().is_infinite(a1);
+  if (std::make_pair(i1, i1 ? Id(0) : a1->info()) < std::make_pair(i0, i0 ? Id(0) : a0->info()))
+  {
+    std::swap(sides[0], sides[1]);
+  }
+  return sides;
+}
+
 SuccessorForest::SuccessorForest(const Triangulation& tri,
   const std::vector<std::int32_t>& maximumOfCell, Id infinity, double stub, bool record,
   bool exactOnly)
@@ -362,25 +376,51 @@ SuccessorForest::Step SuccessorForest::ComputeNext(Id id, std::size_t buffer)
 
 Id SuccessorForest::Root(Id cell)
 {
-  // Without recording, NEXT is not memoised: each cell's is computed about once
-  // anyway, since the chain stops at the first cell whose ROOT is known. Threads
-  // racing on one chain compute the same values.
+  return this->RootBelow(cell, HUGE_VAL, nullptr);
+}
+
+Id SuccessorForest::RootBelow(Id cell, double limitSq, double* boundSq)
+{
+  // Without recording, NEXT is not walked twice: the chain stops at the first
+  // cell whose ROOT is known, and a stopped chain leaves its NEXTs behind.
+  // Threads racing on one chain compute the same values.
   std::vector<Id> chain;
   Id id = cell;
   Id root = -1;
-  while ((root = this->Roots[id].load(std::memory_order_relaxed)) < 0)
+  while (true)
   {
+    const std::int32_t known = this->Roots[id].load(std::memory_order_relaxed);
+    if (known >= 0)
+    {
+      root = known;
+      break;
+    }
     if (chain.size() > this->Roots.size())
     {
       throw std::logic_error("the successor structure has a cycle");
     }
+    if (limitSq < HUGE_VAL && this->MaximumOfCell[id] < 0)
+    {
+      const double r2 = this->SquaredRadiusAtLeast(id);
+      if (r2 >= limitSq)
+      {
+        *boundSq = r2;
+        return Pending;
+      }
+    }
     chain.push_back(id);
+    if (known <= -2)
+    {
+      id = -2 - known;
+      continue;
+    }
     const Step step = this->Record ? this->Next(id) : this->ComputeNext(id);
     if (step.Kind != ToCell)
     {
       root = step.Target;
       break;
     }
+    this->Roots[id].store(-2 - step.Target, std::memory_order_relaxed);
     id = step.Target;
   }
   for (const Id c : chain)
@@ -388,6 +428,30 @@ Id SuccessorForest::Root(Id cell)
     this->Roots[c].store(static_cast<std::int32_t>(root), std::memory_order_relaxed);
   }
   return root;
+}
+
+double SuccessorForest::SquaredRadiusAtLeast(Id cell) const
+{
+  const std::array<Id, 4> v = this->Tri.SortedVertices(this->Tri.Cell(cell));
+  const KPoint& p = this->Tri.KCoord(v[0]);
+  const Kernel::Vector_3 a = this->Tri.KCoord(v[1]) - p, b = this->Tri.KCoord(v[2]) - p,
+                         c = this->Tri.KCoord(v[3]) - p;
+  const double den = 2 * CGAL::determinant(a, b, c);
+  const Kernel::Vector_3 num = a.squared_length() * CGAL::cross_product(b, c) +
+    b.squared_length() * CGAL::cross_product(c, a) + c.squared_length() * CGAL::cross_product(a, b);
+  const double l = std::sqrt(
+    std::max({ a.squared_length(), b.squared_length(), c.squared_length() }));
+  const double r = std::sqrt(num.squared_length()) / std::abs(den);
+  // Rounding of the offset num/den from p (the radius): about 70 eps l^4 in
+  // num and 40 eps l^3 in den, first order; four times that is the margin.
+  const double eps = std::numeric_limits<double>::epsilon();
+  const double error = (300 * eps * l * l * l * l + 160 * eps * l * l * l * r) / std::abs(den);
+  if (!(den != 0) || !std::isfinite(r) || !std::isfinite(error) || !(error < 0.25 * r))
+  {
+    return 0;
+  }
+  const double low = (r - error) * (1 - 8 * eps);
+  return low * low * (1 - 8 * eps);
 }
 
 void SuccessorForest::AppendPath(Id cell, std::vector<Point3>& out, bool shareTails)

@@ -9,12 +9,19 @@
 #include "Progress.h"
 #include "Triangulation.h"
 
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <vector>
 
 namespace flowrecon
 {
+
+/// The two cells of the critical facet (`cell`, `opposite`) whose Voronoi
+/// vertices start its flow lines, ordered by their vertex off the facet (input
+/// id, infinite last): an order that does not depend on the triangulation's
+/// cell order, so the output stays deterministic. Side s of a flow line.
+std::array<CellHandle, 2> FlowLineSides(const Triangulation& tri, Id cell, int opposite);
 
 class SuccessorForest
 {
@@ -30,6 +37,17 @@ public:
   /// The maximum reached by the flow from the Voronoi vertex of finite cell `cell`.
   /// Thread-safe when the forest does not record polylines.
   Id Root(Id cell);
+
+  /// What RootBelow returns for a flow line it stopped.
+  static constexpr Id Pending = -2;
+
+  /// Root(cell), unless the flow first meets a Voronoi vertex whose distance to
+  /// its samples is certainly at least sqrt(limitSq) (triangulation units):
+  /// then Pending, and *boundSq is a certified lower bound of that squared
+  /// distance. The distance grows along the flow, so the maximum reached lies
+  /// above it: a flow line stopped there cannot end below it (deferred flow
+  /// lines, DeferredFlowLines.h). Thread-safe as Root.
+  Id RootBelow(Id cell, double limitSq, double* boundSq);
 
   /// Appends the polyline of the flow from c_T (excluded) to its maximum, or to a
   /// stub pointing toward infinity. Flow lines merge: with `shareTails`, the
@@ -73,6 +91,9 @@ private:
   Step ComputeNext(Id cell, std::size_t buffer = 0);
   /// The double circumcentre of a finite cell, uncached (any thread).
   Point3 CircumcentreOf(Id cell) const;
+  /// A lower bound of the squared circumradius of a finite cell (0 when
+  /// doubles cannot bound it: flat cells).
+  double SquaredRadiusAtLeast(Id cell) const;
 
   const Triangulation& Tri;
   const std::vector<std::int32_t>& MaximumOfCell;
@@ -81,6 +102,8 @@ private:
   bool Record;
   bool ExactOnly;
   std::vector<Step> Steps; // memoised NEXT, only when recording
+  // Per cell: ROOT (>= 0), unknown (-1), or NEXT alone, as -2 - cell (a chain
+  // that RootBelow stopped: walked once, followed again without walking).
   std::vector<std::atomic<std::int32_t>> Roots;
   std::vector<std::atomic<std::uint8_t>> FellBack; // per cell: NEXT needed exact arithmetic
   std::vector<std::vector<Point3>> Paths; // one buffer per thread slot

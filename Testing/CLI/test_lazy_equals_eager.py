@@ -5,7 +5,9 @@ Eager: `flowrecon complex --max-cells inf` draws every stable manifold, and
 family), and at --tr t. Lazy: `reconstruct CLOUD --tr t` computes the Hasse
 diagram only and draws the cells of the nodes below t, from a second
 triangulation, and defers the patches that cannot matter below its cap T_max
-(4, or --tr-max; walked when a maximum below T_max needs them). At every t,
+(4, or --tr-max; walked when a maximum below T_max needs them), and the flow
+lines that leave far above it (followed when a cancellation, an upflow below
+T_max, a maximum's regularization or a drawn cone needs them). At every t,
 with either cap, the lazy file must equal the eager one at t, cell by
 cell (same vertices by coordinates, NodeId, Index, Step, Priority, Threshold,
 Extension, Sponsor, CriticalValue, Multiplicity, in the same order), and be the
@@ -14,7 +16,8 @@ counts the patches at the current t). Clouds: volume and
 surface samples, an exact grid (degenerate: perturbed), a noisy sphere, the
 paper's non-manifold two hemispheres, a sphere pierced by a segment, with
 duplicates, a denser torus (many deferred patches). The runs must defer
-patches and walk some of them late, or the comparison proves little.
+patches and flow lines and walk some of them late, without giving up deferral
+(an eager run again), or the comparison proves little.
 Usage: test_lazy_equals_eager.py FLOWRECON WORKDIR
 """
 import os
@@ -54,7 +57,7 @@ def clouds():
     return out
 
 
-work = {"deferred": 0, "late": 0}
+work = {"deferred": 0, "late": 0, "lines": 0, "followed": 0, "eager": 0}
 
 
 def run(*args):
@@ -65,6 +68,14 @@ def run(*args):
     if m:
         work["deferred"] += int(m.group(1))
         work["late"] += int(m.group(2))
+        lines = re.search(r"flow lines deferred: (\d+) of \d+, followed late: (\d+)", p.stdout)
+        if not lines:
+            raise SystemExit("reconstruct --timings: no line on deferred flow lines")
+        work["lines"] += int(lines.group(1))
+        work["followed"] += int(lines.group(2))
+        if "built again without deferral" in p.stdout:
+            work["eager"] += 1
+            print("  " + " ".join(args) + ": built again without deferral")
     return m
 
 
@@ -111,9 +122,15 @@ for name, xyz in clouds().items():
             print(label, "OK" if not problems else "DIFFER in " + ", ".join(problems))
             if problems or not lv:
                 failures.append(label)
-print("patches deferred %d, walked late %d (summed over the runs)" % (work["deferred"], work["late"]))
+print("patches deferred %d, walked late %d; flow lines deferred %d, followed late %d; "
+      "runs built again without deferral %d (summed over the runs)"
+      % (work["deferred"], work["late"], work["lines"], work["followed"], work["eager"]))
 if not (work["deferred"] > 1000 and work["late"] > 100):
     failures.append("too few deferred patches or late walks to compare")
+if not (work["lines"] > 10000 and work["followed"] > 1000):
+    failures.append("too few deferred flow lines or late ones to compare")
+if work["eager"]:
+    failures.append("runs that gave up deferral compare nothing")
 if failures:
     raise SystemExit("lazy != eager: " + "; ".join(failures))
 print("lazy = eager on every cloud")
