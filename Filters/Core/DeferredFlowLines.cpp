@@ -39,9 +39,18 @@ std::pair<std::size_t, std::size_t> RowOf(const std::vector<Arc>& arcs, Id lower
 DeferredFlowLines::DeferredFlowLines(
   const FlowComplex& fc, const std::vector<Arc>& rawArcs, const Retriangulation& re)
   : Re(re)
-  , NodeValues(fc.Nodes)
+  , Values(fc.Nodes.size())
+  , Base3(re.Base3())
   , InfinityNode(fc.InfinityNode)
 {
+  for (std::size_t v = 0; v < fc.Nodes.size(); ++v)
+  {
+    this->Values[v] = fc.Nodes[v].Value;
+  }
+  if (this->InfinityNode + 1 != static_cast<Id>(fc.Nodes.size()) || this->Base3 > this->InfinityNode)
+  {
+    throw InputError("deferred flow lines: the complex does not fit its triangulation");
+  }
   this->Lines.reserve(fc.PendingFlowLines.size());
   for (const PendingFlowLine& p : fc.PendingFlowLines)
   {
@@ -81,11 +90,6 @@ DeferredFlowLines::DeferredFlowLines(
       this->Other[k] = a->Upper;
     }
   }
-  this->ByLowerBound.resize(this->Pending.size());
-  for (std::size_t k = 0; k < this->Pending.size(); ++k)
-  {
-    this->ByLowerBound[k] = k;
-  }
 }
 
 DeferredFlowLines::~DeferredFlowLines() = default;
@@ -124,6 +128,10 @@ void DeferredFlowLines::Follow(const std::vector<Id>& nodes)
       continue;
     }
     this->Done[k] = 1;
+    if (this->Simplified)
+    {
+      this->FollowedSince.push_back(x);
+    }
     for (Id l = this->PendingBegin[k]; l < this->PendingBegin[k + 1]; ++l)
     {
       todo.push_back(l);
@@ -159,7 +167,7 @@ void DeferredFlowLines::Follow(const std::vector<Id>& nodes)
   for (const Id l : todo)
   {
     if (this->Lines[l].Target < 0 ||
-      static_cast<double>(this->Lines[l].Bound) > this->NodeValues[this->Lines[l].Target].Value)
+      static_cast<double>(this->Lines[l].Bound) > this->Values[this->Lines[l].Target])
     {
       throw InputError("deferred flow lines: a line ends below its bound");
     }
@@ -222,12 +230,12 @@ void DeferredFlowLines::CompleteRawArcs(std::vector<Arc>& arcs) const
   }
   // The 2-3 group is the tail, by lower node: merge the followed nodes in.
   std::size_t tail = arcs.size();
-  while (tail > 0 && this->NodeValues[arcs[tail - 1].Lower].Index == 2)
+  while (tail > 0 && arcs[tail - 1].Upper >= this->Base3)
   {
     --tail;
   }
-  std::vector<Arc> merged(arcs.begin(), arcs.begin() + static_cast<std::ptrdiff_t>(tail));
-  merged.reserve(arcs.size() + followed.size());
+  std::vector<Arc> merged;
+  merged.reserve(arcs.size() - tail + followed.size());
   std::size_t f = 0;
   for (std::size_t i = tail; i < arcs.size(); ++i)
   {
@@ -242,20 +250,17 @@ void DeferredFlowLines::CompleteRawArcs(std::vector<Arc>& arcs) const
     merged.push_back(arcs[i]);
   }
   merged.insert(merged.end(), followed.begin() + static_cast<std::ptrdiff_t>(f), followed.end());
-  arcs.swap(merged);
+  arcs.resize(tail);
+  arcs.insert(arcs.end(), merged.begin(), merged.end());
 }
 
 void DeferredFlowLines::SetSimplification(const SimplificationResult* s, double persistenceThreshold)
 {
-  const std::size_t n = this->NodeValues.size();
+  const std::size_t n = this->Values.size();
   this->RemovedAt.assign(n, -1);
   this->Uppers = CompressedRows<Id>();
   this->Survives.assign(n, true);
-  std::vector<double> low(n);
-  for (std::size_t v = 0; v < n; ++v)
-  {
-    low[v] = this->NodeValues[v].Value;
-  }
+  std::vector<double> low(this->Values);
   if (s)
   {
     if (!s->HasLowers || s->Uppers.RowCount() != static_cast<Id>(s->Pairs.size()) ||
@@ -295,12 +300,9 @@ void DeferredFlowLines::SetSimplification(const SimplificationResult* s, double 
     }
   }
   std::vector<std::pair<double, double>> maxima; // (value, LowExp)
-  for (std::size_t v = 0; v < n; ++v)
+  for (Id v = this->Base3; v <= this->InfinityNode; ++v)
   {
-    if (this->NodeValues[v].Index == 3)
-    {
-      maxima.emplace_back(this->NodeValues[v].Value, low[v]);
-    }
+    maxima.emplace_back(this->Values[v], low[v]);
   }
   std::sort(maxima.begin(), maxima.end());
   this->SortedValues.resize(maxima.size());
@@ -320,10 +322,17 @@ void DeferredFlowLines::SetSimplification(const SimplificationResult* s, double 
         " may have had a candidate arc the simplification did not see");
     }
   }
-  std::sort(this->ByLowerBound.begin(), this->ByLowerBound.end(), [&](std::size_t a, std::size_t b) {
-    return std::make_pair(this->LowerBound(this->LeastBound(a)), a) <
-      std::make_pair(this->LowerBound(this->LeastBound(b)), b);
-  });
+  this->Simplified = true;
+  this->FollowedSince.clear();
+  this->ByLowerBound.clear();
+  for (std::size_t k = 0; k < this->Pending.size(); ++k)
+  {
+    if (!this->Done[k])
+    {
+      this->ByLowerBound.emplace_back(this->LowerBound(this->LeastBound(k)), k);
+    }
+  }
+  std::sort(this->ByLowerBound.begin(), this->ByLowerBound.end());
   this->NextByBound = 0;
 }
 
@@ -339,7 +348,7 @@ std::vector<Id> DeferredFlowLines::NodesBelowRatio(double ratio) const
   for (std::size_t k = 0; k < this->Pending.size(); ++k)
   {
     if (!this->Done[k] &&
-      !(this->LowerBound(this->LeastBound(k)) > ratio * this->NodeValues[this->Pending[k]].Value * (1 + Margin)))
+      !(this->LowerBound(this->LeastBound(k)) > ratio * this->Values[this->Pending[k]] * (1 + Margin)))
     {
       nodes.push_back(this->Pending[k]);
     }
@@ -416,30 +425,48 @@ std::vector<std::pair<Id, int>> DeferredFlowLines::FinalArcs(Id x) const
   return arcs;
 }
 
-void DeferredFlowLines::CompleteSimplifiedArcs(std::vector<Arc>& simplifiedArcs) const
+void DeferredFlowLines::CompleteSimplifiedArcs(std::vector<Arc>& simplifiedArcs)
 {
+  std::vector<Id> nodes;
+  nodes.swap(this->FollowedSince);
+  std::sort(nodes.begin(), nodes.end());
   std::vector<Arc> added;
-  std::vector<char> replaced(this->NodeValues.size(), 0);
-  for (std::size_t k = 0; k < this->Pending.size(); ++k)
+  for (const Id x : nodes)
   {
-    const Id x = this->Pending[k];
-    if (this->Done[k] && this->Survives[x])
+    if (this->Survives[x])
     {
-      replaced[x] = 1;
       for (const auto& e : this->FinalArcs(x))
       {
         added.emplace_back(x, e.first, e.second);
       }
     }
   }
-  simplifiedArcs.erase(std::remove_if(simplifiedArcs.begin(), simplifiedArcs.end(),
-                         [&](const Arc& a) {
-                           return replaced[a.Lower] && this->NodeValues[a.Upper].Index == 3;
-                         }),
-    simplifiedArcs.end());
-  simplifiedArcs.insert(simplifiedArcs.end(), added.begin(), added.end());
-  std::sort(simplifiedArcs.begin(), simplifiedArcs.end(),
-    [](const Arc& a, const Arc& b) { return std::tie(a.Lower, a.Upper) < std::tie(b.Lower, b.Upper); });
+  if (nodes.empty())
+  {
+    return;
+  }
+  // One merge pass: the rows of `nodes` (all 2-3 arcs) are replaced.
+  std::vector<Arc> merged;
+  merged.reserve(simplifiedArcs.size() + added.size());
+  std::size_t k = 0, a = 0;
+  for (const Arc& arc : simplifiedArcs)
+  {
+    while (a < added.size() && std::tie(added[a].Lower, added[a].Upper) < std::tie(arc.Lower, arc.Upper))
+    {
+      merged.push_back(added[a++]);
+    }
+    while (k < nodes.size() && nodes[k] < arc.Lower)
+    {
+      ++k;
+    }
+    if (k < nodes.size() && nodes[k] == arc.Lower && arc.Upper >= this->Base3)
+    {
+      continue;
+    }
+    merged.push_back(arc);
+  }
+  merged.insert(merged.end(), added.begin() + static_cast<std::ptrdiff_t>(a), added.end());
+  simplifiedArcs.swap(merged);
 }
 
 std::vector<InListChange> DeferredFlowLines::InChangesUpTo(
@@ -448,8 +475,8 @@ std::vector<InListChange> DeferredFlowLines::InChangesUpTo(
   std::vector<Id> nodes;
   while (this->NextByBound < this->ByLowerBound.size())
   {
-    const std::size_t k = this->ByLowerBound[this->NextByBound];
-    if (this->LowerBound(this->LeastBound(k)) > value * (1 + Margin))
+    const std::size_t k = this->ByLowerBound[this->NextByBound].second;
+    if (this->ByLowerBound[this->NextByBound].first > value * (1 + Margin))
     {
       break;
     }
@@ -460,6 +487,7 @@ std::vector<InListChange> DeferredFlowLines::InChangesUpTo(
     }
   }
   this->Follow(nodes);
+  this->FollowedSince.clear(); // their changes are returned
   std::vector<InListChange> changes;
   for (const Id x : nodes)
   {
@@ -471,7 +499,7 @@ std::vector<InListChange> DeferredFlowLines::InChangesUpTo(
     const auto range = RowOf(simplifiedArcs, x);
     for (std::size_t i = range.first; i < range.second; ++i)
     {
-      if (this->NodeValues[simplifiedArcs[i].Upper].Index == 3)
+      if (simplifiedArcs[i].Upper >= this->Base3)
       {
         before.push_back(simplifiedArcs[i].Upper);
       }

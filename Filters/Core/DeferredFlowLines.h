@@ -87,8 +87,9 @@ public:
   std::vector<std::pair<Id, int>> FinalArcs(Id x) const;
 
   /// `simplifiedArcs` (sorted by (Lower, Upper)) with the 2-3 arcs of the
-  /// followed surviving nodes replaced by their FinalArcs.
-  void CompleteSimplifiedArcs(std::vector<Arc>& simplifiedArcs) const;
+  /// surviving nodes followed since SetSimplification replaced by their
+  /// FinalArcs (those followed before were in the simplification's input).
+  void CompleteSimplifiedArcs(std::vector<Arc>& simplifiedArcs);
 
   /// Follows the lines not followed yet whose LowerBound is <= value (all
   /// lines of their nodes), and returns how the In lists of maxima change,
@@ -104,14 +105,17 @@ private:
     std::int32_t Target; ///< -1 until followed
   };
   const Retriangulation& Re;
-  std::vector<Node> NodeValues; ///< Value and Index are what is used
-  Id InfinityNode = -1;
+  std::vector<double> Values; ///< of the nodes
+  Id Base3 = 0, InfinityNode = -1; ///< maxima: [Base3, InfinityNode]
   std::vector<Line> Lines;       ///< sorted by (Node, Side)
   std::vector<Id> Pending;       ///< distinct nodes of Lines
   std::vector<Id> PendingBegin;  ///< per pending node: its first line
   std::vector<std::int32_t> Other; ///< per pending node: the followed line's maximum (-1: none)
   std::vector<char> Done;          ///< per pending node: followed
-  std::vector<std::size_t> ByLowerBound; ///< pending node positions, by least line bound
+  bool Simplified = false;         ///< SetSimplification was called
+  std::vector<Id> FollowedSince;   ///< nodes followed after it, not yet completed
+  /// (LowerBound of the least line bound, position) of the pending nodes, sorted.
+  std::vector<std::pair<double, std::size_t>> ByLowerBound;
   std::size_t NextByBound = 0;
   Id Followed = 0;
   std::unique_ptr<SuccessorForest> Forest;

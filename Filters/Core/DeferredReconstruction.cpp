@@ -41,7 +41,7 @@ DeferredReconstruction ReconstructDeferred(FlowComplex& fc, SimplificationResult
   }
   r.Run = Reconstruct(fc.Nodes, fc.Arcs, survives, init, cap, progress, late);
   r.Carriers = CellCarriers(r.Run, s);
-  if (s)
+  if (s && !fc.DeferredPatches.empty())
   {
     // A 1-2 cancellation hands its cells to every successor of its lower, the
     // deferred ones too. They matter where they carry cells below the cap: the
@@ -62,10 +62,13 @@ DeferredReconstruction ReconstructDeferred(FlowComplex& fc, SimplificationResult
     ResolveOwners(*s, extra);
     r.Carriers = CellCarriers(r.Run, s);
   }
-  fc.Arcs.insert(fc.Arcs.end(), walked.begin(), walked.end());
-  std::sort(fc.Arcs.begin(), fc.Arcs.end(), [](const Arc& a, const Arc& b) {
-    return std::tie(a.Lower, a.Upper) < std::tie(b.Lower, b.Upper);
-  });
+  if (!walked.empty())
+  {
+    fc.Arcs.insert(fc.Arcs.end(), walked.begin(), walked.end());
+    std::sort(fc.Arcs.begin(), fc.Arcs.end(), [](const Arc& a, const Arc& b) {
+      return std::tie(a.Lower, a.Upper) < std::tie(b.Lower, b.Upper);
+    });
+  }
   return r;
 }
 

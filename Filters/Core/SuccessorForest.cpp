@@ -399,6 +399,8 @@ Id SuccessorForest::RootBelow(Id cell, double limitSq, double* boundSq)
     {
       throw std::logic_error("the successor structure has a cycle");
     }
+    // Which lines stop can depend on the roots other threads found first (a
+    // known root is used): the counts may vary, the arcs and output do not.
     if (limitSq < HUGE_VAL && this->MaximumOfCell[id] < 0)
     {
       const double r2 = this->SquaredRadiusAtLeast(id);
