@@ -169,22 +169,42 @@ Id SuccessorForest::ExactFallbacks() const
   return count;
 }
 
+namespace
+{
+
+/// The circumcentre of a finite cell as P + Num / Den in doubles, P its vertex
+/// of least id (so that rounding does not depend on the cell's vertex order).
+struct CircumOffset
+{
+  Point3 P;
+  Kernel::Vector_3 Num;
+  double Den, LongestEdge;
+};
+
+CircumOffset OffsetOf(const Triangulation& tri, Id cell)
+{
+  const std::array<Id, 4> v = tri.SortedVertices(tri.Cell(cell));
+  const KPoint& p = tri.KCoord(v[0]);
+  const Kernel::Vector_3 a = tri.KCoord(v[1]) - p, b = tri.KCoord(v[2]) - p, c = tri.KCoord(v[3]) - p;
+  return CircumOffset{ { { p.x(), p.y(), p.z() } },
+    a.squared_length() * CGAL::cross_product(b, c) + b.squared_length() * CGAL::cross_product(c, a) +
+      c.squared_length() * CGAL::cross_product(a, b),
+    2 * CGAL::determinant(a, b, c),
+    std::sqrt(std::max({ a.squared_length(), b.squared_length(), c.squared_length() })) };
+}
+
+} // namespace
+
 Point3 SuccessorForest::CircumcentreOf(Id cell) const
 {
-  const std::array<Id, 4> v = this->Tri.SortedVertices(this->Tri.Cell(cell));
   // In doubles, for drawing only (the flow lines' targets are exact). A flat
   // cell can cancel the denominator to 0 (found by fuzzing: CGAL's own
   // construction asserts then): its point is left out of the polyline, as
   // non-finite points are (see the builder).
-  const KPoint& p = this->Tri.KCoord(v[0]);
-  const Kernel::Vector_3 a = this->Tri.KCoord(v[1]) - p, b = this->Tri.KCoord(v[2]) - p,
-                         c = this->Tri.KCoord(v[3]) - p;
-  const double den = 2 * CGAL::determinant(a, b, c);
-  const Kernel::Vector_3 num = a.squared_length() * CGAL::cross_product(b, c) +
-    b.squared_length() * CGAL::cross_product(c, a) + c.squared_length() * CGAL::cross_product(a, b);
+  const CircumOffset o = OffsetOf(this->Tri, cell);
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  return den != 0 && std::isfinite(den)
-    ? Point3{ { p.x() + num.x() / den, p.y() + num.y() / den, p.z() + num.z() / den } }
+  return o.Den != 0 && std::isfinite(o.Den)
+    ? Point3{ { o.P[0] + o.Num.x() / o.Den, o.P[1] + o.Num.y() / o.Den, o.P[2] + o.Num.z() / o.Den } }
     : Point3{ { nan, nan, nan } };
 }
 
@@ -434,20 +454,13 @@ Id SuccessorForest::RootBelow(Id cell, double limitSq, double* boundSq)
 
 double SuccessorForest::SquaredRadiusAtLeast(Id cell) const
 {
-  const std::array<Id, 4> v = this->Tri.SortedVertices(this->Tri.Cell(cell));
-  const KPoint& p = this->Tri.KCoord(v[0]);
-  const Kernel::Vector_3 a = this->Tri.KCoord(v[1]) - p, b = this->Tri.KCoord(v[2]) - p,
-                         c = this->Tri.KCoord(v[3]) - p;
-  const double den = 2 * CGAL::determinant(a, b, c);
-  const Kernel::Vector_3 num = a.squared_length() * CGAL::cross_product(b, c) +
-    b.squared_length() * CGAL::cross_product(c, a) + c.squared_length() * CGAL::cross_product(a, b);
-  const double l = std::sqrt(
-    std::max({ a.squared_length(), b.squared_length(), c.squared_length() }));
-  const double r = std::sqrt(num.squared_length()) / std::abs(den);
-  // Rounding of the offset num/den from p (the radius): about 70 eps l^4 in
-  // num and 40 eps l^3 in den, first order; four times that is the margin.
+  const CircumOffset o = OffsetOf(this->Tri, cell);
+  const double l = o.LongestEdge, den = std::abs(o.Den);
+  const double r = std::sqrt(o.Num.squared_length()) / den;
+  // Rounding of the offset Num/Den from P (the radius): about 70 eps l^4 in
+  // Num and 40 eps l^3 in Den, first order; four times that is the margin.
   const double eps = std::numeric_limits<double>::epsilon();
-  const double error = (300 * eps * l * l * l * l + 160 * eps * l * l * l * r) / std::abs(den);
+  const double error = (300 * eps * l * l * l * l + 160 * eps * l * l * l * r) / den;
   if (!(den != 0) || !std::isfinite(r) || !std::isfinite(error) || !(error < 0.25 * r))
   {
     return 0;
