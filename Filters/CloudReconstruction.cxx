@@ -23,6 +23,7 @@ CloudReconstructionReport ReconstructCloud(const std::vector<Point3>& samples,
   build.StableManifolds = false;
   build.UnstableManifolds = false;
   CappedReconstruction r;
+  Id linesDeferred = 0, linesFollowed = 0;
   for (bool defer = true;; defer = false)
   {
     try
@@ -32,6 +33,11 @@ CloudReconstructionReport ReconstructCloud(const std::vector<Point3>& samples,
       phaseDone("flow complex, simplification, reconstruction queue");
       const std::vector<Id> draw = NodesToDraw(r.Complex.Nodes, r.Carriers, r.Run, tdraw);
       CompleteCones(r, draw);
+      // What only the queue needed goes before the drawing, the largest phase.
+      linesDeferred = r.Lines ? r.Lines->LinesDeferred() : 0;
+      linesFollowed = r.Lines ? r.Lines->LinesFollowed() : 0;
+      r.Lines.reset();
+      r.Simplification = SimplificationResult();
       DrawStableManifolds(samples, build, draw, r.Complex, progress.Range(0.7, 0.9),
         settings.Advice, &r.Cones, r.Triangulation.get());
       break;
@@ -50,9 +56,9 @@ CloudReconstructionReport ReconstructCloud(const std::vector<Point3>& samples,
     std::ostringstream work;
     work << "patches deferred: " << r.DeferredPatches << " of " << r.Complex.CountByIndex()[2]
          << ", walked late: " << r.WalkedLate << ", owners found by replays: " << r.ReplayedOwners
-         << "\nflow lines deferred: " << (r.Lines ? r.Lines->LinesDeferred() : 0) << " of "
+         << "\nflow lines deferred: " << linesDeferred << " of "
          << 2 * r.Complex.CountByIndex()[2]
-         << ", followed late: " << (r.Lines ? r.Lines->LinesFollowed() : 0)
+         << ", followed late: " << linesFollowed
          << (r.EagerBecause.empty() ? "" : "\nbuilt again without deferral: " + r.EagerBecause)
          << std::fixed << std::setprecision(3) << "\nflow complex (s): Delaunay " << t.Delaunay
          << "; critical points " << t.CriticalPoints << "; stable manifolds " << t.StableManifolds
@@ -61,7 +67,6 @@ CloudReconstructionReport ReconstructCloud(const std::vector<Point3>& samples,
          << r.QueueSeconds << ";";
     report.Work = work.str();
   }
-  r.Lines.reset(); // it refers to the triangulation
   r.Triangulation.reset();
   FlowComplex& fc = r.Complex;
   phaseDone("drawing");
