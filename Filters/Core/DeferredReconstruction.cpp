@@ -4,6 +4,7 @@
 #include "DeferredPatches.h"
 
 #include <algorithm>
+#include <optional>
 #include <tuple>
 
 namespace flowrecon
@@ -20,15 +21,20 @@ DeferredReconstruction ReconstructDeferred(FlowComplex& fc, SimplificationResult
   }
   DeferredReconstruction r;
   const std::vector<bool> survives = s ? s->Survives : std::vector<bool>(fc.Nodes.size(), true);
-  DeferredPatches deferred(fc, s, re);
+  // Without deferred patches (deferred flow lines only) the replay is not needed.
+  std::optional<DeferredPatches> deferred;
+  if (!fc.DeferredPatches.empty())
+  {
+    deferred.emplace(fc, s, re);
+  }
   std::vector<Arc> walked;
   Progress quiet;
   quiet.ShouldAbort = progress.ShouldAbort;
   LateArcs late;
-  late.Deferred = deferred.Flags();
+  late.Deferred = deferred ? deferred->Flags() : std::vector<char>(fc.Nodes.size(), 0);
   late.Ratio = fc.DeferralRatio;
   late.Walk = [&](const std::vector<Id>& nodes) {
-    std::vector<Arc> arcs = deferred.Walk(nodes, quiet);
+    std::vector<Arc> arcs = deferred ? deferred->Walk(nodes, quiet) : std::vector<Arc>();
     walked.insert(walked.end(), arcs.begin(), arcs.end());
     r.WalkedLate += static_cast<Id>(nodes.size());
     return arcs;
@@ -55,9 +61,9 @@ DeferredReconstruction ReconstructDeferred(FlowComplex& fc, SimplificationResult
         carried.push_back(y);
       }
     }
-    deferred.Walk(carried, quiet);
+    deferred->Walk(carried, quiet);
     r.WalkedLate += static_cast<Id>(carried.size());
-    const std::vector<std::pair<Id, Id>> extra = deferred.ExtraOwners();
+    const std::vector<std::pair<Id, Id>> extra = deferred->ExtraOwners();
     r.ReplayedOwners = static_cast<Id>(extra.size());
     ResolveOwners(*s, extra);
     r.Carriers = CellCarriers(r.Run, s);
