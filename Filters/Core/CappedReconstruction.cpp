@@ -66,7 +66,9 @@ CappedReconstruction Attempt(const std::vector<Point3>& points, const BuildOptio
   const bool late = !fc.DeferredPatches.empty() || r.Lines;
   if (r.Simplified)
   {
-    r.Simplification = Simplify(fc.Nodes, std::move(fc.Arcs), tp, progress.Range(0.7, 0.8), late);
+    // The replays record what they need: Lowers for patches, Uppers for lines.
+    r.Simplification = Simplify(fc.Nodes, std::move(fc.Arcs), tp, progress.Range(0.7, 0.8),
+      !fc.DeferredPatches.empty(), r.Lines != nullptr);
     fc.Arcs = std::move(r.Simplification.Arcs); // the reconstruction grows on the simplified diagram
     r.Simplification.Arcs = {};
   }

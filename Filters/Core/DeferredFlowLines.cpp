@@ -263,7 +263,7 @@ void DeferredFlowLines::SetSimplification(const SimplificationResult* s, double 
   std::vector<double> low(this->Values);
   if (s)
   {
-    if (!s->HasLowers || s->Uppers.RowCount() != static_cast<Id>(s->Pairs.size()) ||
+    if (!s->HasUppers || s->Uppers.RowCount() != static_cast<Id>(s->Pairs.size()) ||
       s->Survives.size() != n)
     {
       throw InputError("deferred flow lines: the simplification did not record its pairs");

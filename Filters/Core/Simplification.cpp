@@ -37,10 +37,12 @@ public:
   {
   }
 
-  SimplificationResult Run(double threshold, const Progress& progress, bool recordLowers)
+  SimplificationResult Run(
+    double threshold, const Progress& progress, bool recordLowers, bool recordUppers)
   {
     this->Threshold = threshold;
     this->RecordLowers = recordLowers;
+    this->RecordUppers = recordUppers;
     SimplificationResult result;
     this->Result = &result;
     std::vector<Candidate> initial;
@@ -99,9 +101,13 @@ public:
     if (!this->RecordLowers)
     {
       result.Lowers.Offsets.assign(result.Pairs.size() + 1, 0);
+    }
+    if (!this->RecordUppers)
+    {
       result.Uppers.Offsets.assign(result.Pairs.size() + 1, 0);
     }
     result.HasLowers = this->RecordLowers;
+    result.HasUppers = this->RecordUppers;
     ResolveOwners(result, {});
     progress(1, "Simplifying the Hasse diagram");
     return result;
@@ -164,14 +170,18 @@ private:
     std::sort(owners.begin(), owners.end());
     SimplificationResult& r = *this->Result;
     r.DirectOwners.AppendRow(owners.begin(), owners.end());
+    const bool edge = this->Nodes[a].Index == 1;
     if (this->RecordLowers)
     {
       // Rows of 2-3 pairs stay empty; the row is sorted in place.
       const std::vector<Id>& lowers = this->Lowers;
       const Id start = r.Lowers.ValueCount();
-      const bool edge = this->Nodes[a].Index == 1;
       r.Lowers.AppendRow(lowers.begin(), edge ? lowers.end() : lowers.begin());
       std::sort(r.Lowers.Values.begin() + start, r.Lowers.Values.end());
+    }
+    if (this->RecordUppers)
+    {
+      // Rows of 1-2 pairs stay empty.
       const Id first = r.Uppers.ValueCount();
       r.Uppers.AppendRow(this->Uppers.begin(), edge ? this->Uppers.begin() : this->Uppers.end());
       std::sort(r.Uppers.Values.begin() + first, r.Uppers.Values.end());
@@ -197,7 +207,7 @@ private:
   HasseDiagram Diagram;
   std::vector<bool> Alive;
   SimplificationResult* Result = nullptr;
-  bool RecordLowers = false;
+  bool RecordLowers = false, RecordUppers = false;
   double Threshold = 0;
   std::vector<Id> Lowers, Uppers, Owners;
 };
@@ -275,7 +285,7 @@ void ResolveOwners(SimplificationResult& result, const std::vector<std::pair<Id,
 }
 
 SimplificationResult Simplify(const std::vector<Node>& nodes, std::vector<Arc>&& arcs,
-  double persistenceThreshold, const Progress& progress, bool recordLowers)
+  double persistenceThreshold, const Progress& progress, bool recordLowers, bool recordUppers)
 {
   if (std::isnan(persistenceThreshold))
   {
@@ -288,7 +298,7 @@ SimplificationResult Simplify(const std::vector<Node>& nodes, std::vector<Arc>&&
     "use t_p 0 (no simplification) or fewer points");
   Simplifier simplifier(nodes, arcs);
   std::vector<Arc>().swap(arcs);
-  return simplifier.Run(persistenceThreshold, progress, recordLowers);
+  return simplifier.Run(persistenceThreshold, progress, recordLowers, recordUppers);
 }
 
 } // namespace flowrecon

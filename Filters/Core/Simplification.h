@@ -50,11 +50,12 @@ struct SimplificationResult
   /// are empty). With DirectOwners, enough to replay the cancellations on a
   /// node whose In list was not known (DeferredPatches.h).
   CompressedRows<Id> Lowers;
-  /// With Lowers, one row per pair: the y != Upper with odd arcs Lower -> y
+  /// When asked for (recordUppers), one row per pair: the y != Upper with odd arcs Lower -> y
   /// when it was cancelled, for 2-3 pairs (rows of 1-2 pairs are empty): what
   /// an arc x -> Upper turned into then (DeferredFlowLines.h).
   CompressedRows<Id> Uppers;
-  bool HasLowers = false; ///< whether Lowers and Uppers were recorded
+  bool HasLowers = false; ///< whether Lowers were recorded
+  bool HasUppers = false; ///< whether Uppers were recorded
 
   RowRange<Id> OwnerRow(Id node) const { return this->Owners.Row(node); }
   std::vector<Id> OwnersOf(Id node) const
@@ -76,7 +77,8 @@ SimplificationResult Simplify(const std::vector<Node>& nodes, const std::vector<
 /// The same, taking the arcs over: they are freed once the diagram is built,
 /// which lowers the peak memory of large clouds (the arcs are left empty).
 SimplificationResult Simplify(const std::vector<Node>& nodes, std::vector<Arc>&& arcs,
-  double persistenceThreshold, const Progress& progress, bool recordLowers = false);
+  double persistenceThreshold, const Progress& progress, bool recordLowers = false,
+  bool recordUppers = false);
 
 /// Recomputes Owners from DirectOwners plus `extra` direct
 /// owners, (pair position, node) entries: the successors a replay found that
