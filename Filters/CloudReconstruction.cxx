@@ -2,6 +2,7 @@
 
 #include "CappedReconstruction.h"
 #include "CellHomology.h"
+#include "MemoryGuard.h"
 #include "ReconstructionConversion.h"
 #include "TopologyConversion.h"
 #include "StableManifoldGeometry.h"
@@ -38,6 +39,9 @@ CloudReconstructionReport ReconstructCloud(const std::vector<Point3>& samples,
       linesFollowed = r.Lines ? r.Lines->LinesFollowed() : 0;
       r.Lines.reset();
       r.Simplification = SimplificationResult();
+      // Their lists sat in tbbmalloc's pools, which the drawing's vectors
+      // (glibc's heap) cannot reuse: hand them back first.
+      ReleaseFreedMemory();
       DrawStableManifolds(samples, build, draw, r.Complex, progress.Range(0.7, 0.9),
         settings.Advice, &r.Cones, r.Triangulation.get());
       break;
@@ -68,6 +72,9 @@ CloudReconstructionReport ReconstructCloud(const std::vector<Point3>& samples,
     report.Work = work.str();
   }
   r.Triangulation.reset();
+  // The triangulation is the largest block until here (~0.7 KB per point, in
+  // tbbmalloc's pools): the VTK arrays below need that memory back.
+  ReleaseFreedMemory();
   FlowComplex& fc = r.Complex;
   phaseDone("drawing");
   const CellsByNode triangles = PositionsByRow(fc.TriangleNode, fc.Nodes.size());

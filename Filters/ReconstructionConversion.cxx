@@ -344,18 +344,29 @@ void ReconstructionGrid(const FlowComplex& fc, const std::vector<Id>& carriers,
     cells += own + nt + nq;
     corners += own * (fc.Nodes[node].Index + 1) + 3 * nt + 4 * nq;
   }
-  RequireMemory(50.0 * static_cast<double>(cells) + 4.0 * static_cast<double>(corners) +
-      48.0 * static_cast<double>(fc.Points.size()),
-    "the VTK output of " + std::to_string(cells) + " cells",
-    "lower the reconstruction threshold (or MaximumThreshold)");
-  const std::vector<int> multiplicity =
-    flowrecon::EdgeMultiplicities(fc.Nodes, fc.Arcs, run, t);
-
-  // Port 0: the cells, over the points they use (samples keep their input id).
   // 32-bit ids (cells, points and nodes fit: the builder refuses 2^31 nodes):
   // a reconstructed solid has some 70 cells per sample, and 64-bit ids would be
   // a third of its memory.
   const bool narrow = corners < std::numeric_limits<std::int32_t>::max();
+  {
+    // What is allocated below, array by array (an estimate short by 7 B a cell
+    // let VTK abort the process under a limit): per cell its type, offset,
+    // seven int and three double arrays; per corner an id; per point of fc its
+    // output id and source, per output point (at most as many) its coordinates
+    // and original id; per node its edge multiplicity; and the profile's rows
+    // (ProfileTable: 48 B). A twentieth more for the allocators' rounding.
+    const double id = narrow ? 4 : 8;
+    const double bytes = (1 + id + 7 * 4 + 3 * 8) * static_cast<double>(cells) +
+      id * static_cast<double>(corners) +
+      (id + 8 + 24 + 8) * static_cast<double>(fc.Points.size()) +
+      4.0 * static_cast<double>(fc.Nodes.size()) + 48.0 * static_cast<double>(run.Order.size());
+    RequireMemory(1.05 * bytes + (16 << 20), "the VTK output of " + std::to_string(cells) + " cells",
+      "lower the reconstruction threshold (or MaximumThreshold)");
+  }
+  const std::vector<int> multiplicity =
+    flowrecon::EdgeMultiplicities(fc.Nodes, fc.Arcs, run, t);
+
+  // Port 0: the cells, over the points they use (samples keep their input id).
   auto types = vtkSmartPointer<vtkUnsignedCharArray>::New();
   types->SetNumberOfValues(cells);
   std::vector<Id> used; // fc point of each output point

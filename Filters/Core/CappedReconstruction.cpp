@@ -1,6 +1,7 @@
 #include "CappedReconstruction.h"
 
 #include "DeferredReconstruction.h"
+#include "MemoryGuard.h"
 
 #include <algorithm>
 #include <chrono>
@@ -85,6 +86,9 @@ CappedReconstruction Attempt(const std::vector<Point3>& points, const BuildOptio
     r.Lines->CompleteSimplifiedArcs(fc.Arcs);
   }
   r.SimplificationSeconds = lap();
+  // The simplification's In/Out lists were tbbmalloc's; the queue allocates
+  // from glibc's heap, which cannot reuse them.
+  ReleaseFreedMemory();
   const std::vector<bool> survives =
     r.Simplified ? r.Simplification.Survives : std::vector<bool>(fc.Nodes.size(), true);
   const std::vector<Id> init =

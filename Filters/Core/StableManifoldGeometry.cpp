@@ -25,10 +25,13 @@ namespace flowrecon
 namespace
 {
 
-/// Memory of one drawn cell from here to the VTK output: the core's cell and
-/// node (40 B), VTK's connectivity, offset and type (41 B) and ten cell-data
-/// values (76 B), plus a share of the constructed points.
-constexpr double BytesPerCell = 200;
+/// Memory of one drawn cell in the core: the cell and its node (16 B), the
+/// cones' copy of walked triangles, a share of the constructed points and of
+/// the vectors' growth (measured: 66 B a triangle on 10^6 points of a scanned
+/// surface). The VTK output has guards of its own (ReconstructionConversion,
+/// FlowComplexToVTK), by when `reconstruct` has freed the triangulation (~0.7 KB
+/// a point): counting VTK's arrays here refused a 10^7-point drawing that fits.
+constexpr double BytesPerCell = 100;
 
 } // namespace
 

@@ -124,4 +124,4 @@ endif ()
 # guard's one line (estimate, what is available, what to do), not an abort.
 add_test(NAME cli.MemoryGuard
   COMMAND sh "${CMAKE_CURRENT_LIST_DIR}/RunUnderLimit.sh" "$<TARGET_FILE:flowrecon>" "${_w}")
-set_tests_properties(cli.MemoryGuard PROPERTIES TIMEOUT 120)
+set_tests_properties(cli.MemoryGuard PROPERTIES TIMEOUT 400)

@@ -2,7 +2,8 @@
 # Memory guard test (DESIGN.md, "never killed for memory"): under an
 # address-space limit, `flowrecon reconstruct --tr inf` of a 20000-point torus
 # surface (whose whole flow complex does not fit) must stop with exit code 1 and
-# one line giving the estimate and what to do, never abort or be killed.
+# one line giving the estimate and what to do, never abort or be killed; so
+# must every limit of a sweep up to where it fits.
 # Usage: RunUnderLimit.sh FLOWRECON WORKDIR
 set -u
 flowrecon=$1
@@ -32,5 +33,31 @@ for limit in 300000 800000; do
   esac
   [ ! -e "$out" ] || { echo "FAIL: $out was written"; status=1; }
 done
+# Every limit between "refused" and "fits": each guard must count what its phase
+# allocates (the VTK output's guard, short by 7 bytes a cell, let VTK abort the
+# process at 1.5 GB). Each run either writes its file (exit 0) or gives the
+# guard's line (exit 1); the sweep must see both, or it missed the boundary.
+fitted=0; refused=0
+limit=1050000
+while [ "$limit" -le 1750000 ]; do
+  out="$work/sweep.vtu"
+  rm -f "$out"
+  ( ulimit -v "$limit"; exec "$flowrecon" reconstruct "$cloud" -o "$out" --tr inf --tp 0 --quiet ) \
+    2> "$work/sweep.err"
+  code=$?
+  if [ "$code" -eq 0 ] && [ -s "$out" ]; then
+    fitted=$((fitted + 1))
+  elif [ "$code" -eq 1 ] && [ "$(wc -l < "$work/sweep.err")" -eq 1 ] &&
+    grep -q "needs about.*GB are available; " "$work/sweep.err" && [ ! -e "$out" ]; then
+    refused=$((refused + 1))
+  else
+    echo "FAIL: ulimit -v $limit: exit code $code, stderr: [$(cat "$work/sweep.err")]"; status=1
+  fi
+  limit=$((limit + 50000))
+done
+echo "sweep 1.05-1.75 GB: $fitted written, $refused refused by a guard"
+if [ $fitted -eq 0 ] || [ $refused -eq 0 ]; then
+  echo "FAIL: the sweep did not cross from refused to written"; status=1
+fi
 [ $status -eq 0 ] && echo PASS
 exit $status
