@@ -102,7 +102,7 @@ CloudReconstructionReport ReconstructCloud(const std::vector<Point3>& samples,
   progress(0.95, "output");
   // No sponsor arrows: nothing here reads them (millions at 10^6 points).
   ReconstructionToVTK(fc, r.Carriers, r.Run, settings.OutputThreshold, triangles, tetrahedra,
-    outputs.Grid, outputs.Profile, nullptr);
+    outputs.Grid, outputs.Profile, nullptr, settings.Advice);
   if (report.TopologyError.empty())
   {
     TopologyToVTK(bars, settings.OutputThreshold, tdraw, outputs.Grid, outputs.Topology);

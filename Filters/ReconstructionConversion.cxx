@@ -329,7 +329,7 @@ void FillCells(const FlowComplex& fc, const std::vector<Id>& selected, const Cel
 
 void ReconstructionGrid(const FlowComplex& fc, const std::vector<Id>& carriers,
   const ReconstructionResult& run, double t, const CellsByNode& triangles,
-  const CellsByNode& tetrahedra, vtkUnstructuredGrid* grid)
+  const CellsByNode& tetrahedra, vtkUnstructuredGrid* grid, const std::string& advice)
 {
   const auto& steps = run.Nodes;
   const std::vector<Id> selected = SelectedNodes(fc, carriers, run, t);
@@ -360,8 +360,10 @@ void ReconstructionGrid(const FlowComplex& fc, const std::vector<Id>& carriers,
       id * static_cast<double>(corners) +
       (id + 8 + 24 + 8) * static_cast<double>(fc.Points.size()) +
       4.0 * static_cast<double>(fc.Nodes.size()) + 48.0 * static_cast<double>(run.Order.size());
-    RequireMemory(1.05 * bytes + (16 << 20), "the VTK output of " + std::to_string(cells) + " cells",
-      "lower the reconstruction threshold (or MaximumThreshold)");
+    RequireMemory(1.05 * bytes + (16 << 20),
+      "the VTK output of " + std::to_string(cells) + " cells of a " +
+        std::to_string(fc.NumberOfInputPoints) + "-point cloud",
+      advice);
   }
   const std::vector<int> multiplicity =
     flowrecon::EdgeMultiplicities(fc.Nodes, fc.Arcs, run, t);
@@ -531,11 +533,12 @@ void SponsorArrows(const FlowComplex& fc, const ReconstructionResult& run, doubl
 
 void ReconstructionToVTK(const FlowComplex& fc, const std::vector<Id>& carriers,
   const ReconstructionResult& run, double t, const CellsByNode& triangles,
-  const CellsByNode& tetrahedra, vtkUnstructuredGrid* grid, vtkTable* profile, vtkPolyData* arrows)
+  const CellsByNode& tetrahedra, vtkUnstructuredGrid* grid, vtkTable* profile, vtkPolyData* arrows,
+  const std::string& advice)
 {
   if (grid)
   {
-    ReconstructionGrid(fc, carriers, run, t, triangles, tetrahedra, grid);
+    ReconstructionGrid(fc, carriers, run, t, triangles, tetrahedra, grid, advice);
   }
   if (profile)
   {

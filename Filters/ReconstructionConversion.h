@@ -10,6 +10,7 @@
 #include "Reconstruction.h" // core data structure
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 class vtkPolyData;
@@ -30,10 +31,12 @@ using CellsByNode = CompressedRows<Id>;
 /// (a horizontal mark in its chart; NaN, no mark, for t >= 1e308: every step);
 /// port 2 (`arrows`) the sponsor arrows at `t`. `fc` holds the drawn
 /// geometry of those nodes, grouped by `triangles` and `tetrahedra`.
-/// A null `grid`, `profile` or `arrows` is skipped.
+/// A null `grid`, `profile` or `arrows` is skipped. Throws InputError, ending
+/// with `advice`, when the grid would not fit in memory (VTK would abort).
 void ReconstructionToVTK(const FlowComplex& fc, const std::vector<Id>& carriers,
   const ReconstructionResult& run, double t, const CellsByNode& triangles,
-  const CellsByNode& tetrahedra, vtkUnstructuredGrid* grid, vtkTable* profile, vtkPolyData* arrows);
+  const CellsByNode& tetrahedra, vtkUnstructuredGrid* grid, vtkTable* profile, vtkPolyData* arrows,
+  const std::string& advice = "lower the reconstruction threshold (or MaximumThreshold)");
 
 /// Sets the profile's column `t_r` (the mark of `t` in its chart, the last
 /// column): with it, a profile made at one t_r serves every other.
