@@ -491,11 +491,21 @@ void SponsorArrows(const FlowComplex& fc, const ReconstructionResult& run, doubl
   {
     n += drawn(node) ? 1 : 0;
   }
+  // Filled through raw pointers: a t_r change in ParaView redraws every arrow,
+  // and per-point virtual SetTuple/InsertNextCell calls were most of that.
   arrowPoints->SetNumberOfPoints(2 * n);
-  lines->AllocateExact(n, 2 * n);
   arrowInsertion.Resize(n);
   direction->SetNumberOfTuples(2 * n);
   pointPriority->SetNumberOfValues(2 * n);
+  auto offsets = vtkSmartPointer<vtkIdTypeArray>::New();
+  auto connectivity = vtkSmartPointer<vtkIdTypeArray>::New();
+  offsets->SetNumberOfValues(n + 1);
+  connectivity->SetNumberOfValues(2 * n);
+  double* const xyz = vtkDoubleArray::SafeDownCast(arrowPoints->GetData())->GetPointer(0);
+  double* const dir = direction->GetPointer(0);
+  double* const priority = pointPriority->GetPointer(0);
+  vtkIdType* const offset = offsets->GetPointer(0);
+  vtkIdType* const corner = connectivity->GetPointer(0);
   vtkIdType a = 0;
   for (const Id node : run.Order)
   {
@@ -506,17 +516,23 @@ void SponsorArrows(const FlowComplex& fc, const ReconstructionResult& run, doubl
     const flowrecon::Insertion& in = steps[node];
     const auto& from = fc.Nodes[in.Sponsor].Location;
     const auto& to = fc.Nodes[node].Location;
-    const vtkIdType ids[2] = { 2 * a, 2 * a + 1 };
-    arrowPoints->SetPoint(ids[0], from.data());
-    arrowPoints->SetPoint(ids[1], to.data());
-    lines->InsertNextCell(2, ids);
+    for (int k = 0; k < 3; ++k)
+    {
+      xyz[6 * a + k] = from[k];
+      xyz[6 * a + 3 + k] = to[k];
+      dir[6 * a + k] = to[k] - from[k];
+      dir[6 * a + 3 + k] = 0;
+    }
+    offset[a] = 2 * a;
+    corner[2 * a] = 2 * a;
+    corner[2 * a + 1] = 2 * a + 1;
     arrowInsertion.Set(a, in.Step, node, in);
-    direction->SetTuple3(ids[0], to[0] - from[0], to[1] - from[1], to[2] - from[2]);
-    direction->SetTuple3(ids[1], 0, 0, 0);
-    pointPriority->SetValue(ids[0], in.Priority);
-    pointPriority->SetValue(ids[1], in.Priority);
+    priority[2 * a] = in.Priority;
+    priority[2 * a + 1] = in.Priority;
     ++a;
   }
+  offset[n] = 2 * n;
+  lines->SetData(offsets, connectivity);
   arrows->Initialize();
   arrows->SetPoints(arrowPoints);
   arrows->SetLines(lines);
