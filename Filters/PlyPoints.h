@@ -3,8 +3,8 @@
 // and reads garbage numbers as 0, and CGAL 5.5's read_PLY crashes on integer
 // coordinates, hangs on a large element without properties, allocates a
 // list's announced length, skips unknown property types (misreading the rest)
-// and reads a missing z as 0 (TestPointCloudReader pins each case); this
-// reports the element and line.
+// and reads a missing z as 0 (TestLibraryReaderDefects checks that they still
+// do, TestPointCloudReader that this does not); this reports the element and line.
 #ifndef PlyPoints_h
 #define PlyPoints_h
 

@@ -3,8 +3,9 @@
 // reported with its number: VTK 9.2's readers read a malformed number as 0 and
 // accept truncated files, vtkDelimitedTextReader's rows are not the file's
 // lines, and CGAL 5.5's read_XYZ/read_OFF/read_OBJ read "3x" as 3 and
-// "1.2.3 4" as (1.2, 0.3, 4), skip a first line they cannot parse as a count,
-// and accept truncated OFF files (TestPointCloudReader pins each case). See
+// "1.2.3 4" as (1.2, 0.3, 4), take a first line they cannot parse for a count,
+// and accept truncated OFF files (TestLibraryReaderDefects checks that they
+// still do, TestPointCloudReader that this does not). See
 // PointCloudParsing.h for the shared pieces.
 #ifndef PointCloudTextFormats_h
 #define PointCloudTextFormats_h

@@ -342,8 +342,9 @@ void TestWhatLibraryReadersMisread()
     0, "file ends inside vertex property 'z' (truncated?)");
 
   // CGAL::IO::read_XYZ reads "3x" as 3 and "1.2.3 4" as (1.2, 0.3, 4), takes a
-  // first line it cannot parse (0x10, 1e999) for a point count and reads no
+  // first line it cannot parse (0x10, 1e999) for a point count, losing that
   // point, and refuses a fourth column (the start of a normal).
+  // TestLibraryReaderDefects checks that the libraries still read these wrong.
   ExpectError(Write("trailing.xyz", "1 2 3x\n"), 1, "cannot parse '3x' as a number (z");
   ExpectError(Write("dots.xyz", "1.2.3 4\n"), 1, "cannot parse '1.2.3' as a number (x");
   ExpectError(Write("hex.xyz", "0x10 2 3\n4 5 6\n"), 1, "cannot parse '0x10'");
