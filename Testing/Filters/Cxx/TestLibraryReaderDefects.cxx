@@ -1,8 +1,9 @@
 // Why vtkPointCloudReader keeps its own point parsers (issue #11): each case
-// runs a point reader this machine's libraries provide (CGAL 5.5's, VTK 9.2's)
-// on a bad file that vtkPointCloudReader refuses or reads right (see
-// TestPointCloudReader's TestWhatLibraryReadersMisread), and checks that the
-// library still gets it wrong. A failed check here means the library was fixed:
+// runs a point reader this machine's libraries provide (CGAL 5.5's; VTK 9.2's
+// PLY, OBJ, simple-points, PTS and delimited-text readers) on a bad file that
+// vtkPointCloudReader refuses or reads right (see TestPointCloudReader's
+// TestWhatLibraryReadersMisread), and checks that the library still gets it
+// wrong. A failed check here means the library was fixed:
 // that format's parser may then be swapped for it without losing a test's
 // meaning. The hang of CGAL's read_PLY on a large element without properties is
 // not probed: telling a hang from slowness needs a clock.
@@ -22,6 +23,9 @@
 #include "vtkNew.h"
 #include "vtkOBJReader.h"
 #include "vtkPLYReader.h"
+#include "vtkPTSReader.h"
+#include "vtkPoints.h"
+#include "vtkSimplePointsReader.h"
 #include "vtkPolyData.h"
 #include "vtkTable.h"
 
@@ -261,6 +265,27 @@ void VtkPly()
   CHECK(errors.Count == 0 && reader->GetOutput()->GetNumberOfPoints() == 2);
 }
 
+// VTK's own readers of xyz and pts files.
+void VtkXyzPts()
+{
+  vtkNew<vtkSimplePointsReader> xyz;
+  VtkErrors xyzErrors(xyz);
+  xyz->SetFileName(Write("trailing_simple.xyz", "1 2 3x\n4 5 6\n").c_str());
+  xyz->Update();
+  // "3x" is read as 3 and the rest of the file is lost, without an error.
+  CHECK(xyzErrors.Count == 0 && xyz->GetOutput()->GetNumberOfPoints() == 1 &&
+    xyz->GetOutput()->GetPoint(0)[2] == 3);
+
+  vtkNew<vtkPTSReader> pts;
+  VtkErrors ptsErrors(pts);
+  pts->SetFileName(Write("word.pts", "2\n1 2 3\n4 five 6\n").c_str());
+  pts->Update();
+  // One point, without an error: x from the line with "five", y and z left
+  // from the line before.
+  CHECK(ptsErrors.Count == 0 && pts->GetOutput()->GetNumberOfPoints() == 1 &&
+    pts->GetOutput()->GetPoint(0)[0] == 4 && pts->GetOutput()->GetPoint(0)[1] == 2);
+}
+
 void VtkDelimitedText()
 {
   vtkNew<vtkDelimitedTextReader> reader;
@@ -296,6 +321,7 @@ int main(int argc, char* argv[])
   CgalPly();
   VtkObj();
   VtkPly();
+  VtkXyzPts();
   VtkDelimitedText();
   return check::Finish("TestLibraryReaderDefects");
 }
