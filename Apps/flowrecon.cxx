@@ -85,8 +85,9 @@ void ReconstructOptions(CLI::App* c, Arguments& args)
     "warn where the Betti numbers change for a t_r in\n"
     "[t_r, F t_r): an under-sampled region (1.1; 1 for none)");
   AddNumber(c, "--betti-max-cells", args.BettiMaxCells, "N",
-    "skip the Betti numbers (with a warning) when the\n"
-    "cells below the drawn t_r are more than N (4e6, about 20 s; 'inf' for no limit)");
+    "from a stored complex (.vtm): skip the Betti numbers\n"
+    "(with a warning) when the cells below the drawn t_r are more than N\n"
+    "(4e6; 'inf' for no limit). A cloud's come from its Hasse diagram, at any size");
   c->add_flag("--no-betti", args.NoBetti,
     "skip the Betti numbers, the topology profile and the\n"
     "warnings (on solids of millions of tetrahedra they cost about as much as the rest)");

@@ -2,6 +2,7 @@
 
 #include "CappedReconstruction.h"
 #include "CellHomology.h"
+#include "HasseTopology.h"
 #include "MemoryGuard.h"
 #include "ReconstructionConversion.h"
 #include "TopologyConversion.h"
@@ -24,14 +25,33 @@ CloudReconstructionReport ReconstructCloud(const std::vector<Point3>& samples,
   build.StableManifolds = false;
   build.UnstableManifolds = false;
   CappedReconstruction r;
+  std::vector<Bar> bars;
+  std::string topologyError;
   Id linesDeferred = 0, linesFollowed = 0;
   for (bool defer = true;; defer = false)
   {
     try
     {
       r = ReconstructBelow(
-        samples, build, settings.PersistenceThreshold, settings.Cap, defer, progress.Range(0, 0.7));
+        samples, build, settings.PersistenceThreshold, settings.Cap, defer, progress.Range(0, 0.7),
+        settings.Topology);
       phaseDone("flow complex, simplification, reconstruction queue");
+      if (settings.Topology)
+      {
+        // Every reconstruction below the cap, from the diagram alone: it needs
+        // the 2-3 arcs of every index-2 node (the complement's structure).
+        const std::vector<Arc> raw = RawArcsForTopology(r);
+        try
+        {
+          const auto P = PresenceTimes(r.Complex.Nodes, raw, r.Carriers, r.Run);
+          bars = HasseBarcode(r.Complex.Nodes, raw, P);
+        }
+        catch (const InputError& e)
+        {
+          topologyError = e.what(); // the reconstruction is still written
+        }
+        phaseDone("Betti numbers");
+      }
       const std::vector<Id> draw = NodesToDraw(r.Complex.Nodes, r.Carriers, r.Run, tdraw);
       CompleteCones(r, draw);
       // What only the queue needed goes before the drawing, the largest phase.
@@ -79,35 +99,16 @@ CloudReconstructionReport ReconstructCloud(const std::vector<Point3>& samples,
   phaseDone("drawing");
   const CellsByNode triangles = PositionsByRow(fc.TriangleNode, fc.Nodes.size());
   const CellsByNode tetrahedra = PositionsByRow(fc.TetrahedronNode, fc.Nodes.size());
-  std::vector<Bar> bars;
-  std::vector<Id> cellNodes;
-  if (!settings.Topology)
-  {
-    report.TopologyError = "not asked for";
-  }
-  else
-  {
-    try
-    {
-      bars = CellBarcode(ReconstructionCells(fc, r.Carriers, r.Run, tdraw, triangles, tetrahedra,
-                           &cellNodes, settings.MaximumTopologyCells),
-        progress.Range(0.9, 0.95), settings.MaximumTopologyCells);
-    }
-    catch (const InputError& e)
-    {
-      report.TopologyError = e.what(); // the reconstruction is still written
-    }
-  }
-  phaseDone("Betti numbers");
+  report.TopologyError = settings.Topology ? topologyError : "not asked for";
   progress(0.95, "output");
   // No sponsor arrows: nothing here reads them (millions at 10^6 points).
   ReconstructionToVTK(fc, r.Carriers, r.Run, settings.OutputThreshold, triangles, tetrahedra,
     outputs.Grid, outputs.Profile, nullptr, settings.Advice);
   if (report.TopologyError.empty())
   {
-    TopologyToVTK(bars, settings.OutputThreshold, tdraw, outputs.Grid, outputs.Topology);
-    const double window = std::max(1.0, std::min(settings.UnderSamplingWindow, tdraw / tr));
-    UnderSamplingToVTK(TopologyChangesAbove(bars, tr, window), cellNodes, fc, outputs.UnderSampling);
+    TopologyToVTK(bars, settings.OutputThreshold, settings.Cap, outputs.Grid, outputs.Topology);
+    const double window = std::max(1.0, std::min(settings.UnderSamplingWindow, settings.Cap / tr));
+    UnderSamplingToVTK(TopologyChangesAbove(bars, tr, window), {}, fc, outputs.UnderSampling);
   }
   report.Nodes = std::move(fc.Nodes);
   phaseDone("VTK output");

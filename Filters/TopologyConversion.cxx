@@ -106,7 +106,9 @@ void UnderSamplingToVTK(const std::vector<TopologyChange>& changes,
   auto nodeId = NamedArray<vtkIdTypeArray>(flowrecon::names::NodeId);
   for (const TopologyChange& c : changes)
   {
-    const Id node = c.Cell >= 0 && c.Cell < static_cast<Id>(cellNodes.size()) ? cellNodes[c.Cell] : -1;
+    const Id node = cellNodes.empty()
+      ? (c.Cell >= 0 && c.Cell < static_cast<Id>(fc.Nodes.size()) ? c.Cell : -1)
+      : (c.Cell >= 0 && c.Cell < static_cast<Id>(cellNodes.size()) ? cellNodes[c.Cell] : -1);
     if (node < 0)
     {
       continue;

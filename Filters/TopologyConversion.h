@@ -22,7 +22,8 @@ constexpr double Unbounded = 1e308;
 
 /// The under-sampling warnings as points (vtkPolyData with vertices): one per
 /// change, at the critical point of the node whose cell brings it
-/// (`cellNodes`: the node of each cell of ReconstructionCells), point data
+/// (`cellNodes`: the node of each cell of ReconstructionCells; empty when the
+/// changes' cells are node ids, as HasseBarcode's are), point data
 /// `Threshold` (the t_r above which it happens), `Dimension`, `Change` (+1 a
 /// class appears, -1 one goes), `Spacing` (twice the node's critical value: the
 /// diameter of the empty ball there) and `NodeId`.

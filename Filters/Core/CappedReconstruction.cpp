@@ -1,6 +1,8 @@
 #include "CappedReconstruction.h"
 
+#include "DeferredPatches.h"
 #include "DeferredReconstruction.h"
+#include "HasseTopology.h"
 #include "MemoryGuard.h"
 
 #include <algorithm>
@@ -15,7 +17,7 @@ namespace
 {
 
 CappedReconstruction Attempt(const std::vector<Point3>& points, const BuildOptions& options,
-  double tp, double cap, bool defer, const Progress& progress)
+  double tp, double cap, bool defer, const Progress& progress, bool keepRaw)
 {
   CappedReconstruction r;
   BuildOptions build = options;
@@ -33,6 +35,10 @@ CappedReconstruction Attempt(const std::vector<Point3>& points, const BuildOptio
     if (fc.Nodes[a.Lower].Index == 2)
     {
       r.Cones.push_back(a);
+    }
+    else if (keepRaw && fc.Nodes[a.Lower].Index == 1)
+    {
+      r.RawPatchArcs.push_back(a);
     }
   }
   auto t = std::chrono::steady_clock::now();
@@ -141,7 +147,8 @@ void CompleteCones(CappedReconstruction& r, const std::vector<Id>& nodes)
 }
 
 CappedReconstruction ReconstructBelow(const std::vector<Point3>& points, BuildOptions options,
-  double persistenceThreshold, double cap, bool allowDeferral, const Progress& progress)
+  double persistenceThreshold, double cap, bool allowDeferral, const Progress& progress,
+  bool keepRawPatchArcs)
 {
   if (!(cap > 1) || std::isnan(persistenceThreshold))
   {
@@ -151,7 +158,7 @@ CappedReconstruction ReconstructBelow(const std::vector<Point3>& points, BuildOp
   std::string because;
   try
   {
-    return Attempt(points, options, persistenceThreshold, cap, defer, progress);
+    return Attempt(points, options, persistenceThreshold, cap, defer, progress, keepRawPatchArcs);
   }
   catch (const Degenerate& e)
   {
@@ -164,9 +171,70 @@ CappedReconstruction ReconstructBelow(const std::vector<Point3>& points, BuildOp
   // A deferred walk met a tie the build never saw, or the deferred flow lines
   // could not be shown harmless: the eager build retries (with another
   // perturbation, as it would have).
-  CappedReconstruction r = Attempt(points, options, persistenceThreshold, cap, false, progress);
+  CappedReconstruction r =
+    Attempt(points, options, persistenceThreshold, cap, false, progress, keepRawPatchArcs);
   r.EagerBecause = because;
   return r;
+}
+
+std::vector<Arc> RawArcsForTopology(CappedReconstruction& r)
+{
+  const FlowComplex& fc = r.Complex;
+  if (r.Lines)
+  {
+    r.Lines->Follow(r.Lines->Nodes());
+    r.Lines->CompleteRawArcs(r.Cones);
+  }
+  std::vector<Arc> raw;
+  raw.swap(r.RawPatchArcs);
+  // The 0-1 arcs of every edge, cancelled ones too (the simplified diagram
+  // has none for those): its two samples.
+  Id samples = 0;
+  for (const Node& v : fc.Nodes)
+  {
+    samples = std::max<Id>(samples, v.Index == 0 ? v.Simplex[0] + 1 : 0);
+  }
+  std::vector<std::int32_t> nodeOfSample(static_cast<std::size_t>(samples), -1);
+  for (std::size_t v = 0; v < fc.Nodes.size(); ++v)
+  {
+    if (fc.Nodes[v].Index == 0)
+    {
+      nodeOfSample[fc.Nodes[v].Simplex[0]] = static_cast<std::int32_t>(v);
+    }
+  }
+  for (std::size_t v = 0; v < fc.Nodes.size(); ++v)
+  {
+    if (fc.Nodes[v].Index == 1)
+    {
+      for (int k = 0; k < 2; ++k)
+      {
+        const std::int32_t s = fc.Nodes[v].Simplex[k];
+        if (s < 0 || s >= samples || nodeOfSample[s] < 0)
+        {
+          throw InputError("topology: edge " + std::to_string(v) + " has no sample node");
+        }
+        raw.emplace_back(nodeOfSample[s], static_cast<Id>(v), 1);
+      }
+    }
+  }
+  raw.insert(raw.end(), r.Cones.begin(), r.Cones.end());
+  if (!fc.DeferredPatches.empty())
+  {
+    // The deferred patches drawn below the cap: theirs, or a maximum's over them.
+    const std::vector<double> presence = PresenceTimes(fc.Nodes, raw, r.Carriers, r.Run);
+    std::vector<Id> drawn;
+    for (const Id y : fc.DeferredPatches)
+    {
+      if (presence[y] < HUGE_VAL)
+      {
+        drawn.push_back(y);
+      }
+    }
+    DeferredPatches walker(fc, nullptr, *r.Triangulation);
+    const std::vector<Arc> more = walker.Walk(drawn, Progress());
+    raw.insert(raw.end(), more.begin(), more.end());
+  }
+  return raw;
 }
 
 } // namespace flowrecon

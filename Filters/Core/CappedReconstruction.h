@@ -25,6 +25,9 @@ struct CappedReconstruction
   FlowComplex Complex;
   /// The 2-3 arcs as computed, before simplification: the cones' boundaries.
   std::vector<Arc> Cones;
+  /// With keepRawPatchArcs: the 1-2 arcs as built, before simplification (the
+  /// deferred patches' are not among them), for the topology (HasseTopology.h).
+  std::vector<Arc> RawPatchArcs;
   bool Simplified = false;
   SimplificationResult Simplification; ///< when Simplified (its Arcs moved to Complex)
   /// The run at t_r = the cap: every node with Threshold < cap, as the run at
@@ -64,7 +67,15 @@ double FlowLineDeferralRatio(double cap, double persistenceThreshold);
 /// deferred patch later may meet one too: then call again with
 /// `allowDeferral` false). Throws what the stages throw (InputError, Aborted).
 CappedReconstruction ReconstructBelow(const std::vector<Point3>& points, BuildOptions options,
-  double persistenceThreshold, double cap, bool allowDeferral, const Progress& progress);
+  double persistenceThreshold, double cap, bool allowDeferral, const Progress& progress,
+  bool keepRawPatchArcs = false);
+
+/// The unsimplified diagram's arcs that the topology of r's reconstructions
+/// needs (HasseBarcode): the 0-1 arcs, the 1-2 arcs of every index-2 node that
+/// is drawn below the cap (deferred patches are walked again without the
+/// simplification's replay), and every 2-3 arc (deferred flow lines are
+/// followed). Needs r from keepRawPatchArcs; moves RawPatchArcs out.
+std::vector<Arc> RawArcsForTopology(CappedReconstruction& r);
 
 } // namespace flowrecon
 

@@ -1,0 +1,193 @@
+// The Betti numbers a cloud's reconstruction reports come from its Hasse
+// diagram (HasseBarcode); the oracle is the persistent homology over Z/2 of the
+// cells actually written (CellBarcode on the output grid, filtered by each
+// cell's Threshold). Both topology profiles must agree at every t_r up to the
+// cap, on clouds of every kind, with and without simplification, and with the
+// deferred patches and flow lines of the output-sensitive run.
+#include "Check.h"
+#include "Clouds.h"
+
+#include "CellHomology.h"
+#include "CloudReconstruction.h"
+
+#include "vtkCellArray.h"
+#include "vtkDataArray.h"
+#include "vtkCellData.h"
+#include "vtkNew.h"
+#include "vtkPolyData.h"
+#include "vtkTable.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkVariant.h"
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace
+{
+using namespace flowrecon;
+
+void Expect(bool ok, const std::string& what)
+{
+  if (!ok)
+  {
+    std::cout << "TestHasseTopology: " << what << "\n";
+    ++check::Failures();
+  }
+}
+
+/// Betti numbers (b0, b1, b2) at t of a profile given as (threshold, betti) rows.
+std::array<Id, 3> At(const std::vector<TopologyStep>& rows, double t)
+{
+  std::array<Id, 3> b{ { -1, -1, -1 } };
+  for (const TopologyStep& row : rows)
+  {
+    if (row.Threshold < t)
+    {
+      b = { { row.Betti[0], row.Betti[1], row.Betti[2] } };
+    }
+  }
+  return b;
+}
+
+std::vector<TopologyStep> Rows(vtkTable* table)
+{
+  std::vector<TopologyStep> rows;
+  for (vtkIdType r = 0; r < table->GetNumberOfRows(); ++r)
+  {
+    TopologyStep s;
+    s.Threshold = table->GetValueByName(r, "Threshold").ToDouble();
+    for (int d = 0; d < 3; ++d)
+    {
+      s.Betti[d] = table->GetValueByName(r, ("b" + std::to_string(d)).c_str()).ToLongLong();
+    }
+    rows.push_back(s);
+  }
+  return rows;
+}
+
+/// The oracle: the written cells, each from its Threshold.
+std::vector<TopologyStep> CellProfile(vtkUnstructuredGrid* grid, double cap)
+{
+  FilteredCells cells;
+  vtkDataArray* threshold = grid->GetCellData()->GetArray("Threshold");
+  std::vector<Id> ids;
+  for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
+  {
+    vtkIdType n;
+    const vtkIdType* pts;
+    grid->GetCellPoints(c, n, pts);
+    ids.assign(pts, pts + n);
+    cells.Add(ids.data(), static_cast<int>(n), threshold->GetTuple1(c));
+  }
+  return TopologyProfile(CellBarcode(cells), 1, cap);
+}
+
+void Compare(const std::string& name, const std::vector<Point3>& cloud, double tp, double cap)
+{
+  CloudReconstructionSettings settings;
+  settings.PersistenceThreshold = tp;
+  settings.ReconstructionThreshold = 2;
+  settings.OutputThreshold = settings.DrawThreshold = settings.Cap = cap;
+  vtkNew<vtkUnstructuredGrid> grid;
+  vtkNew<vtkTable> profile, topology;
+  vtkNew<vtkPolyData> warnings;
+  const CloudReconstructionReport report = ReconstructCloud(
+    cloud, settings, { grid, profile, topology, warnings }, Progress(), [](const char*) {});
+  const std::string what = name + " t_p " + std::to_string(tp) + " cap " + std::to_string(cap);
+  Expect(report.TopologyError.empty(), what + ": " + report.TopologyError);
+  const std::vector<TopologyStep> hasse = Rows(topology);
+  const std::vector<TopologyStep> cells = CellProfile(grid, cap);
+  Expect(hasse.size() > 3, what + ": a profile of a few rows only");
+  std::vector<double> at;
+  for (const auto* rows : { &hasse, &cells })
+  {
+    for (const TopologyStep& s : *rows)
+    {
+      at.push_back(s.Threshold);
+    }
+  }
+  std::sort(at.begin(), at.end());
+  at.push_back(cap);
+  int differ = 0;
+  for (std::size_t k = 0; k + 1 < at.size(); ++k)
+  {
+    const double t = std::min(cap, 0.5 * (at[k] + at[k + 1]));
+    if (!(t > 1) || at[k] == at[k + 1])
+    {
+      continue;
+    }
+    const auto a = At(hasse, t), b = At(cells, t);
+    if (a != b && ++differ <= 3)
+    {
+      std::cout << what << ": at t_r " << t << " Hasse " << a[0] << " " << a[1] << " " << a[2]
+                << ", cells " << b[0] << " " << b[1] << " " << b[2] << "\n";
+    }
+  }
+  Expect(differ == 0, what + ": the profiles differ at " + std::to_string(differ) + " places");
+}
+
+/// Two unit spheres through each other's centres: b2 = 3, non-manifold.
+std::vector<Point3> TwoSpheres(int n, std::uint64_t seed)
+{
+  std::vector<Point3> a = clouds::Sphere(n / 2, seed), b = clouds::Sphere(n - n / 2, seed + 1);
+  for (Point3& p : a)
+  {
+    p[0] -= 0.5;
+  }
+  for (Point3& p : b)
+  {
+    p[0] += 0.5;
+  }
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+
+/// A trefoil knot, i.i.d. along its parameter: a curve.
+std::vector<Point3> Trefoil(int n, std::uint64_t seed)
+{
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0, 2 * M_PI);
+  std::vector<Point3> p;
+  for (int k = 0; k < n; ++k)
+  {
+    const double t = u(rng);
+    p.push_back({ { (std::sin(t) + 2 * std::sin(2 * t)) / 3,
+      (std::cos(t) - 2 * std::cos(2 * t)) / 3, -std::sin(3 * t) / 3 } });
+  }
+  return p;
+}
+
+/// An exact integer grid: cospherical and right-angled everywhere (perturbed).
+std::vector<Point3> Grid(int k)
+{
+  std::vector<Point3> p;
+  for (int x = 0; x < k; ++x)
+    for (int y = 0; y < k; ++y)
+      for (int z = 0; z < k; ++z)
+        p.push_back({ { double(x), double(y), double(z) } });
+  return p;
+}
+
+} // namespace
+
+int main()
+{
+  for (const double tp : { 0.0, 1.1, 1.5 })
+  {
+    for (const double cap : { 4.0, 8.0 })
+    {
+      Compare("sphere", clouds::Sphere(1500, 3), tp, cap);
+      Compare("torus", clouds::Torus(2000, 5), tp, cap);
+      Compare("two spheres", TwoSpheres(2400, 7), tp, cap);
+      Compare("cube", clouds::Cube(800, 11), tp, cap);
+      Compare("trefoil", Trefoil(600, 13), tp, cap);
+      Compare("icosahedron", clouds::Icosahedron(1500, 17), tp, cap);
+      Compare("grid", Grid(6), tp, cap);
+    }
+  }
+  return check::Finish("TestHasseTopology");
+}
