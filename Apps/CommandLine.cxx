@@ -180,6 +180,11 @@ CLI::Option* AddNumber(
     ->type_name(placeholder);
 }
 
+bool IsAutomatic(const NumberArg& arg)
+{
+  return !arg.Given || arg.Text == "auto";
+}
+
 double Number(const NumberArg& arg, double fallback, const std::string& command)
 {
   if (!arg.Given)

@@ -36,6 +36,9 @@ struct NumberArg
 CLI::Option* AddNumber(CLI::App* command, const char* names, NumberArg& arg,
   const char* placeholder, const char* help);
 
+/// Whether `arg` asks for a value chosen from the data: not given, or "auto".
+bool IsAutomatic(const NumberArg& arg);
+
 /// The value of `arg` ("inf" for infinity), `fallback` when not given; a usage
 /// error of `command` when it is not a number.
 double Number(const NumberArg& arg, double fallback, const std::string& command);

@@ -40,6 +40,10 @@ struct Reconstruction
   vtkSmartPointer<vtkPolyData> UnderSampling = vtkSmartPointer<vtkPolyData>::New();
   std::vector<Node> Nodes; // for --jumps
   std::string Work;        // what the cloud's path did, for --timings
+  double Tr = 0;           // the t_r used
+  std::vector<double> Tps; // the t_p candidates (NaN: the stored file's)
+  bool Automatic = false;  // Choice is set
+  ThresholdChoice Choice;
 };
 
 // A point cloud, through the core (CloudReconstruction).
@@ -66,40 +70,81 @@ Reconstruction FromCloud(const std::string& input,
   }
   r.Nodes = std::move(report.Nodes);
   r.Work = std::move(report.Work);
+  r.Tr = report.ReconstructionThreshold;
+  r.Tps = settings.AutomaticPersistence ? settings.PersistenceCandidates
+                                        : std::vector<double>{ settings.PersistenceThreshold };
+  r.Automatic = report.Automatic;
+  r.Choice = report.Choice;
   return r;
 }
 
-// A stored flow complex, through the filters.
+// A stored flow complex, through the filters: one simplification per t_p
+// candidate (none when the file is already simplified), the reconstruction
+// of each up to the cap, and the choice made on their topology profiles.
 Reconstruction FromComplex(const Arguments& args, vtkMultiBlockDataSet* complex,
-  const CloudReconstructionSettings& settings, const FlowComplexOptions& options,
+  const CloudReconstructionSettings& settings, Id cellBudget, const FlowComplexOptions& options,
   PhaseClock& clock, bool nodes)
 {
   const std::string& input = args.Input;
-  vtkSmartPointer<vtkMultiBlockDataSet> simplified = complex;
-  if (IsSimplified(complex))
+  const bool simplifiedFile = IsSimplified(complex);
+  if (simplifiedFile && args.Tp.Given && args.Tp.Text != "auto")
   {
-    if (args.Tp.Given)
+    throw Failure(input + ": already simplified; --tp applies to a flow complex only");
+  }
+  const bool automatic = settings.AutomaticReconstruction ||
+    (settings.AutomaticPersistence && !simplifiedFile);
+  std::vector<double> tps = simplifiedFile ? std::vector<double>{ std::nan("") }
+    : settings.AutomaticPersistence       ? settings.PersistenceCandidates
+                                          : std::vector<double>{ settings.PersistenceThreshold };
+  std::vector<vtkSmartPointer<vtkMultiBlockDataSet>> simplified;
+  std::vector<vtkSmartPointer<vtkFlowReconstruction>> runs;
+  std::vector<std::vector<TopologyStep>> profiles;
+  for (const double tp : tps)
+  {
+    vtkSmartPointer<vtkMultiBlockDataSet> s = complex;
+    if (!std::isnan(tp) && tp >= 1) // below 1 nothing is cancelled
     {
-      throw Failure(input + ": already simplified; --tp applies to a flow complex only");
+      vtkNew<vtkFlowComplexSimplification> simplification;
+      simplification->SetInputData(complex);
+      simplification->SetPersistenceThreshold(tp);
+      RunFilter(simplification, input, options, "simplification");
+      s = vtkMultiBlockDataSet::SafeDownCast(simplification->GetOutputDataObject(0));
+    }
+    auto reconstruction = vtkSmartPointer<vtkFlowReconstruction>::New();
+    reconstruction->SetInputData(s);
+    reconstruction->SetMaximumThreshold(automatic ? settings.Cap : settings.DrawThreshold);
+    reconstruction->SetUnderSamplingWindow(settings.UnderSamplingWindow);
+    reconstruction->SetComputeTopology(settings.Topology);
+    reconstruction->SetMaximumTopologyCells(cellBudget);
+    reconstruction->SetReconstructionThreshold(
+      settings.AutomaticReconstruction ? settings.Cap : settings.ReconstructionThreshold);
+    if (automatic)
+    {
+      RunFilter(reconstruction, input, options, "reconstruction");
+      profiles.push_back(TopologyRows(vtkTable::SafeDownCast(reconstruction->GetOutputDataObject(3))));
+    }
+    simplified.push_back(s);
+    runs.push_back(reconstruction);
+  }
+  Reconstruction r;
+  std::size_t pick = 0;
+  double tr = settings.ReconstructionThreshold;
+  if (automatic)
+  {
+    r.Automatic = true;
+    r.Choice = ChooseThresholds(profiles, settings.Cap);
+    pick = r.Choice.Candidate;
+    if (settings.AutomaticReconstruction)
+    {
+      tr = r.Choice.ReconstructionThreshold;
     }
   }
-  else if (settings.PersistenceThreshold >= 1) // below 1 nothing is cancelled
-  {
-    vtkNew<vtkFlowComplexSimplification> simplification;
-    simplification->SetInputData(complex);
-    simplification->SetPersistenceThreshold(settings.PersistenceThreshold);
-    RunFilter(simplification, input, options, "simplification");
-    simplified = vtkMultiBlockDataSet::SafeDownCast(simplification->GetOutputDataObject(0));
-  }
-  vtkNew<vtkFlowReconstruction> reconstruction;
-  reconstruction->SetInputData(simplified);
-  reconstruction->SetMaximumThreshold(settings.DrawThreshold);
-  reconstruction->SetUnderSamplingWindow(settings.UnderSamplingWindow);
-  reconstruction->SetComputeTopology(settings.Topology);
-  reconstruction->SetMaximumTopologyCells(settings.MaximumTopologyCells);
-  Reconstruction r;
-  const double tr = settings.ReconstructionThreshold;
-  if (settings.OutputThreshold != tr)
+  r.Tps = tps;
+  r.Tr = tr;
+  vtkFlowReconstruction* reconstruction = runs[pick];
+  const double output = settings.AutomaticReconstruction ? std::max(settings.OutputThreshold, tr)
+                                                         : settings.OutputThreshold;
+  if (output != tr)
   {
     // The warnings at t_r; then the file's family below T (a selection: the
     // queue and the drawing are cached).
@@ -107,9 +152,9 @@ Reconstruction FromComplex(const Arguments& args, vtkMultiBlockDataSet* complex,
     RunFilter(reconstruction, input, options, "reconstruction");
     r.UnderSampling->DeepCopy(reconstruction->GetOutputDataObject(4));
   }
-  reconstruction->SetReconstructionThreshold(settings.OutputThreshold);
+  reconstruction->SetReconstructionThreshold(output);
   RunFilter(reconstruction, input, options, "reconstruction");
-  if (settings.OutputThreshold == tr)
+  if (output == tr)
   {
     r.UnderSampling = vtkPolyData::SafeDownCast(reconstruction->GetOutputDataObject(4));
   }
@@ -123,7 +168,7 @@ Reconstruction FromComplex(const Arguments& args, vtkMultiBlockDataSet* complex,
   }
   std::string error;
   FlowComplex stored;
-  if (nodes && FromMultiBlock(simplified, stored, error, true))
+  if (nodes && FromMultiBlock(simplified[pick], stored, error, true))
   {
     r.Nodes = std::move(stored.Nodes);
   }
@@ -132,13 +177,22 @@ Reconstruction FromComplex(const Arguments& args, vtkMultiBlockDataSet* complex,
 
 } // namespace
 
+// The automatic range of t_r: the cap of the reconstruction, and where the
+// topology profile is searched for its most stable Betti numbers.
+constexpr double AutomaticCap = 6;
+
 int RunReconstruct(const Arguments& args)
 {
   const std::string& command = args.Command;
   const std::string output = OutputPath(args.Output, command, { ".vtu" });
   CloudReconstructionSettings settings;
-  const double tr = settings.ReconstructionThreshold = Number(args.Tr, 2.0, command);
-  const double tp = settings.PersistenceThreshold = Number(args.Tp, 1.1, command);
+  settings.AutomaticReconstruction = IsAutomatic(args.Tr);
+  settings.AutomaticPersistence = IsAutomatic(args.Tp);
+  const bool automatic = settings.AutomaticReconstruction || settings.AutomaticPersistence;
+  const double tr = settings.ReconstructionThreshold =
+    settings.AutomaticReconstruction ? 2.0 : Number(args.Tr, 2.0, command);
+  const double tp = settings.PersistenceThreshold =
+    settings.AutomaticPersistence ? 1.1 : Number(args.Tp, 1.1, command);
   if (!(tr > 1))
   {
     throw Usage("the reconstruction threshold --tr must be greater than 1", command);
@@ -146,6 +200,12 @@ int RunReconstruct(const Arguments& args)
   if (!(tp >= 0) || std::isinf(tp))
   {
     throw Usage("the persistence threshold --tp must be a finite number >= 0", command);
+  }
+  if (automatic && args.NoBetti)
+  {
+    throw Usage("--no-betti needs numbers for --tr and --tp: their automatic choice reads "
+                "the topology",
+      command);
   }
   const double jumps = Number(args.Jumps, 0, command);
   if (args.Jumps.Given && (!(jumps >= 1) || jumps != std::floor(jumps) || std::isinf(jumps)))
@@ -156,8 +216,9 @@ int RunReconstruct(const Arguments& args)
   {
     RequireDirectory(args.Profile);
   }
-  const double trmax = settings.OutputThreshold = Number(args.TrMax, tr, command);
-  if (!(trmax >= tr))
+  const double trmax = settings.OutputThreshold =
+    Number(args.TrMax, settings.AutomaticReconstruction ? 0 : tr, command);
+  if (args.TrMax.Given && !(trmax >= (settings.AutomaticReconstruction ? 1 : tr)))
   {
     throw Usage("--tr-max must be at least the reconstruction threshold --tr", command);
   }
@@ -165,29 +226,34 @@ int RunReconstruct(const Arguments& args)
   {
     RequireDirectory(args.TopologyProfile);
   }
-  // The file holds the cells below `trmax`; the Betti numbers of every t_r up
-  // to the drawn threshold come from one barcode of the family drawn below it.
   double window = Number(args.WarnWindow, 1.1, command);
   if (!(window >= 1) || std::isinf(window))
   {
     throw Usage("--warn-window must be a finite number >= 1", command);
   }
   settings.Topology = !args.NoBetti;
-  // The homology of millions of tetrahedra costs about twice the rest: a
-  // budget, above which the Betti numbers are skipped with a warning.
-  settings.MaximumTopologyCells =
-    CountOption(args, args.BettiMaxCells, 4000000, "a count >= 0 or 'inf'");
+  // A stored complex's Betti numbers come from its drawn cells: the homology
+  // of millions of tetrahedra costs about twice the rest, hence a budget.
+  const Id cellBudget = CountOption(args, args.BettiMaxCells, 4000000, "a count >= 0 or 'inf'");
   if (args.NoBetti && (!args.TopologyProfile.empty() || args.WarnWindow.Given))
   {
     throw Usage("--no-betti excludes --topology-profile and --warn-window", command);
   }
   settings.UnderSamplingWindow = window = args.NoBetti ? 1 : window;
-  // Drawn: what is written, what the profile shows, and the warnings' window.
-  const double tdraw = settings.DrawThreshold = std::max(
-    !args.TopologyProfile.empty() && !args.TrMax.Given ? std::max(tr, 4.0) : trmax, tr * window);
-  // The cap of the output-sensitive reconstruction of a cloud: every t_r a user
-  // would try, as the profile shows them.
-  settings.Cap = std::max(tdraw, args.TrMax.Given ? trmax : 4.0);
+  if (settings.AutomaticReconstruction)
+  {
+    settings.Cap = std::max(AutomaticCap, trmax);
+    settings.DrawThreshold = std::max(trmax, 1.0); // raised to the chosen t_r's needs
+  }
+  else
+  {
+    // Drawn: what is written, what the profile shows, and the warnings' window.
+    const double tdraw = settings.DrawThreshold = std::max(
+      !args.TopologyProfile.empty() && !args.TrMax.Given ? std::max(tr, 4.0) : trmax, tr * window);
+    // The cap of the output-sensitive reconstruction of a cloud: every t_r a
+    // user would try, as the profile shows them.
+    settings.Cap = std::max(tdraw, args.TrMax.Given ? trmax : automatic ? AutomaticCap : 4.0);
+  }
   settings.Advice = "lower --tr (or --tr-max)";
   FlowComplexOptions options;
   options.Quiet = args.Quiet;
@@ -199,7 +265,7 @@ int RunReconstruct(const Arguments& args)
   vtkSmartPointer<vtkMultiBlockDataSet> complex = LoadStoredFlowComplex(args.Input);
   PhaseClock clock;
   const Reconstruction r = complex
-    ? FromComplex(args, complex, settings, options, clock, args.Jumps.Given)
+    ? FromComplex(args, complex, settings, cellBudget, options, clock, args.Jumps.Given)
     : FromCloud(args.Input, settings, options, clock);
   vtkNew<vtkXMLUnstructuredGridWriter> writer;
   WriteXML(writer, r.Grid, output);
@@ -218,16 +284,27 @@ int RunReconstruct(const Arguments& args)
   if (!args.Quiet)
   {
     std::cout << output << ": " << r.Grid->GetNumberOfCells() << " cells, "
-              << StepsBelow(r.Profile, tr) << " of " << r.Profile->GetNumberOfRows()
-              << " steps at t_r " << tr << "\n";
+              << StepsBelow(r.Profile, r.Tr) << " of " << r.Profile->GetNumberOfRows()
+              << " steps at t_r " << r.Tr << "\n";
   }
   // "Betti numbers: b0 b1 b2" at t_r (scripts read this line).
   std::array<long long, 3> betti;
-  if (BettiNumbersAt(r.Topology, tr, betti))
+  if (BettiNumbersAt(r.Topology, r.Tr, betti))
   {
     if (!args.Quiet)
     {
       std::cout << "Betti numbers: " << betti[0] << " " << betti[1] << " " << betti[2] << "\n";
+      if (r.Automatic)
+      {
+        std::cout << DescribeChoice(r.Choice, r.Tps, settings.AutomaticReconstruction,
+                       settings.AutomaticPersistence && r.Tps.size() > 1)
+                  << "\n";
+        for (const std::string& w :
+          ChoiceWarnings(r.Choice, r.Tps, settings.AutomaticPersistence && r.Tps.size() > 1))
+        {
+          std::cerr << "warning: " << w << "\n";
+        }
+      }
     }
     if (!args.TopologyProfile.empty())
     {

@@ -2,7 +2,7 @@
 //
 //   flowrecon complex INPUT -o OUT.vtm [--no-stable] [--no-unstable] [--quiet]
 //   flowrecon info    INPUT [--no-stable] [--no-unstable] [--quiet]
-//   flowrecon reconstruct INPUT -o OUT.vtu [--tr T] [--tp P] [--profile P.csv] [--jumps K]
+//   flowrecon reconstruct INPUT -o OUT.vtu [--tr T|auto] [--tp P|auto] [--profile P.csv] [--jumps K]
 //                         [--tr-max T] [--topology-profile B.csv]
 //   flowrecon diagram INPUT -o PD.csv|PD.vtu
 // Every command also takes --threads N (TBB's limit for the flow complex).
@@ -66,13 +66,17 @@ void ComplexOptions(CLI::App* c, Arguments& args)
 void ReconstructOptions(CLI::App* c, Arguments& args)
 {
   OutputOption(c, args, "OUT.vtu", "the unstructured grid to write (.vtu)");
-  AddNumber(c, "--tr", args.Tr, "T", "reconstruction threshold t_r > 1, 'inf' for all steps (2)");
+  AddNumber(c, "--tr", args.Tr, "T|auto",
+    "reconstruction threshold t_r > 1, 'inf' for all steps;\n"
+    "auto (the default): where the Betti numbers are the most stable");
   AddNumber(c, "--tr-max", args.TrMax, "T",
     "write every cell with Threshold < T >= t_r, so any t_r <= T\n"
     "is a selection of the file; only those cells are drawn (t_r). From a cloud, also\n"
     "the cap below which the run is exact (4 when not given; 'inf': no cap): the\n"
     "patches that cannot matter below it are walked only when needed");
-  AddNumber(c, "--tp", args.Tp, "P", "persistence threshold t_p, 0 for none (1.1)");
+  AddNumber(c, "--tp", args.Tp, "P|auto",
+    "persistence threshold t_p, 0 for none; auto (the default):\n"
+    "1.1 or 0, whichever gives the more stable Betti numbers");
   c->add_option("--profile", args.Profile,
      "write the profile of the t_r = inf run as CSV (from a\n"
      "cloud: its steps below the cap, see --tr-max)")

@@ -9,54 +9,171 @@
 #include "StableManifoldGeometry.h"
 
 #include <algorithm>
+#include <cmath>
 #include <iomanip>
 #include <sstream>
 
 namespace flowrecon
 {
 
+namespace
+{
+
+/// One t_p: the capped run and the bars of its reconstructions below the cap.
+struct Candidate
+{
+  CappedReconstruction R;
+  std::vector<Bar> Bars;
+  std::string TopologyError;
+  double Tp = 0;
+};
+
+Candidate Run(const std::vector<Point3>& samples, const BuildOptions& build, double tp,
+  const CloudReconstructionSettings& settings, bool defer, const Progress& progress)
+{
+  Candidate c;
+  c.Tp = tp;
+  c.R = ReconstructBelow(samples, build, tp, settings.Cap, defer, progress, settings.Topology);
+  if (settings.Topology)
+  {
+    // Every reconstruction below the cap, from the diagram alone.
+    const std::vector<Arc> raw = RawArcsForTopology(c.R);
+    try
+    {
+      c.Bars = HasseBarcode(
+        c.R.Complex.Nodes, raw, PresenceTimes(c.R.Complex.Nodes, raw, c.R.Carriers, c.R.Run));
+    }
+    catch (const InputError& e)
+    {
+      c.TopologyError = e.what(); // the reconstruction is still written
+    }
+  }
+  return c;
+}
+
+/// t_r from the profiles (a fixed t_r: the candidate whose window around it
+/// is the longest).
+ThresholdChoice Choose(const std::vector<Candidate>& candidates,
+  const CloudReconstructionSettings& settings)
+{
+  std::vector<std::vector<TopologyStep>> profiles;
+  for (const Candidate& c : candidates)
+  {
+    profiles.push_back(c.TopologyError.empty() ? TopologyProfile(c.Bars, 1, settings.Cap)
+                                               : std::vector<TopologyStep>());
+  }
+  if (settings.AutomaticReconstruction)
+  {
+    return ChooseThresholds(profiles, settings.Cap);
+  }
+  ThresholdRule around; // the windows holding the given t_r
+  around.Lowest = settings.ReconstructionThreshold / (1 + 1e-12);
+  ThresholdChoice choice = ChooseThresholds(profiles,
+    std::max(settings.Cap, settings.ReconstructionThreshold * 1.01), around);
+  choice.ReconstructionThreshold = settings.ReconstructionThreshold;
+  return choice;
+}
+
+std::string WorkReport(const CappedReconstruction& r, Id linesDeferred, Id linesFollowed)
+{
+  const Timings& t = r.Complex.Time;
+  std::ostringstream work;
+  work << "patches deferred: " << r.DeferredPatches << " of " << r.Complex.CountByIndex()[2]
+       << ", walked late: " << r.WalkedLate << ", owners found by replays: " << r.ReplayedOwners
+       << "\nflow lines deferred: " << linesDeferred << " of " << 2 * r.Complex.CountByIndex()[2]
+       << ", followed late: " << linesFollowed
+       << (r.EagerBecause.empty() ? "" : "\nbuilt again without deferral: " + r.EagerBecause)
+       << std::fixed << std::setprecision(3) << "\nflow complex (s): Delaunay " << t.Delaunay
+       << "; critical points " << t.CriticalPoints << "; stable manifolds " << t.StableManifolds
+       << "; unstable manifolds " << t.UnstableManifolds << "; assembly " << t.Assembly
+       << "; then simplification " << r.SimplificationSeconds << "; reconstruction queue "
+       << r.QueueSeconds << ";";
+  return work.str();
+}
+
+} // namespace
+
 CloudReconstructionReport ReconstructCloud(const std::vector<Point3>& samples,
   const CloudReconstructionSettings& settings, const CloudReconstructionOutputs& outputs,
   const Progress& progress, const std::function<void(const char*)>& phaseDone)
 {
-  const double tr = settings.ReconstructionThreshold;
-  const double tdraw = settings.DrawThreshold;
+  const bool automatic = settings.AutomaticPersistence || settings.AutomaticReconstruction;
+  if (automatic && !settings.Topology)
+  {
+    throw InputError("automatic thresholds need the topology");
+  }
+  const std::vector<double> tps = settings.AutomaticPersistence
+    ? settings.PersistenceCandidates
+    : std::vector<double>{ settings.PersistenceThreshold };
+  if (tps.empty())
+  {
+    throw InputError("automatic thresholds: no t_p candidate");
+  }
   BuildOptions build;
   build.StableManifolds = false;
   build.UnstableManifolds = false;
-  CappedReconstruction r;
-  std::vector<Bar> bars;
-  std::string topologyError;
+  CloudReconstructionReport report;
+  Candidate chosen;
+  double tr = settings.ReconstructionThreshold;
   Id linesDeferred = 0, linesFollowed = 0;
   for (bool defer = true;; defer = false)
   {
     try
     {
-      r = ReconstructBelow(
-        samples, build, settings.PersistenceThreshold, settings.Cap, defer, progress.Range(0, 0.7),
-        settings.Topology);
-      phaseDone("flow complex, simplification, reconstruction queue");
-      if (settings.Topology)
+      std::vector<Candidate> candidates;
+      const double share = 0.7 / static_cast<double>(tps.size());
+      for (std::size_t k = 0; k < tps.size(); ++k)
       {
-        // Every reconstruction below the cap, from the diagram alone: it needs
-        // the 2-3 arcs of every index-2 node (the complement's structure).
-        const std::vector<Arc> raw = RawArcsForTopology(r);
-        try
+        if (!candidates.empty())
         {
-          const auto P = PresenceTimes(r.Complex.Nodes, raw, r.Carriers, r.Run);
-          bars = HasseBarcode(r.Complex.Nodes, raw, P);
+          // A candidate waits without its triangulation (the drawing computes
+          // one again if it wins): two would not fit where one does.
+          candidates.back().R.Triangulation.reset();
+          candidates.back().R.Lines.reset();
+          ReleaseFreedMemory();
         }
-        catch (const InputError& e)
-        {
-          topologyError = e.what(); // the reconstruction is still written
-        }
-        phaseDone("Betti numbers");
+        candidates.push_back(Run(samples, build, tps[k], settings, defer,
+          progress.Range(share * static_cast<double>(k), share * static_cast<double>(k + 1))));
       }
+      phaseDone(automatic ? "flow complex, simplification, reconstruction queue, Betti numbers (each t_p)"
+                          : "flow complex, simplification, reconstruction queue, Betti numbers");
+      std::size_t pick = 0;
+      if (automatic)
+      {
+        report.Choice = Choose(candidates, settings);
+        report.Automatic = true;
+        pick = report.Choice.Candidate;
+        tr = report.Choice.ReconstructionThreshold;
+      }
+      chosen = std::move(candidates[pick]);
+      candidates.clear();
+      break;
+    }
+    catch (const Degenerate&)
+    {
+      if (!defer)
+      {
+        throw InputError("input too degenerate (a tie in a stable manifold)");
+      }
+    }
+  }
+  CappedReconstruction& r = chosen.R;
+  report.PersistenceThreshold = chosen.Tp;
+  report.ReconstructionThreshold = tr;
+  const double output = settings.AutomaticReconstruction ? std::max(settings.OutputThreshold, tr)
+                                                         : settings.OutputThreshold;
+  const double window = std::max(1.0, std::min(settings.UnderSamplingWindow, settings.Cap / tr));
+  const double tdraw = std::min(settings.Cap,
+    settings.AutomaticReconstruction ? std::max(output, tr * window) : settings.DrawThreshold);
+  for (bool again = false;; again = true)
+  {
+    try
+    {
       const std::vector<Id> draw = NodesToDraw(r.Complex.Nodes, r.Carriers, r.Run, tdraw);
       CompleteCones(r, draw);
       // What only the queue needed goes before the drawing, the largest phase.
-      linesDeferred = r.Lines ? r.Lines->LinesDeferred() : 0;
-      linesFollowed = r.Lines ? r.Lines->LinesFollowed() : 0;
+      linesDeferred = r.Lines ? r.Lines->LinesDeferred() : linesDeferred;
+      linesFollowed = r.Lines ? r.Lines->LinesFollowed() : linesFollowed;
       r.Lines.reset();
       r.Simplification = SimplificationResult();
       // Their lists sat in tbbmalloc's pools, which the drawing's vectors
@@ -68,29 +185,15 @@ CloudReconstructionReport ReconstructCloud(const std::vector<Point3>& samples,
     }
     catch (const Degenerate&)
     {
-      if (!defer)
+      // A deferred patch drawn late met a tie: the chosen t_p, eagerly.
+      if (again)
       {
         throw InputError("input too degenerate (a tie in a stable manifold)");
       }
+      chosen = Run(samples, build, chosen.Tp, settings, false, progress.Range(0, 0.7));
     }
   }
-  CloudReconstructionReport report;
-  {
-    const Timings& t = r.Complex.Time;
-    std::ostringstream work;
-    work << "patches deferred: " << r.DeferredPatches << " of " << r.Complex.CountByIndex()[2]
-         << ", walked late: " << r.WalkedLate << ", owners found by replays: " << r.ReplayedOwners
-         << "\nflow lines deferred: " << linesDeferred << " of "
-         << 2 * r.Complex.CountByIndex()[2]
-         << ", followed late: " << linesFollowed
-         << (r.EagerBecause.empty() ? "" : "\nbuilt again without deferral: " + r.EagerBecause)
-         << std::fixed << std::setprecision(3) << "\nflow complex (s): Delaunay " << t.Delaunay
-         << "; critical points " << t.CriticalPoints << "; stable manifolds " << t.StableManifolds
-         << "; unstable manifolds " << t.UnstableManifolds << "; assembly " << t.Assembly
-         << "; then simplification " << r.SimplificationSeconds << "; reconstruction queue "
-         << r.QueueSeconds << ";";
-    report.Work = work.str();
-  }
+  report.Work = WorkReport(r, linesDeferred, linesFollowed);
   r.Triangulation.reset();
   // The triangulation is the largest block until here (~0.7 KB per point, in
   // tbbmalloc's pools): the VTK arrays below need that memory back.
@@ -99,17 +202,25 @@ CloudReconstructionReport ReconstructCloud(const std::vector<Point3>& samples,
   phaseDone("drawing");
   const CellsByNode triangles = PositionsByRow(fc.TriangleNode, fc.Nodes.size());
   const CellsByNode tetrahedra = PositionsByRow(fc.TetrahedronNode, fc.Nodes.size());
-  report.TopologyError = settings.Topology ? topologyError : "not asked for";
+  report.TopologyError = settings.Topology ? chosen.TopologyError : "not asked for";
   progress(0.95, "output");
   // No sponsor arrows: nothing here reads them (millions at 10^6 points).
-  ReconstructionToVTK(fc, r.Carriers, r.Run, settings.OutputThreshold, triangles, tetrahedra,
-    outputs.Grid, outputs.Profile, nullptr, settings.Advice);
+  ReconstructionToVTK(fc, r.Carriers, r.Run, output, triangles, tetrahedra, outputs.Grid,
+    outputs.Profile, nullptr, settings.Advice);
   if (report.TopologyError.empty())
   {
-    TopologyToVTK(bars, settings.OutputThreshold, settings.Cap, outputs.Grid, outputs.Topology);
-    const double window = std::max(1.0, std::min(settings.UnderSamplingWindow, settings.Cap / tr));
-    UnderSamplingToVTK(TopologyChangesAbove(bars, tr, window), {}, fc, outputs.UnderSampling);
+    TopologyToVTK(chosen.Bars, output, settings.Cap, outputs.Grid, outputs.Topology);
+    // A short stable window: its end is where the topology changes next.
+    double warn = window;
+    if (report.Automatic && report.Choice.Short() && report.Choice.Window.To > tr)
+    {
+      warn = std::max(warn, report.Choice.Window.To / tr * (1 + 1e-9));
+    }
+    UnderSamplingToVTK(TopologyChangesAbove(chosen.Bars, tr, warn), {}, fc, outputs.UnderSampling);
   }
+  ThresholdsToVTK(report.PersistenceThreshold, tr, settings.AutomaticPersistence,
+    settings.AutomaticReconstruction, report.Automatic ? &report.Choice.Window : nullptr, outputs.Grid,
+    outputs.Topology);
   report.Nodes = std::move(fc.Nodes);
   phaseDone("VTK output");
   return report;

@@ -8,7 +8,8 @@
 #ifndef CloudReconstruction_h
 #define CloudReconstruction_h
 
-#include "FlowComplex.h" // core data structure
+#include "AutomaticThresholds.h" // core data structure
+#include "FlowComplex.h"         // core data structure
 #include "Progress.h"    // core progress
 
 #include <functional>
@@ -25,17 +26,25 @@ namespace flowrecon
 struct CloudReconstructionSettings
 {
   double PersistenceThreshold = 1.1;   ///< t_p (below 1: no simplification)
+  /// t_p chosen among PersistenceCandidates (needs Topology): the candidate
+  /// whose topology is the most stable (AutomaticThresholds.h). The order is
+  /// the preference on ties.
+  bool AutomaticPersistence = false;
+  std::vector<double> PersistenceCandidates{ { 1.1, 0 } };
   double ReconstructionThreshold = 2;  ///< t_r, whose under-sampling is reported
+  /// t_r chosen from the topology profile (needs Topology); then the output
+  /// and drawn thresholds below are raised to it at least.
+  bool AutomaticReconstruction = false;
   double OutputThreshold = 2;          ///< the grid holds the cells below it (>= t_r)
-  double DrawThreshold = 2;            ///< nodes drawn, and the topology profile's end
-  double Cap = 4;                      ///< exact below it (>= DrawThreshold)
+  double DrawThreshold = 2;            ///< nodes drawn
+  double Cap = 4;                      ///< exact below it, and the topology profile's end
   double UnderSamplingWindow = 1.1;    ///< changes in [t_r, window t_r) are reported
   bool Topology = true;                ///< Betti numbers, topology profile, under-sampling
-  Id MaximumTopologyCells = -1;        ///< above it, no Betti numbers (-1: no limit)
   std::string Advice = "lower the threshold"; ///< for a run that would not fit in memory
 };
 
-/// vtkFlowReconstruction's ports 0, 1, 3 and 4, all required.
+/// vtkFlowReconstruction's ports 0, 1, 3 and 4, all required. The grid's and
+/// the topology table's field data also state the thresholds (ThresholdsToVTK).
 struct CloudReconstructionOutputs
 {
   vtkUnstructuredGrid* Grid = nullptr;
@@ -49,6 +58,12 @@ struct CloudReconstructionReport
   std::vector<Node> Nodes;   ///< of the simplified complex: what the profile's NodeId names
   std::string TopologyError; ///< why there are no Betti numbers ("" when there are)
   std::string Work;          ///< patches deferred and walked late, and the core's timings
+  double PersistenceThreshold = 0;    ///< t_p used (chosen or given)
+  double ReconstructionThreshold = 0; ///< t_r used (chosen or given)
+  /// With an automatic threshold: the choice, its window and each
+  /// candidate's (in PersistenceCandidates order).
+  ThresholdChoice Choice;
+  bool Automatic = false;
 };
 
 /// Reconstructs `samples` into `outputs`. `phaseDone(name)` is called at the

@@ -9,6 +9,8 @@
 #include "vtkTable.h"
 
 #include <algorithm>
+#include <cmath>
+#include <iomanip>
 #include <map>
 #include <sstream>
 #include <tuple>
@@ -52,6 +54,110 @@ bool BettiNumbersAt(vtkTable* topology, double t, std::array<long long, 3>& bett
     betti[k] = static_cast<long long>(b[k]->GetComponent(row, 0));
   }
   return true;
+}
+
+std::vector<TopologyStep> TopologyRows(vtkTable* topology)
+{
+  std::vector<TopologyStep> rows;
+  const vtkIdType n = topology ? topology->GetNumberOfRows() : 0;
+  if (n == 0)
+  {
+    return rows;
+  }
+  vtkDataArray* threshold = Column(topology, names::Threshold, "topology profile");
+  vtkDataArray* b[3] = { Column(topology, "b0", "topology profile"),
+    Column(topology, "b1", "topology profile"), Column(topology, "b2", "topology profile") };
+  for (vtkIdType row = 0; row < n; ++row)
+  {
+    TopologyStep step;
+    step.Threshold = threshold->GetComponent(row, 0);
+    for (int k = 0; k < 3; ++k)
+    {
+      step.Betti[k] = static_cast<Id>(b[k]->GetComponent(row, 0));
+    }
+    rows.push_back(step);
+  }
+  return rows;
+}
+
+namespace
+{
+
+std::string Number(double x, int digits)
+{
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(digits) << x;
+  return s.str();
+}
+
+std::string Window(const StableWindow& w)
+{
+  return "(" + Number(w.From, 2) + ", " + Number(w.To, 2) + "]";
+}
+
+std::string Betti(const StableWindow& w)
+{
+  return std::to_string(w.Betti[0]) + " " + std::to_string(w.Betti[1]) + " " +
+    std::to_string(w.Betti[2]);
+}
+
+std::string Short(double x)
+{
+  std::ostringstream s;
+  s << x;
+  return s.str();
+}
+
+} // namespace
+
+std::string DescribeChoice(const ThresholdChoice& choice, const std::vector<double>& tps,
+  bool trChosen, bool tpChosen)
+{
+  const double tp = tps.at(choice.Candidate);
+  std::string line = "t_r " + Number(choice.ReconstructionThreshold, 3) +
+    (trChosen ? " (auto)" : "") + ", t_p " + (std::isnan(tp) ? "of the file" : Short(tp)) +
+    (tpChosen ? " (auto)" : "") + ": ";
+  if (choice.Window.Length() == 0)
+  {
+    return line + "no Betti numbers hold over a range of t_r";
+  }
+  return line + "Betti numbers " + Betti(choice.Window) + ", unchanged for t_r in " +
+    Window(choice.Window);
+}
+
+std::vector<std::string> ChoiceWarnings(const ThresholdChoice& choice,
+  const std::vector<double>& tps, bool tpChosen)
+{
+  std::vector<std::string> lines;
+  if (choice.Unstable())
+  {
+    lines.push_back("no stable topology: the Betti numbers hold over no range of t_r of " +
+      Number(100 * (choice.Rule.Stable - 1), 0) + " % or more" +
+      (choice.Window.Length() > 0 ? " (the longest: " + Window(choice.Window) + ")" : "") +
+      "; the sampling may be too sparse or too noisy for this shape");
+  }
+  else if (choice.Short())
+  {
+    lines.push_back("the topology holds only for t_r in " + Window(choice.Window) +
+      ": an under-sampled region is near (see below)");
+  }
+  if (choice.ChangesAtStart > 1)
+  {
+    lines.push_back("at t_r " + Number(choice.Window.From, 2) + ", where these Betti numbers start, " +
+      std::to_string(choice.ChangesAtStart) +
+      " classes change at once: a cavity may have been filled together with its walls "
+      "(a surface sampled with holes)");
+  }
+  for (std::size_t k = 0; tpChosen && k < choice.Best.size(); ++k)
+  {
+    const StableWindow& w = choice.Best[k];
+    if (k != choice.Candidate && w.Length() > 0 && w.Betti != choice.Window.Betti)
+    {
+      lines.push_back("with t_p " + Short(tps.at(k)) + " the most stable Betti numbers are " +
+        Betti(w) + " (t_r in " + Window(w) + "): the simplification changes the answer");
+    }
+  }
+  return lines;
 }
 
 long long StepsBelow(vtkTable* profile, double t)

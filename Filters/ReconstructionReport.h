@@ -6,6 +6,7 @@
 #ifndef ReconstructionReport_h
 #define ReconstructionReport_h
 
+#include "AutomaticThresholds.h" // core: ThresholdChoice
 #include "FlowComplex.h"  // core: Id
 #include "ProfileJumps.h" // core data structure
 
@@ -24,6 +25,21 @@ namespace flowrecon
 /// empty table (the Betti numbers were skipped); throws InputError when a
 /// column is missing.
 bool BettiNumbersAt(vtkTable* topology, double t, std::array<long long, 3>& betti);
+
+/// The rows of the topology profile (TopologyToVTK's table) as the core's
+/// TopologyStep; empty for an empty table.
+std::vector<TopologyStep> TopologyRows(vtkTable* topology);
+
+/// What an automatic choice says (the thresholds, the Betti numbers and their
+/// window): "t_r 3.3 (auto), t_p 1.1 (auto): Betti numbers 1 2 1, unchanged
+/// for t_r in (3.00, 6.00]". `tps` are the t_p candidates, in the choice's order.
+std::string DescribeChoice(const ThresholdChoice& choice, const std::vector<double>& tps,
+  bool trChosen, bool tpChosen);
+
+/// The choice's warnings, one line each: no stable topology, a short window,
+/// another t_p with other Betti numbers.
+std::vector<std::string> ChoiceWarnings(const ThresholdChoice& choice,
+  const std::vector<double>& tps, bool tpChosen);
 
 /// The number of steps of `profile` (ReconstructionToVTK's table) with
 /// Threshold < t: the steps of the reconstruction at t_r = t.

@@ -4,7 +4,8 @@
 #ifndef TopologyConversion_h
 #define TopologyConversion_h
 
-#include "CellHomology.h" // core data structure
+#include "AutomaticThresholds.h" // core data structure
+#include "CellHomology.h"        // core data structure
 #include "FlowComplex.h"  // core data structure
 
 #include <vector>
@@ -41,6 +42,13 @@ void UnderSamplingToVTK(const std::vector<TopologyChange>& changes,
 /// to the largest Betti number.
 void TopologyToVTK(const std::vector<Bar>& bars, double t, double limit,
   vtkUnstructuredGrid* grid, vtkTable* table);
+
+/// The thresholds used, in the field data of `grid` and of `table`:
+/// PersistenceThreshold, ReconstructionThreshold, ThresholdsChosen (t_r, t_p:
+/// 1 when chosen from the data) and, with `window`, StableWindow (From, To]:
+/// where the reported Betti numbers hold.
+void ThresholdsToVTK(double tp, double tr, bool tpChosen, bool trChosen,
+  const StableWindow* window, vtkUnstructuredGrid* grid, vtkTable* table);
 
 } // namespace flowrecon
 
