@@ -132,7 +132,9 @@ Reconstruction FromComplex(const Arguments& args, vtkMultiBlockDataSet* complex,
   if (automatic)
   {
     r.Automatic = true;
-    r.Choice = ChooseThresholds(profiles, settings.Cap);
+    r.Choice = settings.AutomaticReconstruction
+      ? ChooseThresholds(profiles, settings.Cap)
+      : ChoosePersistence(profiles, settings.ReconstructionThreshold, settings.Cap);
     pick = r.Choice.Candidate;
     if (settings.AutomaticReconstruction)
     {
@@ -299,8 +301,8 @@ int RunReconstruct(const Arguments& args)
         std::cout << DescribeChoice(r.Choice, r.Tps, settings.AutomaticReconstruction,
                        settings.AutomaticPersistence && r.Tps.size() > 1)
                   << "\n";
-        for (const std::string& w :
-          ChoiceWarnings(r.Choice, r.Tps, settings.AutomaticPersistence && r.Tps.size() > 1))
+        for (const std::string& w : ChoiceWarnings(r.Choice, r.Tps,
+               settings.AutomaticReconstruction, settings.AutomaticPersistence && r.Tps.size() > 1))
         {
           std::cerr << "warning: " << w << "\n";
         }

@@ -51,8 +51,8 @@ Candidate Run(const std::vector<Point3>& samples, const BuildOptions& build, dou
   return c;
 }
 
-/// t_r from the profiles (a fixed t_r: the candidate whose window around it
-/// is the longest).
+/// t_r and t_p from the profiles (a given t_r: the candidate whose window
+/// around it is the longest).
 ThresholdChoice Choose(const std::vector<Candidate>& candidates,
   const CloudReconstructionSettings& settings)
 {
@@ -62,16 +62,9 @@ ThresholdChoice Choose(const std::vector<Candidate>& candidates,
     profiles.push_back(c.TopologyError.empty() ? TopologyProfile(c.Bars, 1, settings.Cap)
                                                : std::vector<TopologyStep>());
   }
-  if (settings.AutomaticReconstruction)
-  {
-    return ChooseThresholds(profiles, settings.Cap);
-  }
-  ThresholdRule around; // the windows holding the given t_r
-  around.Lowest = settings.ReconstructionThreshold / (1 + 1e-12);
-  ThresholdChoice choice = ChooseThresholds(profiles,
-    std::max(settings.Cap, settings.ReconstructionThreshold * 1.01), around);
-  choice.ReconstructionThreshold = settings.ReconstructionThreshold;
-  return choice;
+  return settings.AutomaticReconstruction
+    ? ChooseThresholds(profiles, settings.Cap)
+    : ChoosePersistence(profiles, settings.ReconstructionThreshold, settings.Cap);
 }
 
 std::string WorkReport(const CappedReconstruction& r, Id linesDeferred, Id linesFollowed)

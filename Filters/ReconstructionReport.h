@@ -36,10 +36,12 @@ std::vector<TopologyStep> TopologyRows(vtkTable* topology);
 std::string DescribeChoice(const ThresholdChoice& choice, const std::vector<double>& tps,
   bool trChosen, bool tpChosen);
 
-/// The choice's warnings, one line each: no stable topology, a short window,
-/// another t_p with other Betti numbers.
+/// The choice's warnings, one line each. With t_r chosen: no stable topology,
+/// a short window, a window opened by several changes at once, a longer
+/// window with other Betti numbers; with t_p chosen: another t_p whose most
+/// stable (or, t_r given, whose) Betti numbers differ.
 std::vector<std::string> ChoiceWarnings(const ThresholdChoice& choice,
-  const std::vector<double>& tps, bool tpChosen);
+  const std::vector<double>& tps, bool trChosen, bool tpChosen);
 
 /// The number of steps of `profile` (ReconstructionToVTK's table) with
 /// Threshold < t: the steps of the reconstruction at t_r = t.

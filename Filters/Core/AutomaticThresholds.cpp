@@ -59,24 +59,35 @@ bool ThresholdChoice::CandidatesDisagree() const
 namespace
 {
 
-/// The rule on one profile: the earliest stable window, else the longest.
-StableWindow Pick(const std::vector<StableWindow>& windows, const ThresholdRule& rule)
+/// Whether `w` beats `best` (ties within `tie` go to `best`, the earlier).
+bool Better(const StableWindow& w, const StableWindow& best, double stable, double tie)
 {
-  StableWindow earliest, longest;
-  for (const StableWindow& w : windows)
+  const bool a = w.To >= w.From * stable, b = best.To >= best.From * stable;
+  if (best.Length() == 0 || a != b)
   {
-    if (w.To >= w.From * rule.Stable &&
-      (earliest.Length() == 0 || w.From < earliest.From / rule.Tie ||
-        (w.From <= earliest.From * rule.Tie && w.Length() > earliest.Length())))
+    return best.Length() == 0 ? w.Length() > 0 : a;
+  }
+  if (a && w.Betti[2] != best.Betti[2])
+  {
+    return w.Betti[2] > best.Betti[2];
+  }
+  return w.Length() > best.Length() * tie + 1e-12;
+}
+
+Id ChangesAt(const std::vector<TopologyStep>& rows, double t)
+{
+  Id changes = 0;
+  for (std::size_t k = 1; k < rows.size(); ++k)
+  {
+    if (rows[k].Threshold == t)
     {
-      earliest = w;
-    }
-    if (w.Length() > longest.Length())
-    {
-      longest = w;
+      for (int d = 0; d < 3; ++d)
+      {
+        changes += std::abs(rows[k].Betti[d] - rows[k - 1].Betti[d]);
+      }
     }
   }
-  return earliest.Length() > 0 ? earliest : longest;
+  return changes;
 }
 
 } // namespace
@@ -91,40 +102,22 @@ ThresholdChoice ChooseThresholds(
   }
   ThresholdChoice choice;
   choice.Rule = rule;
-  bool found = false;
   for (std::size_t c = 0; c < profiles.size(); ++c)
   {
-    const StableWindow w = Pick(StableWindows(profiles[c], rule.Lowest, cap), rule);
-    choice.Best.push_back(w);
-    if (w.Length() == 0)
+    StableWindow best;
+    for (const StableWindow& w : StableWindows(profiles[c], rule.Lowest, cap))
     {
-      continue;
+      best = Better(w, best, rule.Stable, 1) ? w : best;
+      choice.Longest = w.Length() > choice.Longest.Length() * rule.Tie + 1e-12 ? w : choice.Longest;
     }
-    const StableWindow& old = choice.Window;
-    const bool stable = w.To >= w.From * rule.Stable;
-    const bool oldStable = found && old.To >= old.From * rule.Stable;
-    bool better = !found;
-    if (found && stable != oldStable)
+    choice.Best.push_back(best);
+    if (Better(best, choice.Window, rule.Stable, rule.Tie))
     {
-      better = stable;
-    }
-    else if (found && stable)
-    {
-      better = w.From < old.From / rule.Tie ||
-        (w.From <= old.From * rule.Tie && w.Length() > old.Length() * rule.Tie);
-    }
-    else if (found)
-    {
-      better = w.Length() > old.Length() * rule.Tie;
-    }
-    if (better)
-    {
-      found = true;
       choice.Candidate = c;
-      choice.Window = w;
+      choice.Window = best;
     }
   }
-  if (!found)
+  if (choice.Window.Length() == 0)
   {
     choice.Window.From = rule.Lowest;
     choice.Window.To = rule.Lowest;
@@ -132,19 +125,42 @@ ThresholdChoice ChooseThresholds(
     return choice;
   }
   const StableWindow& w = choice.Window;
-  const std::vector<TopologyStep>& rows = profiles[choice.Candidate];
-  for (std::size_t k = 1; k < rows.size(); ++k)
-  {
-    if (rows[k].Threshold == w.From)
-    {
-      for (int d = 0; d < 3; ++d)
-      {
-        choice.ChangesAtStart += std::abs(rows[k].Betti[d] - rows[k - 1].Betti[d]);
-      }
-    }
-  }
+  choice.ChangesAtStart = w.From > rule.Lowest ? ChangesAt(profiles[choice.Candidate], w.From) : 0;
   // Just above the last change, by the margin, but never past the middle.
   choice.ReconstructionThreshold = std::min(w.From * rule.Margin, std::sqrt(w.From * w.To));
+  return choice;
+}
+
+ThresholdChoice ChoosePersistence(
+  const std::vector<std::vector<TopologyStep>>& profiles, double tr, double cap)
+{
+  if (profiles.empty())
+  {
+    throw InputError("automatic t_p: no profile");
+  }
+  ThresholdChoice choice;
+  choice.ReconstructionThreshold = tr;
+  for (std::size_t c = 0; c < profiles.size(); ++c)
+  {
+    StableWindow around;
+    for (const StableWindow& w : StableWindows(profiles[c], 1, cap))
+    {
+      if (w.From < tr && tr <= w.To)
+      {
+        around = w;
+      }
+    }
+    choice.Best.push_back(around);
+    if (around.Length() > choice.Window.Length() * choice.Rule.Tie + 1e-12)
+    {
+      choice.Candidate = c;
+      choice.Window = around;
+    }
+  }
+  if (choice.Window.Length() == 0)
+  {
+    choice.Window.From = choice.Window.To = tr;
+  }
   return choice;
 }
 

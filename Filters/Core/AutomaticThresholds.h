@@ -1,13 +1,14 @@
 // Choosing t_r and t_p from the data. The reconstructions are nested in t_r:
-// as t_r grows, holes of the sampling close, then the shape is found, then
-// coarser shapes come (solids filled in, parts joined). A stable topology, one
-// that holds over a range of t_r, is what a well-sampled shape gives (the
-// paper's guarantee holds for a whole interval of t_r), and the finest stable
-// one is the shape itself: so the rule takes the first window of constant
-// Betti numbers that is long enough, among the topology profiles of a few
-// persistence thresholds. The range where the shape holds moves with the
-// sampling (i.i.d. samples need more t_r as they grow, regular lattices lose
-// patches to the simplification), so no fixed pair is right on every cloud.
+// as t_r grows, the holes of the sampling close, voids appear where a surface
+// closes, then coarser shapes come: voids filled into solids, parts joined. A
+// topology that holds over a range of t_r is what a well-sampled shape gives
+// (the paper's guarantee holds for an interval of t_r). Among the stable
+// windows of the topology profiles of a few persistence thresholds, the rule
+// takes the one enclosing the most voids (a surface with a hole not closed
+// yet, and the solid that fills it later, both have fewer), the longest among
+// those. The range where the shape holds moves with the sampling (i.i.d.
+// samples need more t_r as they grow, regular lattices lose patches to the
+// simplification), so no fixed pair is right on every cloud.
 // Data/EXPERIMENTS.md gives the rule's measured grounds.
 #ifndef flowrecon_AutomaticThresholds_h
 #define flowrecon_AutomaticThresholds_h
@@ -40,12 +41,12 @@ std::vector<StableWindow> StableWindows(const std::vector<TopologyStep>& profile
 struct ThresholdRule
 {
   double Lowest = 1.5;   ///< windows are looked for in (Lowest, cap]
-  double Stable = 1.2;   ///< a window with To/From at least this is stable
+  double Stable = 1.1;   ///< a window with To/From at least this is stable
   double Margin = 1.1;   ///< t_r = From * Margin, at most the window's middle (log)
   double Short = 1.3;    ///< a chosen window with To/From below this is short: warned
-  /// Stable windows starting within this factor of the earliest are ties,
-  /// settled for the longer, then for the earlier candidate.
-  double Tie = 1.01;
+  /// Windows within this factor of length are ties, settled for the earlier
+  /// candidate (the order of the t_p candidates is a preference).
+  double Tie = 1.02;
 };
 
 struct ThresholdChoice
@@ -55,6 +56,9 @@ struct ThresholdChoice
   StableWindow Window;           ///< where the chosen Betti numbers hold
   /// Each candidate's window as the rule picks it alone (Length 0: none).
   std::vector<StableWindow> Best;
+  /// The longest window of every candidate: when its Betti numbers are not
+  /// the chosen ones, a coarser or finer shape lasts longer (warned).
+  StableWindow Longest;
   bool Short() const { return this->Ratio() < this->Rule.Short; }
   /// No window was stable: the longest was taken.
   bool Unstable() const { return this->Ratio() < this->Rule.Stable; }
@@ -69,13 +73,19 @@ struct ThresholdChoice
   ThresholdRule Rule;
 };
 
-/// The earliest stable window over every profile (one per t_p candidate,
-/// profiles up to `cap`), and t_r in it; without a stable window, the longest
-/// one (Unstable() is then true). A profile with no window above Lowest cannot
-/// be chosen; when none has one, t_r is Lowest * Margin on the first candidate.
-/// Throws InputError without profiles or with a cap not above Lowest.
+/// The stable window with the largest b2 over every profile (one per t_p
+/// candidate, profiles up to `cap`), the longest on ties, and t_r in it;
+/// without a stable window, the longest one (Unstable() is then true). When
+/// no profile has a window above Lowest, t_r is Lowest * Margin on the first
+/// candidate. Throws InputError without profiles or with a cap not above Lowest.
 ThresholdChoice ChooseThresholds(const std::vector<std::vector<TopologyStep>>& profiles,
   double cap, const ThresholdRule& rule = ThresholdRule());
+
+/// With t_r given: the candidate whose Betti numbers at `tr` hold over the
+/// longest window around it (the first on ties, and the first when tr is past
+/// every profile's end); Window is that window, unclipped.
+ThresholdChoice ChoosePersistence(
+  const std::vector<std::vector<TopologyStep>>& profiles, double tr, double cap);
 
 } // namespace flowrecon
 
