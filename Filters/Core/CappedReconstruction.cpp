@@ -185,6 +185,13 @@ std::vector<Arc> RawArcsForTopology(CappedReconstruction& r)
     r.Lines->Follow(r.Lines->Nodes());
     r.Lines->CompleteRawArcs(r.Cones);
   }
+  // Memory: the raw arcs (the 1-2 ones kept, two per edge, the cones) and the
+  // topology's arrays after them (HasseBarcode: ~40 bytes a node).
+  RequireMemory(static_cast<double>(sizeof(Arc)) *
+        static_cast<double>(r.RawPatchArcs.size() + 2 * fc.CountByIndex()[1] + r.Cones.size()) +
+      40.0 * static_cast<double>(fc.Nodes.size()),
+    "the Betti numbers of a " + std::to_string(fc.CountByIndex()[0]) + "-point cloud's reconstructions",
+    "use --no-betti with numbers for --tr and --tp, or fewer points");
   std::vector<Arc> raw;
   raw.swap(r.RawPatchArcs);
   // The 0-1 arcs of every edge, cancelled ones too (the simplified diagram

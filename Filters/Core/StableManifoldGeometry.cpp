@@ -285,9 +285,10 @@ void DrawStableManifolds(const std::vector<Point3>& points, const BuildOptions& 
   // they would copy fc.Triangles: 24 B per drawn triangle).
   std::vector<std::array<Id, 3>> walked;
   Id walkedCount = 0;
-  const std::size_t chunk = 4096;
+  // A small first chunk: the guard below predicts from it before much is drawn.
+  std::size_t chunk = 512;
   Id fallbacks = 0;
-  for (std::size_t begin = 0; begin < facets.size(); begin += chunk)
+  for (std::size_t begin = 0; begin < facets.size(); begin += chunk, chunk = 4096)
   {
     progress(0.45 + 0.5 * static_cast<double>(begin) / static_cast<double>(facets.size()),
       "stable manifolds");

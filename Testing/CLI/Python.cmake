@@ -83,3 +83,12 @@ if (TARGET flowrecon)
   set_tests_properties(py.reconstruction.profile_jumps PROPERTIES
     ENVIRONMENT "PYTHONPATH=${FLOWRECON_PYTHONPATH}" LABELS "python" TIMEOUT 300)
 endif ()
+
+# The automatic t_r and t_p give the true Betti numbers on the study's
+# generators (surfaces, lattices, a solid, a non-manifold union, a curve).
+if (TARGET flowrecon)
+  add_test(NAME py.reconstruction.automatic_thresholds
+    COMMAND "${FLOWRECON_TEST_PYTHON}" "${CMAKE_CURRENT_SOURCE_DIR}/test_automatic_thresholds.py"
+            "$<TARGET_FILE:flowrecon>" "${CMAKE_CURRENT_BINARY_DIR}/automatic_thresholds")
+  set_tests_properties(py.reconstruction.automatic_thresholds PROPERTIES LABELS "python" TIMEOUT 300)
+endif ()

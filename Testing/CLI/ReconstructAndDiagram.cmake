@@ -54,7 +54,7 @@ flowrecon_add_cli_test(ReconstructOutputDirectoryMissing EXIT 1 STDERR_LINES 1
 flowrecon_add_cli_test(ReconstructTetrahedron EXIT 0 STDERR_LINES 0
   STDOUT "tet_all\\.vtu: [0-9]+ cells, 15 of 15 steps at t_r 2\n"
   VTM "${_w}/tet_all.vtu"
-  ARGS reconstruct "${_d}/tetrahedron.xyz" -o "${_w}/tet_all.vtu" --tp 0)
+  ARGS reconstruct "${_d}/tetrahedron.xyz" -o "${_w}/tet_all.vtu" --tp 0 --tr 2)
 flowrecon_add_cli_test(ReconstructTetrahedronEdges EXIT 0 STDERR_LINES 0
   STDOUT "tet_edges\\.vtu: 10 cells, 10 of 15 steps at t_r 1\\.1\n"
   FIXTURES_REQUIRED flowrecon_cli_vtm

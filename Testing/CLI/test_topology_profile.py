@@ -97,7 +97,7 @@ checked = 0
 for name, xyz in clouds().items():
     base = os.path.join(WORK, name.replace(" ", "_"))
     np.savetxt(base + ".xyz", xyz, fmt="%.17g")
-    out = run("reconstruct", base + ".xyz", "-o", base + ".vtu", "--tr", "2", "--tr-max", "4",
+    out = run("reconstruct", base + ".xyz", "-o", base + ".vtu", "--tr", "2", "--tp", "1.1", "--tr-max", "4",
               "--topology-profile", base + ".csv")
     intervals, stored = gudhi_intervals(base + ".vtu")
     problems = []
@@ -118,7 +118,7 @@ for name, xyz in clouds().items():
         problems.append("a profile row repeats the previous one")
     # Through the VTK filters, from a saved flow complex: the same profile.
     run("complex", base + ".xyz", "-o", base + ".vtm", "--quiet")
-    out2 = run("reconstruct", base + ".vtm", "-o", base + "_filters.vtu", "--tr", "2",
+    out2 = run("reconstruct", base + ".vtm", "-o", base + "_filters.vtu", "--tr", "2", "--tp", "1.1",
                "--tr-max", "4", "--topology-profile", base + "_filters.csv")
     if read_profile(base + "_filters.csv") != profile or printed_betti(out2) != printed_betti(out):
         problems.append("the VTK filters give another profile")

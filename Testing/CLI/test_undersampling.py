@@ -1,4 +1,4 @@
-"""Under-sampling warnings (issue #9): `flowrecon reconstruct` at its defaults
+"""Under-sampling warnings: `flowrecon reconstruct` at the paper's t_r 2, t_p 1.1
 prints 'warning: under-sampled near (x, y, z): ...' where the Betti numbers
 change for a t_r just above the chosen one. Clean quasi-uniform samples of a
 sphere, a torus and a genus-2 surface (Data/generate_clouds.py): the right
@@ -24,7 +24,8 @@ failures = []
 def reconstruct(name, points):
     path = os.path.join(WORK, name + ".xyz")
     np.savetxt(path, points, fmt="%.17g")
-    p = subprocess.run([FLOWRECON, "reconstruct", path, "-o", os.path.join(WORK, name + ".vtu")],
+    p = subprocess.run([FLOWRECON, "reconstruct", path, "-o", os.path.join(WORK, name + ".vtu"),
+                        "--tr", "2", "--tp", "1.1"],
                        capture_output=True, text=True)
     if p.returncode != 0:
         raise SystemExit("flowrecon failed on %s: %s" % (name, p.stderr))

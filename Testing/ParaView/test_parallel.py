@@ -19,7 +19,7 @@ from paraview import servermanager
 
 def serial(flowrecon, cloud, work):
     out = os.path.join(work, "serial.vtu")
-    subprocess.run([flowrecon, "reconstruct", cloud, "-o", out, "--quiet"], check=True)
+    subprocess.run([flowrecon, "reconstruct", cloud, "-o", out, "--tr", "2", "--tp", "1.1", "--quiet"], check=True)
     from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
     r = vtkXMLUnstructuredGridReader()
     r.SetFileName(out)

@@ -42,7 +42,7 @@ from checks import check, failures, finish  # noqa: E402,F401
 def cli(xyz, tr):
     """The CLI's profile, topology profile and printed Betti numbers at tr."""
     base = os.path.join(WORK, "cli_%g" % tr)
-    p = subprocess.run([FLOWRECON, "reconstruct", xyz, "-o", base + ".vtu", "--tr", str(tr),
+    p = subprocess.run([FLOWRECON, "reconstruct", xyz, "-o", base + ".vtu", "--tr", str(tr), "--tp", "1.1",
                         "--tr-max", str(TMAX), "--profile", base + "_P.csv",
                         "--topology-profile", base + "_B.csv"], capture_output=True, text=True)
     if p.returncode != 0:

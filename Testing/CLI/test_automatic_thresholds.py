@@ -1,0 +1,112 @@
+"""The automatic t_r and t_p (`flowrecon reconstruct` without --tr/--tp) on the
+study's generators (Data/generate_clouds.py), whose true Betti numbers are
+known by construction: quasi-uniform and i.i.d. surfaces, lattices that the
+simplification breaks, a solid, a non-manifold union and a curve. At defaults
+each must print its truth, a line 't_r X (auto), t_p Y (auto): Betti numbers
+..., unchanged for t_r in (a, b]' with a < X <= b, and the reconstruction's
+field data must state the same choice. With explicit numbers there is no such
+line and the field data says nothing was chosen.
+Usage: test_automatic_thresholds.py FLOWRECON WORKDIR
+"""
+import os
+import re
+import subprocess
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "..", "Data"))
+import generate_clouds as gc  # noqa: E402
+import numpy as np  # noqa: E402
+from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader  # noqa: E402
+
+FLOWRECON, WORK = sys.argv[1], sys.argv[2]
+os.makedirs(WORK, exist_ok=True)
+
+# (shape, size): every class the defaults must get right.
+CLOUDS = [
+    ("sphere_qu", 4000),        # quasi-uniform surface
+    ("torus_qu", 4000),
+    ("genus2_qu", 6000),
+    ("torus", 20000),           # i.i.d.: t_r 2 leaves holes
+    ("latlong_poles", None),    # a lattice that t_p 1.1 breaks
+    ("lattice_shell", None),
+    ("ball", 3000),             # a solid
+    ("two_spheres_qu", 4000),   # non-manifold
+    ("trefoil_qu", 1000),       # a curve
+]
+CHOICE = re.compile(r"^t_r ([0-9.]+) \(auto\), t_p ([0-9.]+) \(auto\): Betti numbers "
+                    r"(\d+) (\d+) (\d+), unchanged for t_r in \(([0-9.]+), ([0-9.]+)\]$", re.M)
+
+
+def latlong_poles():
+    """A 30 x 60 latitude-longitude lattice of the sphere of radius 10 with its
+    two poles: a sphere, (1, 0, 1); t_p 1.1 cancels its patches into holes."""
+    theta = np.linspace(0, np.pi, 32)[1:-1]
+    phi = np.linspace(0, 2 * np.pi, 60, endpoint=False)
+    t, p = np.meshgrid(theta, phi)
+    x = np.c_[np.sin(t.ravel()) * np.cos(p.ravel()), np.sin(t.ravel()) * np.sin(p.ravel()),
+              np.cos(t.ravel())]
+    return 10 * np.r_[x, [[0, 0, 1], [0, 0, -1]]]
+
+
+def field(path, name):
+    reader = vtkXMLUnstructuredGridReader()
+    reader.SetFileName(path)
+    reader.Update()
+    a = reader.GetOutput().GetFieldData().GetArray(name)
+    return None if a is None else [a.GetComponent(i, 0) for i in range(a.GetNumberOfTuples())]
+
+
+failures = []
+for shape, size in CLOUDS:
+    base = os.path.join(WORK, "%s_%s" % (shape, size or "default"))
+    with open(base + ".xyz", "w") as f:
+        f.write(gc.to_xyz_text(latlong_poles() if shape == "latlong_poles" else gc.make(shape, size=size)))
+    truth = (1, 0, 1) if shape == "latlong_poles" else tuple(gc.betti(shape))
+    p = subprocess.run([FLOWRECON, "reconstruct", base + ".xyz", "-o", base + ".vtu"],
+                       capture_output=True, text=True)
+    problems = []
+    m = CHOICE.search(p.stdout)
+    printed = re.search(r"^Betti numbers: (\d+) (\d+) (\d+)$", p.stdout, re.M)
+    if p.returncode != 0 or not m or not printed:
+        problems.append("exit %d, stdout %r, stderr %r" % (p.returncode, p.stdout, p.stderr))
+    else:
+        tr, tp = float(m.group(1)), float(m.group(2))
+        betti = tuple(int(x) for x in printed.groups())
+        lo, hi = float(m.group(6)), float(m.group(7))
+        if betti != truth:
+            problems.append("Betti %s, truth %s" % (betti, truth))
+        if tuple(int(m.group(k)) for k in (3, 4, 5)) != betti:
+            problems.append("the choice line names other Betti numbers")
+        if not lo < tr <= hi:
+            problems.append("t_r %g outside its window (%g, %g]" % (tr, lo, hi))
+        if field(base + ".vtu", "ThresholdsChosen") != [1, 1]:
+            problems.append("field data ThresholdsChosen %s" % field(base + ".vtu", "ThresholdsChosen"))
+        used = field(base + ".vtu", "ReconstructionThreshold")
+        if not used or abs(used[0] - tr) > 1e-3 * tr:
+            problems.append("field data ReconstructionThreshold %s, printed %g" % (used, tr))
+        if field(base + ".vtu", "PersistenceThreshold") != [tp]:
+            problems.append("field data PersistenceThreshold %s" % field(base + ".vtu", "PersistenceThreshold"))
+        window = field(base + ".vtu", "StableWindow")
+        if not window or abs(window[0] - lo) > 0.01 or abs(window[1] - hi) > 0.01:
+            problems.append("field data StableWindow %s, printed (%g, %g]" % (window, lo, hi))
+    print("%s (%s points): %s" % (shape, size or "default",
+                                  "OK " + m.group(0) if not problems else "WRONG: " + "; ".join(problems)))
+    if problems:
+        failures.append(shape)
+
+# Explicit numbers: the old behaviour, nothing chosen.
+base = os.path.join(WORK, "explicit")
+with open(base + ".xyz", "w") as f:
+    f.write(gc.to_xyz_text(gc.make("sphere_qu", size=2000)))
+p = subprocess.run([FLOWRECON, "reconstruct", base + ".xyz", "-o", base + ".vtu", "--tr", "2",
+                    "--tp", "1.1"], capture_output=True, text=True)
+if p.returncode != 0 or "(auto)" in p.stdout or field(base + ".vtu", "ThresholdsChosen") != [0, 0] \
+        or field(base + ".vtu", "ReconstructionThreshold") != [2.0]:
+    failures.append("explicit numbers")
+    print("explicit --tr 2 --tp 1.1: WRONG", p.stdout, p.stderr)
+else:
+    print("explicit --tr 2 --tp 1.1: OK, nothing chosen")
+if failures:
+    raise SystemExit("automatic thresholds wrong on: " + ", ".join(failures))
+print("the automatic thresholds give the truth on every cloud")

@@ -1,0 +1,125 @@
+// The automatic choice of t_r and t_p on hand-made topology profiles with
+// known answers: the windows of constant Betti numbers, the stable window
+// with the most voids, t_r just above its start, the flags behind the
+// warnings, and the choice of t_p for a given t_r.
+#include "AutomaticThresholds.h"
+#include "Check.h"
+
+#include <cmath>
+#include <vector>
+
+using namespace flowrecon;
+
+namespace
+{
+
+std::vector<TopologyStep> Profile(const std::vector<std::pair<double, std::array<Id, 3>>>& rows)
+{
+  std::vector<TopologyStep> p;
+  for (const auto& r : rows)
+  {
+    TopologyStep s;
+    s.Threshold = r.first;
+    s.Betti = { { r.second[0], r.second[1], r.second[2], 0 } };
+    p.push_back(s);
+  }
+  return p;
+}
+
+// A closed surface: holes close one by one (the last but one leaves a disk),
+// then the void appears at 2.1.
+const std::vector<TopologyStep> Sphere = Profile({ { 1.0, { 1, 5, 0 } }, { 1.6, { 1, 3, 0 } },
+  { 1.8, { 1, 1, 0 } }, { 1.95, { 1, 0, 0 } }, { 2.1, { 1, 0, 1 } } });
+
+// A torus whose tube is filled at 2.5: the surface holds over (2.0, 2.5] only,
+// the solid torus over (2.5, 6].
+const std::vector<TopologyStep> Torus = Profile({ { 1.0, { 3, 20, 0 } }, { 1.7, { 1, 4, 0 } },
+  { 2.0, { 1, 2, 1 } }, { 2.5, { 1, 1, 0 } } });
+
+} // namespace
+
+int main()
+{
+  // Windows: equal neighbours merge, the range clips, those below it go.
+  {
+    const auto w = StableWindows(Profile({ { 1.0, { 2, 0, 0 } }, { 1.4, { 1, 0, 0 } },
+                                   { 2.0, { 1, 0, 0 } }, { 3.0, { 1, 1, 0 } } }),
+      1.5, 6);
+    CHECK(w.size() == 2);
+    CHECK(w[0].From == 1.5 && w[0].To == 3.0 && w[0].Betti[0] == 1 && w[0].Betti[1] == 0);
+    CHECK(w[1].From == 3.0 && w[1].To == 6.0 && w[1].Betti[1] == 1);
+    CHECK_NEAR(w[1].Length(), std::log(2.0), 1e-15);
+  }
+  // The sphere: its last window, t_r 10 % above 2.1.
+  {
+    const ThresholdChoice c = ChooseThresholds({ Sphere }, 6);
+    CHECK(c.Window.Betti[2] == 1 && c.Window.From == 2.1 && c.Window.To == 6);
+    CHECK_NEAR(c.ReconstructionThreshold, 2.31, 1e-12);
+    CHECK(!c.Short() && !c.Unstable() && c.ChangesAtStart == 1);
+  }
+  // The torus: the surface (one void) over the longer solid, flagged short,
+  // and the longer window named.
+  {
+    const ThresholdChoice c = ChooseThresholds({ Torus }, 6);
+    CHECK(c.Window.Betti[1] == 2 && c.Window.Betti[2] == 1);
+    CHECK(c.Short() && !c.Unstable());
+    CHECK(c.Longest.Betti[1] == 1 && c.Longest.Betti[2] == 0 && c.Longest.From == 2.5);
+    // 10 % above the start, below the window's middle sqrt(2 * 2.5).
+    CHECK_NEAR(c.ReconstructionThreshold, 2.2, 1e-12);
+    // Two classes changed at 2.0 (a loop closed, the void appeared).
+    CHECK(c.ChangesAtStart == 3);
+  }
+  // No window spans 10 %: the longest is taken and flagged.
+  {
+    std::vector<std::pair<double, std::array<Id, 3>>> rows;
+    for (int k = 0; k < 30; ++k)
+    {
+      rows.push_back({ 1.5 * std::pow(1.05, k), { 1, static_cast<Id>(30 - k), 0 } });
+    }
+    const ThresholdChoice c = ChooseThresholds({ Profile(rows) }, 6);
+    CHECK(c.Unstable());
+    CHECK(c.Window.Length() > 0 && c.Window.To / c.Window.From < 1.1);
+  }
+  // Two t_p: the lattice broken by the simplification (7 9 0) against the
+  // sphere without it; the sphere wins, and the candidates disagree.
+  {
+    const auto broken = Profile({ { 1.0, { 7, 9, 0 } }, { 2.19, { 5, 7, 0 } } });
+    const auto whole = Profile({ { 1.0, { 1, 0, 1 } } });
+    const ThresholdChoice c = ChooseThresholds({ broken, whole }, 6);
+    CHECK(c.Candidate == 1 && c.Window.Betti[2] == 1 && c.CandidatesDisagree());
+    CHECK_NEAR(c.ReconstructionThreshold, 1.65, 1e-12);
+  }
+  // Equal windows: the first candidate (the preference).
+  {
+    const ThresholdChoice c = ChooseThresholds({ Sphere, Sphere }, 6);
+    CHECK(c.Candidate == 0 && !c.CandidatesDisagree());
+  }
+  // No profile above 1.5: the first candidate at 1.65, unstable.
+  {
+    const ThresholdChoice c = ChooseThresholds({ Profile({ { 1.0, { 1, 0, 0 } }, { 1.4, { 2, 0, 0 } } }) }, 1.45 + 0.1);
+    CHECK(c.Window.Betti[0] == 2); // (1.5, 1.55]: a window, but not stable
+    CHECK(c.Unstable());
+  }
+  // A given t_r: the t_p whose window around it is longest.
+  {
+    const ThresholdChoice c = ChoosePersistence({ Torus, Sphere }, 2.2, 6);
+    CHECK(c.Candidate == 1 && c.ReconstructionThreshold == 2.2);
+    CHECK(c.Window.From == 2.1 && c.Window.To == 6);
+    const ThresholdChoice d = ChoosePersistence({ Torus, Sphere }, 1.9, 6);
+    CHECK(d.Candidate == 0 && d.Window.From == 1.7); // (1.7, 2.0] beats (1.8, 1.95]
+  }
+  // Bad input.
+  {
+    bool threw = false;
+    try
+    {
+      ChooseThresholds({}, 6);
+    }
+    catch (const InputError&)
+    {
+      threw = true;
+    }
+    CHECK(threw);
+  }
+  return check::Finish("TestAutomaticThresholds");
+}
