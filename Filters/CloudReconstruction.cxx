@@ -28,19 +28,24 @@ struct Candidate
   std::string TopologyError;
   double Tp = 0;
   double TopologySeconds = 0; ///< following the lines, the raw arcs and the bars
+  Id LinesDeferred = 0, LinesFollowed = 0; ///< before the topology follows them all
 };
 
-Candidate Run(const std::vector<Point3>& samples, const BuildOptions& build, double tp,
-  const CloudReconstructionSettings& settings, bool defer, const Progress& progress)
+/// The run at `tp` from `build` (taken when `last`); `cones`: every raw 2-3
+/// arc when an earlier run of the build has followed its lines.
+Candidate Run(CappedBuild& build, double tp, bool last, const CloudReconstructionSettings& settings,
+  const std::vector<Arc>* cones, const Progress& progress)
 {
   Candidate c;
   c.Tp = tp;
-  c.R = ReconstructBelow(samples, build, tp, settings.Cap, defer, progress, settings.Topology);
+  c.R = ReconstructBuilt(build, tp, last, progress);
+  c.LinesDeferred = c.R.Lines ? c.R.Lines->LinesDeferred() : 0;
+  c.LinesFollowed = c.R.Lines ? c.R.Lines->LinesFollowed() : 0;
   if (settings.Topology)
   {
     const auto start = std::chrono::steady_clock::now();
     // Every reconstruction below the cap, from the diagram alone.
-    const std::vector<Arc> raw = RawArcsForTopology(c.R);
+    const std::vector<Arc> raw = RawArcsForTopology(c.R, cones);
     try
     {
       c.Bars = HasseBarcode(
@@ -107,9 +112,9 @@ CloudReconstructionReport ReconstructCloud(const std::vector<Point3>& samples,
   {
     throw InputError("automatic thresholds: no t_p candidate");
   }
-  BuildOptions build;
-  build.StableManifolds = false;
-  build.UnstableManifolds = false;
+  BuildOptions options;
+  options.StableManifolds = false;
+  options.UnstableManifolds = false;
   CloudReconstructionReport report;
   Candidate chosen;
   double tr = settings.ReconstructionThreshold;
@@ -119,23 +124,23 @@ CloudReconstructionReport ReconstructCloud(const std::vector<Point3>& samples,
   {
     try
     {
+      // One build serves every t_p: its lines are deferred from the largest.
+      CappedBuild build = BuildBelow(samples, options, *std::max_element(tps.begin(), tps.end()),
+        settings.Cap, defer, progress.Range(0, 0.4), settings.Topology);
+      phaseDone("flow complex");
       std::vector<Candidate> candidates;
-      const double share = 0.7 / static_cast<double>(tps.size());
+      candidates.reserve(tps.size());
+      const double share = 0.3 / static_cast<double>(tps.size());
       for (std::size_t k = 0; k < tps.size(); ++k)
       {
-        if (!candidates.empty())
-        {
-          // A candidate waits without its triangulation (the drawing computes
-          // one again if it wins): two would not fit where one does.
-          candidates.back().R.Triangulation.reset();
-          candidates.back().R.Lines.reset();
-          ReleaseFreedMemory();
-        }
-        candidates.push_back(Run(samples, build, tps[k], settings, defer,
-          progress.Range(share * static_cast<double>(k), share * static_cast<double>(k + 1))));
+        const bool last = k + 1 == tps.size();
+        // The lines followed once serve every run (their arcs are raw).
+        const std::vector<Arc>* cones = candidates.empty() ? nullptr : &candidates.front().R.Cones;
+        candidates.push_back(Run(build, tps[k], last, settings, cones,
+          progress.Range(0.4 + share * static_cast<double>(k), 0.4 + share * static_cast<double>(k + 1))));
       }
-      phaseDone(automatic ? "flow complex, simplification, reconstruction queue, Betti numbers (each t_p)"
-                          : "flow complex, simplification, reconstruction queue, Betti numbers");
+      phaseDone(tps.size() > 1 ? "simplification, reconstruction queue, Betti numbers (each t_p)"
+                               : "simplification, reconstruction queue, Betti numbers");
       std::ostringstream each;
       for (const Candidate& c : candidates)
       {
@@ -178,14 +183,14 @@ CloudReconstructionReport ReconstructCloud(const std::vector<Point3>& samples,
       const std::vector<Id> draw = NodesToDraw(r.Complex.Nodes, r.Carriers, r.Run, tdraw);
       CompleteCones(r, draw);
       // What only the queue needed goes before the drawing, the largest phase.
-      linesDeferred = r.Lines ? r.Lines->LinesDeferred() : linesDeferred;
-      linesFollowed = r.Lines ? r.Lines->LinesFollowed() : linesFollowed;
+      linesDeferred = r.Lines ? r.Lines->LinesDeferred() : chosen.LinesDeferred;
+      linesFollowed = r.Lines ? r.Lines->LinesFollowed() : chosen.LinesFollowed;
       r.Lines.reset();
       r.Simplification = SimplificationResult();
       // Their lists sat in tbbmalloc's pools, which the drawing's vectors
       // (glibc's heap) cannot reuse: hand them back first.
       ReleaseFreedMemory();
-      DrawStableManifolds(samples, build, draw, r.Complex, progress.Range(0.7, 0.9),
+      DrawStableManifolds(samples, options, draw, r.Complex, progress.Range(0.7, 0.9),
         settings.Advice, &r.Cones, r.Triangulation.get());
       break;
     }
@@ -196,7 +201,9 @@ CloudReconstructionReport ReconstructCloud(const std::vector<Point3>& samples,
       {
         throw InputError("input too degenerate (a tie in a stable manifold)");
       }
-      chosen = Run(samples, build, chosen.Tp, settings, false, progress.Range(0, 0.7));
+      CappedBuild eager = BuildBelow(samples, options, chosen.Tp, settings.Cap, false,
+        progress.Range(0, 0.4), settings.Topology);
+      chosen = Run(eager, chosen.Tp, true, settings, nullptr, progress.Range(0.4, 0.7));
     }
   }
   report.Work = WorkReport(r, linesDeferred, linesFollowed) +

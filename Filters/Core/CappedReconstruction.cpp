@@ -16,31 +16,49 @@ namespace flowrecon
 namespace
 {
 
-CappedReconstruction Attempt(const std::vector<Point3>& points, const BuildOptions& options,
-  double tp, double cap, bool defer, const Progress& progress, bool keepRaw)
+CappedBuild Build(const std::vector<Point3>& points, const BuildOptions& options,
+  double tpMax, double cap, bool defer, const Progress& progress, bool keepRaw)
 {
-  CappedReconstruction r;
+  CappedBuild b;
   BuildOptions build = options;
   build.StableManifolds = false;
   build.UnstableManifolds = false;
   build.DeferPatchesAboveRatio = defer ? cap : HUGE_VAL;
-  build.DeferFlowLinesAboveRatio = defer ? FlowLineDeferralRatio(cap, tp) : HUGE_VAL;
+  build.DeferFlowLinesAboveRatio = defer ? FlowLineDeferralRatio(cap, tpMax) : HUGE_VAL;
   // The build's triangulation is kept: the deferred patches and the drawing
   // walk on it (computing it again cost a quarter of a torus's run).
-  r.Complex = BuildFlowComplex(points, build, progress.Range(0, 0.7), &r.Triangulation);
-  FlowComplex& fc = r.Complex;
-  r.DeferredPatches = static_cast<Id>(fc.DeferredPatches.size());
-  for (const Arc& a : fc.Arcs)
+  std::unique_ptr<Retriangulation> triangulation;
+  b.Complex = BuildFlowComplex(points, build, progress, &triangulation);
+  b.Triangulation = std::move(triangulation);
+  for (const Arc& a : b.Complex.Arcs)
   {
-    if (fc.Nodes[a.Lower].Index == 2)
+    if (b.Complex.Nodes[a.Lower].Index == 2)
     {
-      r.Cones.push_back(a);
+      b.Cones.push_back(a);
     }
-    else if (keepRaw && fc.Nodes[a.Lower].Index == 1)
+    else if (keepRaw && b.Complex.Nodes[a.Lower].Index == 1)
     {
-      r.RawPatchArcs.push_back(a);
+      b.RawPatchArcs.push_back(a);
     }
   }
+  b.Cap = cap;
+  b.PersistenceThreshold = tpMax;
+  b.Deferred = defer;
+  return b;
+}
+
+/// The rest of the run from `b`, at t_p (<= b's): b's parts are copied, or
+/// moved when `last`.
+CappedReconstruction Continue(CappedBuild& b, double tp, bool last, const Progress& progress)
+{
+  CappedReconstruction r;
+  const double cap = b.Cap;
+  r.Complex = last ? std::move(b.Complex) : b.Complex;
+  r.Cones = last ? std::move(b.Cones) : b.Cones;
+  r.RawPatchArcs = last ? std::move(b.RawPatchArcs) : b.RawPatchArcs;
+  r.Triangulation = b.Triangulation;
+  FlowComplex& fc = r.Complex;
+  r.DeferredPatches = static_cast<Id>(fc.DeferredPatches.size());
   auto t = std::chrono::steady_clock::now();
   auto lap = [&t]() {
     const auto now = std::chrono::steady_clock::now();
@@ -74,7 +92,7 @@ CappedReconstruction Attempt(const std::vector<Point3>& points, const BuildOptio
   if (r.Simplified)
   {
     // The replays record what they need: Lowers for patches, Uppers for lines.
-    r.Simplification = Simplify(fc.Nodes, std::move(fc.Arcs), tp, progress.Range(0.7, 0.8),
+    r.Simplification = Simplify(fc.Nodes, std::move(fc.Arcs), tp, progress.Range(0, 0.5),
       !fc.DeferredPatches.empty(), r.Lines != nullptr);
     fc.Arcs = std::move(r.Simplification.Arcs); // the reconstruction grows on the simplified diagram
     r.Simplification.Arcs = {};
@@ -102,14 +120,14 @@ CappedReconstruction Attempt(const std::vector<Point3>& points, const BuildOptio
   const SimplificationResult* s = r.Simplified ? &r.Simplification : nullptr;
   if (!late)
   {
-    r.Run = Reconstruct(fc.Nodes, fc.Arcs, survives, init, cap, progress.Range(0.8, 1.0));
+    r.Run = Reconstruct(fc.Nodes, fc.Arcs, survives, init, cap, progress.Range(0.5, 1.0));
     r.Carriers = CellCarriers(r.Run, s);
     r.QueueSeconds = lap();
     return r;
   }
   DeferredReconstruction walked = ReconstructDeferred(fc,
     r.Simplified ? &r.Simplification : nullptr, *r.Triangulation, init, cap,
-    progress.Range(0.8, 1.0), r.Lines.get());
+    progress.Range(0.5, 1.0), r.Lines.get());
   r.Run = std::move(walked.Run);
   r.Carriers = std::move(walked.Carriers);
   r.WalkedLate = walked.WalkedLate;
@@ -146,7 +164,7 @@ void CompleteCones(CappedReconstruction& r, const std::vector<Id>& nodes)
   r.Lines->CompleteRawArcs(r.Cones);
 }
 
-CappedReconstruction ReconstructBelow(const std::vector<Point3>& points, BuildOptions options,
+CappedBuild BuildBelow(const std::vector<Point3>& points, BuildOptions options,
   double persistenceThreshold, double cap, bool allowDeferral, const Progress& progress,
   bool keepRawPatchArcs)
 {
@@ -155,14 +173,33 @@ CappedReconstruction ReconstructBelow(const std::vector<Point3>& points, BuildOp
     throw InputError("reconstruction: the cap must be above 1 and t_p a number");
   }
   const bool defer = allowDeferral && cap < HUGE_VAL && persistenceThreshold < cap;
+  return Build(points, options, persistenceThreshold, cap, defer, progress, keepRawPatchArcs);
+}
+
+CappedReconstruction ReconstructBuilt(
+  CappedBuild& build, double persistenceThreshold, bool last, const Progress& progress)
+{
+  if (!(persistenceThreshold <= build.PersistenceThreshold))
+  {
+    throw InputError("reconstruction: t_p above the one the build deferred for");
+  }
+  return Continue(build, persistenceThreshold, last, progress);
+}
+
+CappedReconstruction ReconstructBelow(const std::vector<Point3>& points, BuildOptions options,
+  double persistenceThreshold, double cap, bool allowDeferral, const Progress& progress,
+  bool keepRawPatchArcs)
+{
+  CappedBuild b = BuildBelow(points, options, persistenceThreshold, cap, allowDeferral,
+    progress.Range(0, 0.7), keepRawPatchArcs);
   std::string because;
   try
   {
-    return Attempt(points, options, persistenceThreshold, cap, defer, progress, keepRawPatchArcs);
+    return Continue(b, persistenceThreshold, true, progress.Range(0.7, 1));
   }
   catch (const Degenerate& e)
   {
-    if (!defer)
+    if (!b.Deferred)
     {
       throw;
     }
@@ -171,20 +208,27 @@ CappedReconstruction ReconstructBelow(const std::vector<Point3>& points, BuildOp
   // A deferred walk met a tie the build never saw, or the deferred flow lines
   // could not be shown harmless: the eager build retries (with another
   // perturbation, as it would have).
-  CappedReconstruction r =
-    Attempt(points, options, persistenceThreshold, cap, false, progress, keepRawPatchArcs);
+  b = BuildBelow(points, options, persistenceThreshold, cap, false, progress.Range(0, 0.7),
+    keepRawPatchArcs);
+  CappedReconstruction r = Continue(b, persistenceThreshold, true, progress.Range(0.7, 1));
   r.EagerBecause = because;
   return r;
 }
 
-std::vector<Arc> RawArcsForTopology(CappedReconstruction& r)
+std::vector<Arc> RawArcsForTopology(CappedReconstruction& r, const std::vector<Arc>* cones)
 {
   const FlowComplex& fc = r.Complex;
-  if (r.Lines)
+  if (cones)
+  {
+    r.Cones = *cones;
+  }
+  else if (r.Lines)
   {
     r.Lines->Follow(r.Lines->Nodes());
     r.Lines->CompleteRawArcs(r.Cones);
   }
+  // Every line is known: none is left for the drawing to follow.
+  r.Lines.reset();
   // Memory: the raw arcs (the 1-2 ones kept, two per edge, the cones) and the
   // topology's arrays after them (HasseBarcode: ~40 bytes a node).
   RequireMemory(static_cast<double>(sizeof(Arc)) *

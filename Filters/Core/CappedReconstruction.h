@@ -35,8 +35,8 @@ struct CappedReconstruction
   ReconstructionResult Run;
   std::vector<Id> Carriers; ///< CellCarriers, exact for every carrier below the cap
   /// The build's triangulation, kept for the walks that follow (share it with
-  /// DrawStableManifolds, then free it).
-  std::unique_ptr<Retriangulation> Triangulation;
+  /// DrawStableManifolds, then free it); shared by the runs of one build.
+  std::shared_ptr<Retriangulation> Triangulation;
   Id DeferredPatches = 0; ///< patches not walked by the build
   Id WalkedLate = 0;      ///< deferred patches walked for the reconstruction
   Id ReplayedOwners = 0;  ///< owners of cancelled pairs found by the replays
@@ -46,6 +46,19 @@ struct CappedReconstruction
   /// Why the deferring run was abandoned for an eager one ("" when it was not).
   std::string EagerBecause;
   double SimplificationSeconds = 0, QueueSeconds = 0; ///< wall-clock, after the build
+};
+
+/// A flow complex built once for the runs of several t_p (ReconstructBuilt):
+/// its lines are deferred from the largest t_p, which suits the smaller ones.
+struct CappedBuild
+{
+  FlowComplex Complex;            ///< nodes and arcs as built, no geometry
+  std::vector<Arc> Cones;         ///< the 2-3 arcs as built
+  std::vector<Arc> RawPatchArcs;  ///< with keepRawPatchArcs: the 1-2 arcs as built
+  std::shared_ptr<Retriangulation> Triangulation;
+  double Cap = HUGE_VAL;
+  double PersistenceThreshold = 0; ///< the largest t_p it serves
+  bool Deferred = false;           ///< patches and lines were deferred
 };
 
 /// Makes Cones hold every 2-3 arc into the maxima among `nodes` (the nodes to
@@ -70,12 +83,23 @@ CappedReconstruction ReconstructBelow(const std::vector<Point3>& points, BuildOp
   double persistenceThreshold, double cap, bool allowDeferral, const Progress& progress,
   bool keepRawPatchArcs = false);
 
+/// ReconstructBelow in two parts: the build for every t_p up to
+/// `persistenceThreshold`, then each t_p's run (which copies what it changes,
+/// or takes it when `last`). A Degenerate from a deferring build's run means:
+/// build again without deferral.
+CappedBuild BuildBelow(const std::vector<Point3>& points, BuildOptions options,
+  double persistenceThreshold, double cap, bool allowDeferral, const Progress& progress,
+  bool keepRawPatchArcs);
+CappedReconstruction ReconstructBuilt(
+  CappedBuild& build, double persistenceThreshold, bool last, const Progress& progress);
+
 /// The unsimplified diagram's arcs that the topology of r's reconstructions
 /// needs (HasseBarcode): the 0-1 arcs, the 1-2 arcs of every index-2 node that
 /// is drawn below the cap (deferred patches are walked again without the
 /// simplification's replay), and every 2-3 arc (deferred flow lines are
-/// followed). Needs r from keepRawPatchArcs; moves RawPatchArcs out.
-std::vector<Arc> RawArcsForTopology(CappedReconstruction& r);
+/// followed, or `cones` is taken for them: another run's of the same build).
+/// Needs r from keepRawPatchArcs; moves RawPatchArcs out; frees the lines.
+std::vector<Arc> RawArcsForTopology(CappedReconstruction& r, const std::vector<Arc>* cones = nullptr);
 
 } // namespace flowrecon
 
