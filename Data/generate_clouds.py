@@ -119,6 +119,32 @@ plane_grid_jittered      1000   (1, 0, 0)    25 x 40 planar grid of spacing 1 in
                                              every coordinate moved by +-1e-12: a square
 =======================  =====  ===========  ============================================
 
+Shapes added for the topology study (``Data/topology_study.py``: right / flagged /
+silent answers by class, a class being a sampling x a shape family). ``_qu`` and
+``_pd`` as above; the Poisson-disk radius of the tori rows is first guessed from an
+approximate area (``torus_row_area``), then rescaled as for every ``_pd`` shape:
+
+=======================  =====  ===========  ============================================
+name                     size   (b0,b1,b2)   what
+=======================  =====  ===========  ============================================
+genus3, _qu, _pd         3000   (1, 6, 1)    torus_row of 3 solid tori (as genus4)
+genus2_pd, genus4_pd     3000,  as genus2,   Poisson-disk samples
+                         4000   genus4
+circle, circle_qu        1000   (1, 1, 0)    unit circle of z = 0, i.i.d. / evenly spaced
+                                             (moved <= 0.1 spacing along it); z moved by
+                                             +-1e-3 spacing (an exactly planar cloud is
+                                             refused)
+cube, _qu, _pd           2000   (1, 0, 0)    uniform in the volume of [-1, 1]^3
+ball_pd                  2000   (1, 0, 0)    Poisson disk in the volume of the unit ball
+thin_plate_pd            2000   (1, 0, 1)    Poisson-disk sample of thin_plate
+two_spheres_pd,          3000   as the i.i.d Poisson-disk samples of the unions (the
+two_hemispheres_pd                           points near the crossing are shared)
+sphere_with_segment_pd   2000   (1, 0, 1)    sphere_pd + the segment at its spacing
+fibonacci_sphere         2000   (1, 0, 1)    Fibonacci lattice on the unit sphere (height
+                                             1 - (2i+1)/n, longitude i x golden angle);
+                                             size = the points
+=======================  =====  ===========  ============================================
+
 Command line::
 
     generate_clouds.py [OUTDIR] [--shapes NAME[,NAME...]] [--size NAME=N ...]
@@ -784,6 +810,89 @@ def plane_grid_jittered(n, rng, jitter=1e-12):
     return p + rng.uniform(-jitter, jitter, p.shape) if jitter else p
 
 
+
+# --------------------------------------------------------------------------- topology study
+# Shapes added for Data/topology_study.py (the classes sampling x shape family): a genus-3
+# surface, a circle, a solid cube, Poisson-disk variants of the other families and a
+# Fibonacci lattice on the sphere (see the fourth table of the module docstring).
+
+
+def genus3(n, rng):
+    """A genus-3 surface: torus_row of 3 solid tori, (1, 6, 1)."""
+    return torus_row(n, rng, 3)
+
+
+# Fraction of a torus's area (R 1, r 0.35) inside its neighbour of torus_row (centres
+# 2.4 apart), by Monte Carlo (2e6 points: 0.048). Only poisson_disk's first guess of
+# the radius uses it (it rescales the radius until it keeps 95-100 % of the points).
+TORUS_LENS_FRACTION = 0.048
+
+
+def torus_row_area(count):
+    """About the area of torus_row(count): each of the count - 1 lenses removes a cap
+    of both neighbours."""
+    return TORUS_AREA * (count - 2.0 * (count - 1) * TORUS_LENS_FRACTION)
+
+
+CIRCLE_Z_JITTER = 1e-3
+
+
+def _circle_points(angles, rng, n):
+    """Points of the unit circle of z = 0 at `angles`, each moved off the plane by a
+    uniform z in +-CIRCLE_Z_JITTER times the mean spacing 2 pi / n: the points of an
+    exactly planar cloud are refused by flowrecon ('all points are coplanar'), and the
+    cocircular ones would be degenerate everywhere."""
+    z = rng.uniform(-CIRCLE_Z_JITTER, CIRCLE_Z_JITTER, len(angles)) * (2.0 * math.pi / n)
+    return np.column_stack((np.cos(angles), np.sin(angles), z))
+
+
+def circle(n, rng):
+    """i.i.d. w.r.t. arc length on the unit circle (near-planar, see _circle_points)."""
+    return _circle_points(rng.uniform(0.0, 2.0 * math.pi, n), rng, n)
+
+
+def circle_qu(n, rng):
+    """Evenly spaced on the unit circle, each point moved by at most a tenth of the
+    spacing along it (as trefoil_qu), near-planar (see _circle_points)."""
+    return _circle_points((np.arange(n) + rng.uniform(-0.1, 0.1, n)) * (2.0 * math.pi / n),
+                          rng, n)
+
+
+def cube(n, rng):
+    """Uniform in the volume of the cube [-1, 1]^3 (a solid, (1, 0, 0))."""
+    return rng.uniform(-1.0, 1.0, (n, 3))
+
+
+def fibonacci_sphere(n, rng):
+    """The Fibonacci lattice on the unit sphere: point i at height 1 - (2 i + 1) / n and
+    longitude i times the golden angle pi (3 - sqrt 5). Regular (every point has about
+    the same neighbourhood) but not a product lattice; deterministic (rng unused)."""
+    i = np.arange(n, dtype=float)
+    z = 1.0 - (2.0 * i + 1.0) / n
+    rho = np.sqrt(np.maximum(0.0, 1.0 - z * z))
+    phi = i * (math.pi * (3.0 - math.sqrt(5.0)))
+    return np.column_stack((rho * np.cos(phi), rho * np.sin(phi), z))
+
+
+def sphere_with_segment_pd(n, rng):
+    """sphere_pd(n) plus the segment of sphere_with_segment_qu."""
+    s = sphere_pd(n, rng)
+    spacing = math.sqrt(4.0 * math.pi / n)
+    return np.vstack((s, _segment_points((1.0, 0.0, 0.0), (2.0, 0.0, 0.0), spacing, rng)))
+
+
+THIN_PLATE_AREA = 2.0 * math.pi + 2.0 * math.pi * 0.05 * (math.pi + 0.1)
+genus2_pd = _pd(genus2, torus_row_area(2))
+genus3_pd = _pd(genus3, torus_row_area(3))
+genus4_pd = _pd(genus4, torus_row_area(4))
+ball_pd = _pd(ball, 4.0 * math.pi / 3.0, dim=3)
+cube_pd = _pd(cube, 8.0, dim=3)
+thin_plate_pd = _pd(thin_plate, THIN_PLATE_AREA)
+two_spheres_pd = _pd(two_spheres, 8.0 * math.pi)
+two_hemispheres_pd = _pd(two_hemispheres, 4.0 * math.pi)
+genus3_qu = _qu(genus3)
+cube_qu = _qu(cube)
+
 # name -> (function(size, rng), default size, seed, (b0, b1, b2))
 SHAPES = {
     "sphere": (sphere, 2000, 101, (1, 0, 1)),
@@ -825,6 +934,23 @@ SHAPES = {
     "lattice_shell": (lattice_shell, 15, 313, (1, 0, 1)),
     "latlong_sphere": (latlong_sphere, 30, 314, (1, 0, 1)),
     "plane_grid_jittered": (plane_grid_jittered, 1000, 315, (1, 0, 0)),
+    # added for Data/topology_study.py (see the fourth table above)
+    "genus3": (genus3, 3000, 401, (1, 6, 1)),
+    "genus3_qu": (genus3_qu, 3000, 402, (1, 6, 1)),
+    "genus3_pd": (genus3_pd, 3000, 403, (1, 6, 1)),
+    "genus2_pd": (genus2_pd, 3000, 404, (1, 4, 1)),
+    "genus4_pd": (genus4_pd, 4000, 405, (1, 8, 1)),
+    "circle": (circle, 1000, 406, (1, 1, 0)),
+    "circle_qu": (circle_qu, 1000, 407, (1, 1, 0)),
+    "cube": (cube, 2000, 408, (1, 0, 0)),
+    "cube_qu": (cube_qu, 2000, 409, (1, 0, 0)),
+    "cube_pd": (cube_pd, 2000, 410, (1, 0, 0)),
+    "ball_pd": (ball_pd, 2000, 411, (1, 0, 0)),
+    "thin_plate_pd": (thin_plate_pd, 2000, 412, (1, 0, 1)),
+    "two_spheres_pd": (two_spheres_pd, 3000, 413, (1, 0, 3)),
+    "two_hemispheres_pd": (two_hemispheres_pd, 3000, 414, (1, 0, 0)),
+    "sphere_with_segment_pd": (sphere_with_segment_pd, 2000, 415, (1, 0, 1)),
+    "fibonacci_sphere": (fibonacci_sphere, 2000, 416, (1, 0, 1)),
 }
 
 
