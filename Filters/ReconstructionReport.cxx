@@ -34,28 +34,6 @@ vtkDataArray* Column(vtkTable* table, const char* name, const char* what)
 
 } // namespace
 
-bool BettiNumbersAt(vtkTable* topology, double t, std::array<long long, 3>& betti)
-{
-  const vtkIdType rows = topology ? topology->GetNumberOfRows() : 0;
-  if (rows == 0)
-  {
-    return false;
-  }
-  vtkDataArray* threshold = Column(topology, names::Threshold, "topology profile");
-  vtkDataArray* b[3] = { Column(topology, "b0", "topology profile"),
-    Column(topology, "b1", "topology profile"), Column(topology, "b2", "topology profile") };
-  vtkIdType row = 0;
-  while (row + 1 < rows && threshold->GetComponent(row + 1, 0) < t)
-  {
-    ++row;
-  }
-  for (int k = 0; k < 3; ++k)
-  {
-    betti[k] = static_cast<long long>(b[k]->GetComponent(row, 0));
-  }
-  return true;
-}
-
 std::vector<TopologyStep> TopologyRows(vtkTable* topology)
 {
   std::vector<TopologyStep> rows;
@@ -78,6 +56,25 @@ std::vector<TopologyStep> TopologyRows(vtkTable* topology)
     rows.push_back(step);
   }
   return rows;
+}
+
+bool BettiNumbersAt(vtkTable* topology, double t, std::array<long long, 3>& betti)
+{
+  const std::vector<TopologyStep> rows = TopologyRows(topology);
+  if (rows.empty())
+  {
+    return false;
+  }
+  std::size_t row = 0;
+  while (row + 1 < rows.size() && rows[row + 1].Threshold < t)
+  {
+    ++row;
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    betti[k] = static_cast<long long>(rows[row].Betti[k]);
+  }
+  return true;
 }
 
 namespace

@@ -204,19 +204,22 @@ std::vector<Bar> HasseBarcode(
   ElderUnionFind inside(order.size());
   std::vector<std::size_t> barOfVertex(order.size(), 0);
   std::vector<std::size_t> loops; // open 1-bars, latest last
+  auto open = [&](int dimension, Int v) {
+    Bar bar;
+    bar.Dimension = dimension;
+    bar.Birth = tau(v);
+    bar.BirthCell = v;
+    bar.Death = HUGE_VAL;
+    bars.push_back(bar);
+    return bars.size() - 1;
+  };
   for (std::size_t p = 0; p < order.size(); ++p)
   {
     const Int v = order[p];
     const int index = nodes[v].Index;
     if (index == 0)
     {
-      barOfVertex[p] = bars.size();
-      Bar bar;
-      bar.Dimension = 0;
-      bar.Birth = tau(v);
-      bar.BirthCell = v;
-      bar.Death = HUGE_VAL;
-      bars.push_back(bar);
+      barOfVertex[p] = open(0, v);
     }
     else if (index == 1)
     {
@@ -235,13 +238,7 @@ std::vector<Bar> HasseBarcode(
       }
       else
       {
-        loops.push_back(bars.size());
-        Bar bar;
-        bar.Dimension = 1;
-        bar.Birth = tau(v);
-        bar.BirthCell = v;
-        bar.Death = HUGE_VAL;
-        bars.push_back(bar);
+        loops.push_back(open(1, v));
       }
     }
     else if (index == 2 && !separates[p])
