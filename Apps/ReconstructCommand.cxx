@@ -144,6 +144,12 @@ Reconstruction FromComplex(const Arguments& args, vtkMultiBlockDataSet* complex,
   r.Tps = tps;
   r.Tr = tr;
   vtkFlowReconstruction* reconstruction = runs[pick];
+  if (settings.AutomaticReconstruction && r.Choice.Short() && r.Choice.Window.To > tr)
+  {
+    // A short stable window: its end is where the topology changes next.
+    reconstruction->SetUnderSamplingWindow(
+      std::max(settings.UnderSamplingWindow, r.Choice.Window.To / tr * (1 + 1e-9)));
+  }
   const double output = settings.AutomaticReconstruction ? std::max(settings.OutputThreshold, tr)
                                                          : settings.OutputThreshold;
   if (output != tr)
