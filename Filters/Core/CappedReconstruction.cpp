@@ -53,6 +53,15 @@ CappedReconstruction Continue(CappedBuild& b, double tp, bool last, const Progre
 {
   CappedReconstruction r;
   const double cap = b.Cap;
+  if (!last)
+  {
+    const double arcs = static_cast<double>(b.Complex.Arcs.size() + b.Cones.size() + b.RawPatchArcs.size());
+    RequireMemory(static_cast<double>(sizeof(Node)) * static_cast<double>(b.Complex.Nodes.size()) +
+        static_cast<double>(sizeof(Arc)) * arcs,
+      "a copy of the flow complex of a " + std::to_string(b.Complex.CountByIndex()[0]) +
+        "-point cloud for a second t_p",
+      "give t_p a value (one run), or use fewer points");
+  }
   r.Complex = last ? std::move(b.Complex) : b.Complex;
   r.Cones = last ? std::move(b.Cones) : b.Cones;
   r.RawPatchArcs = last ? std::move(b.RawPatchArcs) : b.RawPatchArcs;
@@ -235,7 +244,7 @@ std::vector<Arc> RawArcsForTopology(CappedReconstruction& r, const std::vector<A
         static_cast<double>(r.RawPatchArcs.size() + 2 * fc.CountByIndex()[1] + r.Cones.size()) +
       40.0 * static_cast<double>(fc.Nodes.size()),
     "the Betti numbers of a " + std::to_string(fc.CountByIndex()[0]) + "-point cloud's reconstructions",
-    "use --no-betti with numbers for --tr and --tp, or fewer points");
+    "turn the topology off with given thresholds, or use fewer points");
   std::vector<Arc> raw;
   raw.swap(r.RawPatchArcs);
   // The 0-1 arcs of every edge, cancelled ones too (the simplified diagram
