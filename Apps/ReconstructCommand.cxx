@@ -187,7 +187,7 @@ Reconstruction FromComplex(const Arguments& args, vtkMultiBlockDataSet* complex,
 
 // The automatic range of t_r: the cap of the reconstruction, and where the
 // topology profile is searched for its most stable Betti numbers.
-constexpr double AutomaticCap = 6;
+constexpr double AutomaticCap = 5;
 
 int RunReconstruct(const Arguments& args)
 {

@@ -3,11 +3,11 @@
 profiles (Data/topology_study.py OUTDIR: the oracle runs' OUTDIR/runs/ID.oracle.tpP.csv,
 threshold,b0,b1,b2 up to t_r 8) against each cloud's truth.
 
-  /usr/bin/python3 Data/threshold_rules.py OUTDIR [--show RULE]
+  /usr/bin/python3 Data/threshold_rules.py OUTDIR [--show RULE] [--cap C]
 
-Every rule sees the profiles of t_p 1.1 and 0 cut at 6 (what `flowrecon
+Every rule sees the profiles of t_p 1.1 and 0 cut at the cap C (5: what `flowrecon
 reconstruct` computes at its defaults), cuts them into windows of constant Betti
-numbers within (1.5, 6], and calls a window stable when To/From >= Q:
+numbers within (1.5, C], and calls a window stable when To/From >= Q:
   fixed      t_p 1.1, t_r 2 (the old defaults), flagged by a change in [2, 2.2)
   longest    the longest window
   earliest   the stable window that starts first (the finest stable shape)
@@ -17,7 +17,7 @@ and, without a stable window, the longest. A wrong answer counts as flagged when
 flowrecon would warn (AutomaticThresholds.h, ChoiceWarnings): no stable window, a
 window under 30 %, several changes where it starts, a longer window with other
 Betti numbers, or the other t_p's answer differs. "achievable": some window of
-t_p 1.1 or 0 below 6 has the truth.
+t_p 1.1 or 0 below C has the truth.
 """
 import argparse
 import csv
@@ -30,7 +30,8 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import generate_clouds as gc  # noqa: E402
 
-LOWEST, CAP, TPS = 1.5, 6.0, ("1.1", "0")
+LOWEST, TPS = 1.5, ("1.1", "0")
+CAP = 5.0  # set by --cap
 
 
 def load(runs, cloud, tp):
@@ -118,7 +119,10 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
     ap.add_argument("outdir")
     ap.add_argument("--show", help="list the wrong answers of this rule")
+    ap.add_argument("--cap", type=float, default=5.0, help="the end of the profiles (5)")
     args = ap.parse_args()
+    global CAP
+    CAP = args.cap
     runs = os.path.join(args.outdir, "runs")
     clouds = sorted(set(os.path.basename(p).split(".oracle")[0]
                         for p in glob.glob(os.path.join(runs, "*.oracle.tp0.csv"))))
