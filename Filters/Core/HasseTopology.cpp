@@ -2,6 +2,8 @@
 
 #include "PersistenceUnionFind.h"
 
+#include <tbb/parallel_sort.h>
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -91,19 +93,32 @@ std::vector<Bar> HasseBarcode(
   {
     NotClosed("the presence times and the diagram have different nodes");
   }
-  // The filtration: by presence, faces before cofaces, then by node id.
-  std::vector<Int> order;
+  // The filtration: by presence, faces before cofaces, then by node id (keys
+  // side by side: the sort is most of this function's time at 10^6 points).
+  struct Key
+  {
+    double Presence;
+    Int Index, Node;
+    bool operator<(const Key& o) const
+    {
+      return std::tie(this->Presence, this->Index, this->Node) < std::tie(o.Presence, o.Index, o.Node);
+    }
+  };
+  std::vector<Key> keys;
   for (std::size_t v = 0; v < n; ++v)
   {
     if (presence[v] < HUGE_VAL)
     {
-      order.push_back(static_cast<Int>(v));
+      keys.push_back(Key{ presence[v], nodes[v].Index, static_cast<Int>(v) });
     }
   }
-  std::sort(order.begin(), order.end(), [&](Int a, Int b) {
-    return std::make_tuple(presence[a], nodes[a].Index, a) <
-      std::make_tuple(presence[b], nodes[b].Index, b);
-  });
+  tbb::parallel_sort(keys.begin(), keys.end());
+  std::vector<Int> order(keys.size());
+  for (std::size_t p = 0; p < keys.size(); ++p)
+  {
+    order[p] = keys[p].Node;
+  }
+  std::vector<Key>().swap(keys);
   std::vector<Int> pos(n, -1);
   for (std::size_t p = 0; p < order.size(); ++p)
   {
