@@ -2,14 +2,21 @@
 # against independent oracles (labels cli and python; included from
 # Testing/CLI/CMakeLists.txt; need python3-gudhi). They import flowcomplex_io.py from
 # Testing/Filters/Python.
+
+# flowrecon_add_cli_python_test(NAME SCRIPT WORKDIR): SCRIPT (of this folder) run
+# as SCRIPT FLOWRECON BUILD/WORKDIR, label python, 300 s.
+function (flowrecon_add_cli_python_test name script workdir)
+  if (TARGET flowrecon)
+    add_test(NAME ${name}
+      COMMAND "${FLOWRECON_TEST_PYTHON}" "${CMAKE_CURRENT_SOURCE_DIR}/${script}"
+              "$<TARGET_FILE:flowrecon>" "${CMAKE_CURRENT_BINARY_DIR}/${workdir}")
+    set_tests_properties(${name} PROPERTIES LABELS "python" TIMEOUT 300)
+  endif ()
+endfunction ()
+
 # `flowrecon diagram` against GUDHI's alpha-complex persistence, and the flow complex
 # on any number of threads.
-if (TARGET flowrecon)
-  add_test(NAME py.diagram_gudhi
-    COMMAND "${FLOWRECON_TEST_PYTHON}" "${CMAKE_CURRENT_LIST_DIR}/test_diagram_gudhi.py"
-            "$<TARGET_FILE:flowrecon>" "${CMAKE_CURRENT_BINARY_DIR}/diagram_gudhi")
-  set_tests_properties(py.diagram_gudhi PROPERTIES LABELS "python" TIMEOUT 300)
-endif ()
+flowrecon_add_cli_python_test(py.diagram_gudhi test_diagram_gudhi.py diagram_gudhi)
 
 # The flow complex is the same on 1, 2 and all threads (the core is parallel).
 if (TARGET flowrecon)
@@ -22,31 +29,16 @@ endif ()
 
 # The output-sensitive reconstruction equals the eager one below every t_r
 # (DESIGN.md, "Cost follows the output").
-if (TARGET flowrecon)
-  add_test(NAME py.reconstruction.lazy_equals_eager
-    COMMAND "${FLOWRECON_TEST_PYTHON}" "${CMAKE_CURRENT_SOURCE_DIR}/test_lazy_equals_eager.py"
-            "$<TARGET_FILE:flowrecon>" "${CMAKE_CURRENT_BINARY_DIR}/lazy_equals_eager")
-  set_tests_properties(py.reconstruction.lazy_equals_eager PROPERTIES LABELS "python" TIMEOUT 300)
-endif ()
+flowrecon_add_cli_python_test(py.reconstruction.lazy_equals_eager test_lazy_equals_eager.py lazy_equals_eager)
 
 # Betti numbers of reconstructions (issue #9): the printed line, the field data
 # and the topology profile equal GUDHI's persistence over the written cells
 # filtered by Threshold, from a cloud and from a saved flow complex.
-if (TARGET flowrecon)
-  add_test(NAME py.reconstruction.topology_profile
-    COMMAND "${FLOWRECON_TEST_PYTHON}" "${CMAKE_CURRENT_SOURCE_DIR}/test_topology_profile.py"
-            "$<TARGET_FILE:flowrecon>" "${CMAKE_CURRENT_BINARY_DIR}/topology_profile")
-  set_tests_properties(py.reconstruction.topology_profile PROPERTIES LABELS "python" TIMEOUT 300)
-endif ()
+flowrecon_add_cli_python_test(py.reconstruction.topology_profile test_topology_profile.py topology_profile)
 
 # Under-sampling warnings (issue #9): none on clean quasi-uniform samples, and
 # inside the thinned region of thinned ones.
-if (TARGET flowrecon)
-  add_test(NAME py.reconstruction.undersampling
-    COMMAND "${FLOWRECON_TEST_PYTHON}" "${CMAKE_CURRENT_SOURCE_DIR}/test_undersampling.py"
-            "$<TARGET_FILE:flowrecon>" "${CMAKE_CURRENT_BINARY_DIR}/undersampling")
-  set_tests_properties(py.reconstruction.undersampling PROPERTIES LABELS "python" TIMEOUT 300)
-endif ()
+flowrecon_add_cli_python_test(py.reconstruction.undersampling test_undersampling.py undersampling)
 
 # The reconstruction does not depend on the order of the input lines (cube,
 # sphere, torus, exact grid, duplicates; t_p 1.1 and 0), and 10^6 lines holding
@@ -86,9 +78,4 @@ endif ()
 
 # The automatic t_r and t_p give the true Betti numbers on the study's
 # generators (surfaces, lattices, a solid, a non-manifold union, a curve).
-if (TARGET flowrecon)
-  add_test(NAME py.reconstruction.automatic_thresholds
-    COMMAND "${FLOWRECON_TEST_PYTHON}" "${CMAKE_CURRENT_SOURCE_DIR}/test_automatic_thresholds.py"
-            "$<TARGET_FILE:flowrecon>" "${CMAKE_CURRENT_BINARY_DIR}/automatic_thresholds")
-  set_tests_properties(py.reconstruction.automatic_thresholds PROPERTIES LABELS "python" TIMEOUT 300)
-endif ()
+flowrecon_add_cli_python_test(py.reconstruction.automatic_thresholds test_automatic_thresholds.py automatic_thresholds)
