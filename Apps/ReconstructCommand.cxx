@@ -107,11 +107,13 @@ Reconstruction FromComplex(const Arguments& args, vtkMultiBlockDataSet* complex,
       vtkNew<vtkFlowComplexSimplification> simplification;
       simplification->SetInputData(complex);
       simplification->SetPersistenceThreshold(tp);
+      simplification->SetAutomaticPersistenceThreshold(false); // chosen below, as on a cloud
       RunFilter(simplification, input, options, "simplification");
       s = vtkMultiBlockDataSet::SafeDownCast(simplification->GetOutputDataObject(0));
     }
     auto reconstruction = vtkSmartPointer<vtkFlowReconstruction>::New();
     reconstruction->SetInputData(s);
+    reconstruction->SetAutomaticReconstructionThreshold(false); // chosen below
     reconstruction->SetMaximumThreshold(automatic ? settings.Cap : settings.DrawThreshold);
     reconstruction->SetUnderSamplingWindow(settings.UnderSamplingWindow);
     reconstruction->SetComputeTopology(settings.Topology);

@@ -2,7 +2,8 @@
 """Write the example ParaView states of Data/: demo.pvsm (the paper's two hemispheres),
 torus.pvsm and bunny.pvsm. Each reads its cloud with the plugin's own reader
 (FlowRecon Point Cloud Reader) and runs Flow Complex -> Flow Complex Simplification
-(t_p 1.1) -> Flow Reconstruction at two values of t_r.
+(automatic t_p) -> Flow Reconstruction twice: at the automatic t_r (shown) and at a
+given t_r (hidden, for comparison).
 
     pvpython Data/make_states.py build/lib/paraview-5.11/plugins/FlowRecon/FlowRecon.so [NAME...]
 
@@ -31,19 +32,27 @@ from paraview import simple
 DATA_DIR = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(DATA_DIR)
 
-# name: cloud, (t_r shown, t_r hidden for comparison), up axis, view direction
+# name: cloud, (t_r shown: None = automatic, t_r hidden for comparison), up axis,
+# view direction
 STATES = {
-    "demo": dict(cloud="two_hemispheres.xyz", tr=(2.0, 2.5), up=(0.0, 0.0, 1.0),
+    "demo": dict(cloud="two_hemispheres.xyz", tr=(None, 2.5), up=(0.0, 0.0, 1.0),
                  view=None, spreadsheet="profile"),
-    "torus": dict(cloud="torus.xyz", tr=(2.3, 2.0), up=(0.0, 0.0, 1.0),
+    "torus": dict(cloud="torus.xyz", tr=(None, 1.8), up=(0.0, 0.0, 1.0),
                   view=(0.45, -1.0, 1.1), spreadsheet="betti"),
-    "bunny": dict(cloud="bunny.xyz", tr=(2.0, 1.5), up=(0.0, 1.0, 0.0),
+    "bunny": dict(cloud="bunny.xyz", tr=(None, 1.5), up=(0.0, 1.0, 0.0),
                   view=(0.35, 0.55, 1.0), spreadsheet=None),
 }
 
 
 def label(t_r):
-    return "Reconstruction t_r %g" % t_r
+    return "Reconstruction (automatic t_r)" if t_r is None else "Reconstruction t_r %g" % t_r
+
+
+def reconstruction(make_filter, simp, t_r):
+    if t_r is None:
+        return make_filter(registrationName=label(t_r), Input=simp)
+    return make_filter(registrationName=label(t_r), Input=simp, AutomaticReconstructionThreshold=0,
+                       ReconstructionThreshold=t_r)
 
 
 def make(name, spec, plugin):
@@ -58,10 +67,8 @@ def make(name, spec, plugin):
     fc = ns["FlowComplex"](registrationName="FlowComplex", Input=reader)
     simp = ns["FlowComplexSimplification"](registrationName="Simplification", Input=fc)
     shown_tr, hidden_tr = spec["tr"]
-    recon = ns["FlowReconstruction"](registrationName=label(shown_tr), Input=simp,
-                                     ReconstructionThreshold=shown_tr)
-    other = ns["FlowReconstruction"](registrationName=label(hidden_tr), Input=simp,
-                                     ReconstructionThreshold=hidden_tr)
+    recon = reconstruction(ns["FlowReconstruction"], simp, shown_tr)
+    other = reconstruction(ns["FlowReconstruction"], simp, hidden_tr)
     recon.UpdatePipeline()
     other.UpdatePipeline()
     if recon.GetDataInformation().GetNumberOfCells() == 0:

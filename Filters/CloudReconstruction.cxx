@@ -233,8 +233,7 @@ CloudReconstructionReport ReconstructCloud(const std::vector<Point3>& samples,
     UnderSamplingToVTK(TopologyChangesAbove(chosen.Bars, tr, warn), {}, fc, outputs.UnderSampling);
   }
   ThresholdsToVTK(report.PersistenceThreshold, tr, settings.AutomaticPersistence,
-    settings.AutomaticReconstruction, report.Automatic ? &report.Choice.Window : nullptr, outputs.Grid,
-    outputs.Topology);
+    settings.AutomaticReconstruction, report.Automatic ? &report.Choice.Window : nullptr, outputs.Grid);
   report.Nodes = std::move(fc.Nodes);
   phaseDone("VTK output");
   return report;

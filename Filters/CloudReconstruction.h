@@ -43,8 +43,8 @@ struct CloudReconstructionSettings
   std::string Advice = "lower the threshold"; ///< for a run that would not fit in memory
 };
 
-/// vtkFlowReconstruction's ports 0, 1, 3 and 4, all required. The grid's and
-/// the topology table's field data also state the thresholds (ThresholdsToVTK).
+/// vtkFlowReconstruction's ports 0, 1, 3 and 4, all required. The grid's
+/// field data also states the thresholds (ThresholdsToVTK).
 struct CloudReconstructionOutputs
 {
   vtkUnstructuredGrid* Grid = nullptr;

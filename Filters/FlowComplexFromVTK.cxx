@@ -385,4 +385,20 @@ bool FromMultiBlock(
   return true;
 }
 
+bool ReadSamples(vtkMultiBlockDataSet* input, FlowComplex& fc, std::string& error)
+{
+  auto* sm = vtkUnstructuredGrid::SafeDownCast(NamedBlock(input, flowrecon::names::StableManifolds));
+  if (!sm || fc.NumberOfInputPoints > sm->GetNumberOfPoints())
+  {
+    error = "not a flow complex: the block StableManifolds lacks the samples";
+    return false;
+  }
+  fc.Points.resize(static_cast<std::size_t>(fc.NumberOfInputPoints));
+  for (Id i = 0; i < fc.NumberOfInputPoints; ++i)
+  {
+    sm->GetPoint(i, fc.Points[i].data());
+  }
+  return true;
+}
+
 } // namespace flowrecon

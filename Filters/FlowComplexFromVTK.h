@@ -28,6 +28,11 @@ namespace flowrecon
 bool FromMultiBlock(vtkMultiBlockDataSet* input, FlowComplex& fc, std::string& error,
   bool diagramOnly = false);
 
+/// The samples (the first fc.NumberOfInputPoints points of StableManifolds)
+/// into fc.Points, after a diagramOnly read: what recomputing the samples'
+/// triangulation needs (Retriangulation::OfStoredComplex).
+bool ReadSamples(vtkMultiBlockDataSet* input, FlowComplex& fc, std::string& error);
+
 } // namespace flowrecon
 
 #endif

@@ -68,13 +68,18 @@ constexpr const char* IsFinite = "IsFinite";
 
 // Topology (issue #9).
 constexpr const char* BettiNumbers = "BettiNumbers";
-// The thresholds a reconstruction used (field data of port 0 and of the
-// topology profile): each a one-value array, the window two values (From, To]
+// The thresholds a reconstruction used (field data of port 0): each a one-value array, the window two values (From, To]
 // and the flags (t_r chosen, t_p chosen) 1 when chosen from the data.
 constexpr const char* UsedReconstructionThreshold = "ReconstructionThreshold";
 constexpr const char* UsedPersistenceThreshold = "PersistenceThreshold";
 constexpr const char* StableWindow = "StableWindow";
 constexpr const char* ThresholdsChosen = "ThresholdsChosen";
+// What an automatic choice warns about, one line per value (a string array in
+// the field data of Flow Complex Simplification's output and of the
+// reconstruction's port 0).
+constexpr const char* ThresholdWarnings = "ThresholdWarnings";
+// The t_p candidates an automatic t_p chose among, in order of preference.
+constexpr const char* PersistenceCandidates = "PersistenceCandidates";
 constexpr const char* Dimension = "Dimension";
 constexpr const char* Change = "Change";
 constexpr const char* Spacing = "Spacing";

@@ -122,36 +122,41 @@ std::string DescribeChoice(const ThresholdChoice& choice, const std::vector<doub
     Window(choice.Window);
 }
 
-std::vector<std::string> ChoiceWarnings(const ThresholdChoice& choice,
-  const std::vector<double>& tps, bool trChosen, bool tpChosen)
+std::vector<std::string> ReconstructionChoiceWarnings(const ThresholdChoice& choice)
 {
   std::vector<std::string> lines;
-  if (trChosen && choice.Unstable())
+  if (choice.Unstable())
   {
     lines.push_back("no stable topology: the Betti numbers hold over no range of t_r of " +
       Number(100 * (choice.Rule.Stable - 1), 0) + " % or more" +
       (choice.Window.Length() > 0 ? " (the longest: " + Window(choice.Window) + ")" : "") +
       "; the sampling may be too sparse or too noisy for this shape");
   }
-  else if (trChosen && choice.Short())
+  else if (choice.Short())
   {
     lines.push_back("the topology holds only for t_r in " + Window(choice.Window) +
       ": an under-sampled region is near (see below)");
   }
-  if (trChosen && choice.ChangesAtStart > 1)
+  if (choice.ChangesAtStart > 1)
   {
     lines.push_back("at t_r " + Number(choice.Window.From, 2) + ", where these Betti numbers start, " +
       std::to_string(choice.ChangesAtStart) +
       " classes change at once: a cavity may have been filled together with its walls "
       "(a surface sampled with holes)");
   }
-  if (trChosen && choice.Longest.Length() > choice.Window.Length() &&
-    choice.Longest.Betti != choice.Window.Betti)
+  if (choice.Longest.Length() > choice.Window.Length() && choice.Longest.Betti != choice.Window.Betti)
   {
     lines.push_back("the Betti numbers " + Betti(choice.Longest) + " hold longer, for t_r in " +
       Window(choice.Longest) + ": a coarser shape (filled or joined) may be meant");
   }
-  for (std::size_t k = 0; tpChosen && k < choice.Best.size(); ++k)
+  return lines;
+}
+
+std::vector<std::string> PersistenceChoiceWarnings(
+  const ThresholdChoice& choice, const std::vector<double>& tps, bool trChosen)
+{
+  std::vector<std::string> lines;
+  for (std::size_t k = 0; k < choice.Best.size(); ++k)
   {
     const StableWindow& w = choice.Best[k];
     if (k != choice.Candidate && w.Length() > 0 && w.Betti != choice.Window.Betti)
@@ -159,6 +164,24 @@ std::vector<std::string> ChoiceWarnings(const ThresholdChoice& choice,
       lines.push_back("with t_p " + Short(tps.at(k)) + " the " +
         (trChosen ? "most stable " : "") + "Betti numbers are " + Betti(w) + " (t_r in " +
         Window(w) + "): the simplification changes the answer");
+    }
+  }
+  return lines;
+}
+
+std::vector<std::string> ChoiceWarnings(const ThresholdChoice& choice,
+  const std::vector<double>& tps, bool trChosen, bool tpChosen)
+{
+  std::vector<std::string> lines;
+  if (trChosen)
+  {
+    lines = ReconstructionChoiceWarnings(choice);
+  }
+  if (tpChosen)
+  {
+    for (std::string& line : PersistenceChoiceWarnings(choice, tps, trChosen))
+    {
+      lines.push_back(std::move(line));
     }
   }
   return lines;

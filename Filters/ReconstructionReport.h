@@ -42,6 +42,10 @@ std::string DescribeChoice(const ThresholdChoice& choice, const std::vector<doub
 /// stable (or, t_r given, whose) Betti numbers differ.
 std::vector<std::string> ChoiceWarnings(const ThresholdChoice& choice,
   const std::vector<double>& tps, bool trChosen, bool tpChosen);
+/// ChoiceWarnings' two parts: those of a chosen t_r, and those of a chosen t_p.
+std::vector<std::string> ReconstructionChoiceWarnings(const ThresholdChoice& choice);
+std::vector<std::string> PersistenceChoiceWarnings(
+  const ThresholdChoice& choice, const std::vector<double>& tps, bool trChosen);
 
 /// The number of steps of `profile` (ReconstructionToVTK's table) with
 /// Threshold < t: the steps of the reconstruction at t_r = t.

@@ -168,28 +168,26 @@ void TopologyToVTK(const std::vector<Bar>& bars, double t, double limit,
 }
 
 void ThresholdsToVTK(double tp, double tr, bool tpChosen, bool trChosen,
-  const StableWindow* window, vtkUnstructuredGrid* grid, vtkTable* table)
+  const StableWindow* window, vtkUnstructuredGrid* grid)
 {
-  for (vtkFieldData* field : { grid->GetFieldData(), table->GetFieldData() })
+  vtkFieldData* field = grid->GetFieldData();
+  auto one = [field](const char* name, double value) {
+    auto a = NamedArray<vtkDoubleArray>(name);
+    a->InsertNextValue(value);
+    field->AddArray(a);
+  };
+  one(flowrecon::names::UsedPersistenceThreshold, tp);
+  one(flowrecon::names::UsedReconstructionThreshold, tr);
+  auto chosen = NamedArray<vtkIntArray>(flowrecon::names::ThresholdsChosen);
+  chosen->InsertNextValue(trChosen ? 1 : 0);
+  chosen->InsertNextValue(tpChosen ? 1 : 0);
+  field->AddArray(chosen);
+  if (window)
   {
-    auto one = [field](const char* name, double value) {
-      auto a = NamedArray<vtkDoubleArray>(name);
-      a->InsertNextValue(value);
-      field->AddArray(a);
-    };
-    one(flowrecon::names::UsedPersistenceThreshold, tp);
-    one(flowrecon::names::UsedReconstructionThreshold, tr);
-    auto chosen = NamedArray<vtkIntArray>(flowrecon::names::ThresholdsChosen);
-    chosen->InsertNextValue(trChosen ? 1 : 0);
-    chosen->InsertNextValue(tpChosen ? 1 : 0);
-    field->AddArray(chosen);
-    if (window)
-    {
-      auto w = NamedArray<vtkDoubleArray>(flowrecon::names::StableWindow);
-      w->InsertNextValue(window->From);
-      w->InsertNextValue(window->To);
-      field->AddArray(w);
-    }
+    auto w = NamedArray<vtkDoubleArray>(flowrecon::names::StableWindow);
+    w->InsertNextValue(window->From);
+    w->InsertNextValue(window->To);
+    field->AddArray(w);
   }
 }
 

@@ -43,12 +43,13 @@ void UnderSamplingToVTK(const std::vector<TopologyChange>& changes,
 void TopologyToVTK(const std::vector<Bar>& bars, double t, double limit,
   vtkUnstructuredGrid* grid, vtkTable* table);
 
-/// The thresholds used, in the field data of `grid` and of `table`:
+/// The thresholds used, in the field data of `grid` (beside BettiNumbers; not
+/// in the topology table's, whose field-data arrays are a chart's series):
 /// PersistenceThreshold, ReconstructionThreshold, ThresholdsChosen (t_r, t_p:
 /// 1 when chosen from the data) and, with `window`, StableWindow (From, To]:
 /// where the reported Betti numbers hold.
 void ThresholdsToVTK(double tp, double tr, bool tpChosen, bool trChosen,
-  const StableWindow* window, vtkUnstructuredGrid* grid, vtkTable* table);
+  const StableWindow* window, vtkUnstructuredGrid* grid);
 
 } // namespace flowrecon
 

@@ -123,7 +123,7 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   bool ComputeStableManifolds = true;
-  double DeferPatchesAbove = 4;
+  double DeferPatchesAbove = 5;
   vtkIdType MaximumStableManifoldCells = 2000000;
   bool ComputeUnstableManifolds = true;
   int PerturbationSeed = 1;

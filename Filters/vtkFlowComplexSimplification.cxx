@@ -1,15 +1,103 @@
 #include "vtkFlowComplexSimplification.h"
 
 #include "CoreCall.h"
+#include "AutomaticThresholds.h"
 #include "FlowComplexConversion.h"
+#include "FlowReconNames.h"
+#include "ReconstructionReport.h"
+#include "Retriangulation.h"
 #include "Simplification.h"
+#include "StoredComplexTopology.h"
 
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkIntArray.h"
 #include "vtkMultiBlockDataSet.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkStringArray.h"
 
+#include <memory>
+#include <sstream>
 #include <string>
+
+namespace
+{
+
+/// The automatic t_p: the candidate whose reconstructions up to `cap` have
+/// the most stable topology, and what the choice warns about.
+struct PersistenceChoice
+{
+  std::vector<double> Candidates{ { 1.1, 0 } };
+  double Chosen = 1.1;
+  std::vector<std::string> Warnings;
+};
+
+PersistenceChoice ChoosePersistenceThreshold(
+  const flowrecon::FlowComplex& fc, double cap, const flowrecon::Progress& progress)
+{
+  PersistenceChoice c;
+  // The deferred patches drawn below the cap are walked on the samples'
+  // triangulation, computed again (the input does not hold it).
+  std::unique_ptr<flowrecon::Retriangulation> re;
+  if (!fc.DeferredPatches.empty())
+  {
+    re = flowrecon::Retriangulation::OfStoredComplex(fc, progress.Range(0, 0.3),
+      "lower Defer Patches Above in Flow Complex, or the cloud's size");
+  }
+  std::vector<std::vector<flowrecon::TopologyStep>> profiles;
+  const double share = 0.7 / static_cast<double>(c.Candidates.size());
+  for (std::size_t k = 0; k < c.Candidates.size(); ++k)
+  {
+    const double from = 0.3 + share * static_cast<double>(k);
+    flowrecon::StoredTopology t = flowrecon::TopologyOfStoredComplex(
+      fc, c.Candidates[k], cap, re.get(), progress.Range(from, from + share));
+    if (!t.Error.empty())
+    {
+      std::ostringstream line;
+      line << "t_p " << c.Candidates[k] << ": no Betti numbers: " << t.Error;
+      c.Warnings.push_back(line.str());
+    }
+    profiles.push_back(std::move(t.Profile));
+  }
+  const flowrecon::ThresholdChoice choice = flowrecon::ChooseThresholds(profiles, cap);
+  c.Chosen = c.Candidates[choice.Candidate];
+  for (const std::string& line :
+    flowrecon::PersistenceChoiceWarnings(choice, c.Candidates, /*trChosen=*/true))
+  {
+    c.Warnings.push_back(line);
+  }
+  return c;
+}
+
+/// The choice in the output's field data, for Flow Reconstruction to carry on.
+void AddChoice(const PersistenceChoice& c, vtkMultiBlockDataSet* output)
+{
+  vtkFieldData* fd = output->GetFieldData();
+  vtkNew<vtkIntArray> chosen;
+  chosen->SetName(flowrecon::names::ThresholdsChosen);
+  chosen->InsertNextValue(0); // t_r: Flow Reconstruction's choice
+  chosen->InsertNextValue(1);
+  fd->AddArray(chosen);
+  vtkNew<vtkDoubleArray> candidates;
+  candidates->SetName(flowrecon::names::PersistenceCandidates);
+  for (const double tp : c.Candidates)
+  {
+    candidates->InsertNextValue(tp);
+  }
+  fd->AddArray(candidates);
+  vtkNew<vtkStringArray> warnings;
+  warnings->SetName(flowrecon::names::ThresholdWarnings);
+  for (const std::string& line : c.Warnings)
+  {
+    warnings->InsertNextValue(line);
+  }
+  fd->AddArray(warnings);
+}
+
+} // namespace
 
 vtkStandardNewMacro(vtkFlowComplexSimplification);
 
@@ -63,7 +151,20 @@ int vtkFlowComplexSimplification::RequestData(
   }
 
   const bool deferred = !fc.DeferredPatches.empty();
-  if (deferred && !(this->PersistenceThreshold < fc.DeferralRatio))
+  const bool automatic = this->AutomaticPersistenceThreshold;
+  if (automatic && deferred && !flowrecon::ReadSamples(input, fc, error))
+  {
+    vtkErrorMacro(<< error);
+    return 0;
+  }
+  if (automatic && deferred && !(this->MaximumThreshold <= fc.DeferralRatio))
+  {
+    vtkErrorMacro(<< "Maximum Threshold (T_max) " << this->MaximumThreshold
+                  << " is above the input's Defer Patches Above (" << fc.DeferralRatio
+                  << "): lower T_max, or raise Defer Patches Above in Flow Complex");
+    return 0;
+  }
+  if (!automatic && deferred && !(this->PersistenceThreshold < fc.DeferralRatio))
   {
     // Cancellations at t_p could then use the arcs the complex does not have.
     vtkErrorMacro(<< "Persistence Threshold (t_p) " << this->PersistenceThreshold
@@ -75,14 +176,26 @@ int vtkFlowComplexSimplification::RequestData(
   return flowrecon::CallCore(
     this, "simplification",
     [&]() {
+      PersistenceChoice choice;
+      choice.Chosen = this->PersistenceThreshold;
+      if (automatic)
+      {
+        this->SetProgressText("choosing t_p");
+        choice = ChoosePersistenceThreshold(fc, this->MaximumThreshold, progress.Range(0, 0.7));
+      }
+      const flowrecon::Progress rest = progress.Range(automatic ? 0.7 : 0, 1);
       // With deferred patches, what a replay on them needs is recorded too.
       const flowrecon::SimplificationResult s = flowrecon::Simplify(fc.Nodes,
-        std::vector<flowrecon::Arc>(fc.Arcs), this->PersistenceThreshold, progress.Range(0, 0.6),
-        deferred);
+        std::vector<flowrecon::Arc>(fc.Arcs), choice.Chosen, rest.Range(0, 0.6), deferred);
       fc.Arcs = s.Arcs; // the HasseDiagram block shows the simplified diagram
       flowrecon::ReplaceHasseDiagram(input, fc, output);
-      flowrecon::AddSimplification(fc, s, this->PersistenceThreshold, output);
+      flowrecon::AddSimplification(fc, s, choice.Chosen, output);
+      if (automatic)
+      {
+        AddChoice(choice, output);
+      }
       flowrecon::SetDefaultScalars(output);
+      this->SetProgressText(nullptr);
     },
     [&]() { output->Initialize(); });
 }
@@ -92,4 +205,6 @@ void vtkFlowComplexSimplification::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "PersistenceThreshold: " << this->PersistenceThreshold << "\n";
+  os << indent << "AutomaticPersistenceThreshold: " << (this->AutomaticPersistenceThreshold ? "on" : "off") << "\n";
+  os << indent << "MaximumThreshold: " << this->MaximumThreshold << "\n";
 }

@@ -29,6 +29,15 @@
  * Field data (output and CriticalPoints): the flow-complex report plus
  * `PersistenceThreshold` and `CancelledPairCount`.
  *
+ * With AutomaticPersistenceThreshold (the default), t_p is chosen from the
+ * data among PersistenceCandidates (1.1, then 0), as `flowrecon reconstruct`
+ * does on a cloud: each candidate's reconstructions are computed up to
+ * MaximumThreshold, their Betti numbers read off the Hasse diagram, and the
+ * candidate with the most stable topology is taken (AutomaticThresholds.h).
+ * The output's field data then also holds `ThresholdsChosen` (0, 1),
+ * `PersistenceCandidates` and `ThresholdWarnings` (one line when another
+ * candidate gives other Betti numbers), which Flow Reconstruction carries on.
+ *
  * An input that is already simplified is rejected: simplify the flow complex
  * itself with the larger threshold instead.
  */
@@ -49,10 +58,34 @@ public:
   /**
    * The persistence threshold t_p: pairs with ratio V(b)/V(a) <= t_p are
    * cancelled. Ratios are at least 1, so any value below 1 (0 in particular)
-   * cancels nothing. The paper finds t_p in [1.02, 1.2] useful. Default 1.1.
+   * cancels nothing. The paper finds t_p in [1.02, 1.2] useful. Used when
+   * AutomaticPersistenceThreshold is off. Default 1.1.
    */
   vtkSetClampMacro(PersistenceThreshold, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(PersistenceThreshold, double);
+  ///@}
+
+  ///@{
+  /**
+   * Choose t_p from the data (then PersistenceThreshold is not used): the
+   * candidate 1.1 or 0 (no simplification) whose reconstructions have the most
+   * stable topology for t_r up to MaximumThreshold, 1.1 on ties. Regular
+   * samples (lattices) lose patches to t_p 1.1; noisy ones need it. Costs two
+   * reconstruction queues without geometry. Default on.
+   */
+  vtkSetMacro(AutomaticPersistenceThreshold, bool);
+  vtkGetMacro(AutomaticPersistenceThreshold, bool);
+  vtkBooleanMacro(AutomaticPersistenceThreshold, bool);
+  ///@}
+
+  ///@{
+  /**
+   * The largest t_r the automatic choice looks at: keep it equal to Flow
+   * Reconstruction's MaximumThreshold, so that both see the same topology. At
+   * most the input's DeferPatchesAbove. Default 5.
+   */
+  vtkSetClampMacro(MaximumThreshold, double, 1.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(MaximumThreshold, double);
   ///@}
 
   /// Name of the block this filter adds.
@@ -66,6 +99,8 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   double PersistenceThreshold = 1.1;
+  bool AutomaticPersistenceThreshold = true;
+  double MaximumThreshold = 5;
 
 private:
   vtkFlowComplexSimplification(const vtkFlowComplexSimplification&) = delete;

@@ -1,11 +1,13 @@
 #include "vtkFlowReconstruction.h"
 
+#include "AutomaticThresholds.h"
 #include "CoreCall.h"
 #include "DeferredReconstruction.h"
 #include "FlowComplexConversion.h"
 #include "FlowReconNames.h"
 #include "MemoryGuard.h"
 #include "ReconstructionConversion.h"
+#include "ReconstructionReport.h"
 #include "TopologyConversion.h"
 #include "Retriangulation.h"
 #include "Reconstruction.h"
@@ -16,6 +18,7 @@
 #include "vtkCellData.h"
 #include "vtkCellType.h"
 #include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -26,6 +29,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkStringArray.h"
 #include "vtkTable.h"
 #include "vtkUnstructuredGrid.h"
 
@@ -36,6 +40,63 @@
 #include <utility>
 
 using flowrecon::Id;
+
+namespace
+{
+
+/// What the input says of t_p: its value (0 without simplification), whether
+/// it was chosen from the data, and the warnings of that choice.
+struct InputPersistence
+{
+  double Threshold = 0;
+  bool Chosen = false;
+  std::vector<std::string> Warnings;
+};
+
+InputPersistence PersistenceOf(vtkMultiBlockDataSet* input)
+{
+  InputPersistence p;
+  vtkFieldData* fd = input->GetFieldData();
+  if (vtkDataArray* tp = fd->GetArray(flowrecon::names::UsedPersistenceThreshold))
+  {
+    p.Threshold = tp->GetNumberOfTuples() > 0 ? tp->GetComponent(0, 0) : 0;
+  }
+  vtkDataArray* chosen = fd->GetArray(flowrecon::names::ThresholdsChosen);
+  p.Chosen = chosen && chosen->GetNumberOfTuples() > 1 && chosen->GetComponent(1, 0) != 0;
+  if (auto* w = vtkStringArray::SafeDownCast(fd->GetAbstractArray(flowrecon::names::ThresholdWarnings)))
+  {
+    for (vtkIdType k = 0; k < w->GetNumberOfValues(); ++k)
+    {
+      p.Warnings.push_back(w->GetValue(k));
+    }
+  }
+  return p;
+}
+
+/// The thresholds used and the choice's warnings, in the field data of the
+/// reconstruction.
+void AddThresholds(const InputPersistence& tp, double tr, const flowrecon::ThresholdChoice* choice,
+  vtkUnstructuredGrid* grid)
+{
+  flowrecon::ThresholdsToVTK(tp.Threshold, tr, tp.Chosen, choice != nullptr,
+    choice ? &choice->Window : nullptr, grid);
+  // In the command line's order: the choice of t_r's, then t_p's.
+  std::vector<std::string> lines;
+  if (choice)
+  {
+    lines = flowrecon::ReconstructionChoiceWarnings(*choice);
+  }
+  lines.insert(lines.end(), tp.Warnings.begin(), tp.Warnings.end());
+  vtkNew<vtkStringArray> warnings;
+  warnings->SetName(flowrecon::names::ThresholdWarnings);
+  for (const std::string& line : lines)
+  {
+    warnings->InsertNextValue(line);
+  }
+  grid->GetFieldData()->AddArray(warnings);
+}
+
+} // namespace
 
 /// The t_r = infinity run of one input and what the outputs need from it.
 struct vtkFlowReconstruction::Cache
@@ -238,6 +299,36 @@ int vtkFlowReconstruction::RequestData(
   const flowrecon::FlowComplex& fc = c.FC;
   double t =
     this->ReconstructionThreshold >= VTK_DOUBLE_MAX ? HUGE_VAL : this->ReconstructionThreshold;
+  // The automatic t_r: the most stable topology of the family below T_max.
+  flowrecon::ThresholdChoice choice;
+  bool chosen = false;
+  if (this->AutomaticReconstructionThreshold && !this->EveryStep)
+  {
+    if (!this->ComputeTopology)
+    {
+      vtkErrorMacro(<< "Automatic Reconstruction Threshold needs Compute Topology: turn "
+                       "Compute Topology on, or set t_r yourself");
+      grid->Initialize();
+      profile->Initialize();
+      arrows->Initialize();
+      topology->Initialize();
+      undersampling->Initialize();
+      return 0;
+    }
+    if (c.TopologyError.empty() && tmax > choice.Rule.Lowest)
+    {
+      choice = flowrecon::ChooseThresholds({ flowrecon::TopologyProfile(c.Bars, 1, tmax) }, tmax);
+      t = choice.ReconstructionThreshold;
+      chosen = true;
+    }
+    else
+    {
+      vtkWarningMacro(<< "no automatic t_r ("
+                      << (c.TopologyError.empty() ? "Maximum Threshold is at most 1.5"
+                                                  : "no Betti numbers")
+                      << "): showing the Reconstruction Threshold " << t);
+    }
+  }
   if (this->EveryStep)
   {
     t = tmax;
@@ -250,6 +341,7 @@ int vtkFlowReconstruction::RequestData(
                     << "; raise Maximum Threshold to see more");
     t = tmax;
   }
+  this->UsedReconstructionThreshold = t;
   this->SetProgressText("output");
   this->UpdateProgress(0.9);
 
@@ -268,10 +360,16 @@ int vtkFlowReconstruction::RequestData(
   else if (c.TopologyError.empty())
   {
     flowrecon::TopologyToVTK(c.Bars, t, tmax, grid, topology);
-    // Changes beyond T_max are not known: the window stops there.
-    const double window = std::min(this->UnderSamplingWindow, tmax / t);
+    // Changes beyond T_max are not known: the window stops there. A short
+    // stable window: its end is where the topology changes next.
+    double window = std::min(this->UnderSamplingWindow, tmax / t);
+    if (chosen && choice.Short() && choice.Window.To > t)
+    {
+      window = std::max(window, choice.Window.To / t * (1 + 1e-9));
+    }
     flowrecon::UnderSamplingToVTK(
       flowrecon::TopologyChangesAbove(c.Bars, t, std::max(1.0, window)), c.CellNodes, fc, undersampling);
+    AddThresholds(PersistenceOf(input), t, chosen ? &choice : nullptr, grid);
   }
   else
   {
@@ -393,6 +491,8 @@ void vtkFlowReconstruction::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "ReconstructionThreshold: " << this->ReconstructionThreshold << "\n";
+  os << indent << "AutomaticReconstructionThreshold: "
+     << (this->AutomaticReconstructionThreshold ? "on" : "off") << "\n";
   os << indent << "EveryStep: " << this->EveryStep << "\n";
   os << indent << "MaximumThreshold: " << this->MaximumThreshold << "\n";
   os << indent << "UnderSamplingWindow: " << this->UnderSamplingWindow << "\n";

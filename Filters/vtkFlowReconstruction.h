@@ -77,11 +77,31 @@ public:
   /**
    * The reconstruction threshold t_r > 1: the output holds the nodes inserted
    * before the first popped priority >= t_r. VTK_DOUBLE_MAX (or infinity) keeps
-   * every possible step. The paper finds t_r in [1.9, 2.1] useful. Default 2.
+   * every possible step. The paper finds t_r in [1.9, 2.1] useful. Used when
+   * AutomaticReconstructionThreshold is off. Default 2.
    */
   vtkSetClampMacro(ReconstructionThreshold, double, 1.0, VTK_DOUBLE_MAX);
   vtkGetMacro(ReconstructionThreshold, double);
   ///@}
+
+  ///@{
+  /**
+   * Choose t_r from the data (then ReconstructionThreshold is not used): among
+   * the windows of t_r in (1.5, MaximumThreshold] where the Betti numbers stay
+   * the same over at least 10 %, the one with the most voids (b2), the longest
+   * on ties; t_r is 10 % above its start, at most its middle
+   * (AutomaticThresholds.h, what `flowrecon reconstruct` does). Needs
+   * ComputeTopology. The choice is in the field data of port 0 (the
+   * topology profile's chart marks t_r): ReconstructionThreshold, PersistenceThreshold,
+   * ThresholdsChosen, StableWindow and ThresholdWarnings. Default on.
+   */
+  vtkSetMacro(AutomaticReconstructionThreshold, bool);
+  vtkGetMacro(AutomaticReconstructionThreshold, bool);
+  vtkBooleanMacro(AutomaticReconstructionThreshold, bool);
+  ///@}
+
+  /// The t_r of the last output: the chosen one, or ReconstructionThreshold.
+  vtkGetMacro(UsedReconstructionThreshold, double);
 
   ///@{
   /**
@@ -100,7 +120,8 @@ public:
    * changes), so any ReconstructionThreshold <= T_max is a selection; a larger
    * one shows the reconstruction at T_max, with a warning. Nothing above T_max
    * is drawn, which is what keeps large surface samples in memory.
-   * VTK_DOUBLE_MAX draws every step. Default 4.
+   * VTK_DOUBLE_MAX draws every step. Default 5, the range the automatic t_r
+   * is chosen in.
    */
   vtkSetClampMacro(MaximumThreshold, double, 1.0, VTK_DOUBLE_MAX);
   vtkGetMacro(MaximumThreshold, double);
@@ -175,7 +196,9 @@ protected:
 
   double ReconstructionThreshold = 2.0;
   bool EveryStep = false;
-  double MaximumThreshold = 4.0;
+  double MaximumThreshold = 5.0;
+  bool AutomaticReconstructionThreshold = true;
+  double UsedReconstructionThreshold = 2.0;
   double UnderSamplingWindow = 1.1;
   bool ComputeTopology = true;
   vtkIdType MaximumTopologyCells = 4000000;

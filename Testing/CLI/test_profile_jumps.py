@@ -68,9 +68,11 @@ def filters(points):
     simplification = vtkFlowComplexSimplification()
     simplification.SetInputConnection(fc.GetOutputPort())
     simplification.SetPersistenceThreshold(TP)
+    simplification.AutomaticPersistenceThresholdOff()
     reconstruction = vtkFlowReconstruction()
     reconstruction.SetInputConnection(simplification.GetOutputPort())
     reconstruction.SetReconstructionThreshold(TR)
+    reconstruction.AutomaticReconstructionThresholdOff()
     reconstruction.Update()
     return fc, reconstruction
 

@@ -166,6 +166,7 @@ void MakeTemplates()
   vtkNew<vtkFlowComplexSimplification> simplification;
   simplification->SetInputData(plain);
   simplification->SetPersistenceThreshold(1.5);
+  simplification->AutomaticPersistenceThresholdOff();
   simplification->Update();
   Templates.push_back(WriteTemplate(plain, "ascii", true));
   Templates.push_back(WriteTemplate(simplification->GetOutputDataObject(0), "simplified", true));
@@ -200,6 +201,7 @@ void MakeTemplates()
   vtkNew<vtkFlowComplexSimplification> deferredSimplified;
   deferredSimplified->SetInputData(withDeferred);
   deferredSimplified->SetPersistenceThreshold(1.5);
+  deferredSimplified->AutomaticPersistenceThresholdOff();
   deferredSimplified->Update();
   Templates.push_back(WriteTemplate(withDeferred, "deferred", true));
   Templates.push_back(
@@ -262,6 +264,7 @@ void ReadAsTheCliDoes(const std::string& vtm)
   {
     simplification->SetInputData(data);
     simplification->SetPersistenceThreshold(1.1);
+    simplification->AutomaticPersistenceThresholdOff();
     if (!simplification->GetExecutive()->Update())
     {
       return;
@@ -271,6 +274,7 @@ void ReadAsTheCliDoes(const std::string& vtm)
   vtkNew<vtkFlowReconstruction> reconstruction;
   reconstruction->SetInputData(input);
   reconstruction->SetReconstructionThreshold(2.0);
+  reconstruction->AutomaticReconstructionThresholdOff();
   reconstruction->SetMaximumThreshold(2.0);
   reconstruction->GetExecutive()->Update();
 }

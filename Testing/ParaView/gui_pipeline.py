@@ -52,8 +52,10 @@ def main():
     fc = ns["FlowComplex"](registrationName="FlowComplex", Input=points)
     simp = ns["FlowComplexSimplification"](registrationName="Simplification", Input=fc)
     recon = ns["FlowReconstruction"](registrationName="Reconstruction", Input=simp)
-    check(simp.PersistenceThreshold == 1.1, "default t_p %s" % simp.PersistenceThreshold)
-    check(recon.ReconstructionThreshold == 2.0, "default t_r %s" % recon.ReconstructionThreshold)
+    check(simp.AutomaticPersistenceThreshold == 1,
+          "default t_p not automatic: %s" % simp.AutomaticPersistenceThreshold)
+    check(recon.AutomaticReconstructionThreshold == 1,
+          "default t_r not automatic: %s" % recon.AutomaticReconstructionThreshold)
 
     points.UpdatePipeline()
     n = points.GetDataInformation().GetNumberOfPoints()
@@ -74,7 +76,7 @@ def main():
             (fc, "PointData", ("NodeId", "Index", "CriticalValue")),
             (fc, "CellData", ("Multiplicity", "Ratio")),
             (simp, "PointData", ("Cancelled",)),
-            (simp, "CellData", ("Owner", "Birth", "Death", "PairType"))):
+            (simp, "CellData", ("Owner",))):
         keys = getattr(proxy, where).keys()
         for a in arrays:
             check(a in keys, "%s %s has no %s (has %s)" % (proxy.GetXMLName(), where, a, keys))
@@ -92,7 +94,8 @@ def main():
               "CriticalValue"):
         check(a in keys, "reconstruction has no cell array %s (has %s)" % (a, keys))
     threshold = recon.CellData["Threshold"].GetRange()
-    check(threshold[1] < 2.0, "Threshold range %s at t_r 2" % (threshold,))
+    t_r = servermanager.Fetch(recon).GetFieldData().GetArray("ReconstructionThreshold").GetValue(0)
+    check(1.5 < t_r <= 5 and threshold[1] < t_r, "Threshold range %s at t_r %s" % (threshold, t_r))
     profile = servermanager.Fetch(recon, idx=1)
     columns = [profile.GetColumnName(i) for i in range(profile.GetNumberOfColumns())]
     for c in ("Step", "NodeId", "Index", "Priority", "Threshold"):

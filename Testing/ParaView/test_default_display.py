@@ -259,9 +259,12 @@ def reconstruction(work):
     reader = simple.OpenDataFile(xyz)
     reader.UpdatePipeline()
     cloud_bounds = reader.GetDataInformation().GetBounds()
+    # At t_r 2, where this cloud's thinned cap is under-sampled.
     recon = FlowReconstruction(  # noqa: F821
         Input=FlowComplexSimplification(  # noqa: F821
-            Input=FlowComplex(Input=reader, ComputeStableManifolds=0)))  # noqa: F821
+            Input=FlowComplex(Input=reader, ComputeStableManifolds=0),  # noqa: F821
+            AutomaticPersistenceThreshold=0),
+        AutomaticReconstructionThreshold=0)
     recon.UpdatePipeline()
     warnings = recon.GetDataInformation(4).GetNumberOfPoints()
     check(warnings > 0, "Flow Reconstruction: no under-sampling point to show on this cloud")

@@ -92,8 +92,10 @@ class Errors:
 def pipeline(reader, defer, cap):
     fc = FlowComplex(Input=reader, ComputeStableManifolds=0,  # noqa: F821
                      DeferPatchesAbove=defer)
-    simp = FlowComplexSimplification(Input=fc)  # noqa: F821
-    recon = FlowReconstruction(Input=simp, MaximumThreshold=cap)  # noqa: F821
+    # Given thresholds (t_p 1.1): the eager and the lazy run at each t_r.
+    simp = FlowComplexSimplification(Input=fc, AutomaticPersistenceThreshold=0)  # noqa: F821
+    recon = FlowReconstruction(Input=simp, MaximumThreshold=cap,  # noqa: F821
+                               AutomaticReconstructionThreshold=0)
     return fc, simp, recon
 
 

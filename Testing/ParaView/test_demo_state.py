@@ -2,7 +2,9 @@
 """Data/demo.pvsm loads from the repository root as it is ("Use File Names From State",
 what `paraview --state=Data/demo.pvsm` does: its data file is the relative path
 Data/two_hemispheres.xyz) with the plugin auto-loaded from PV_PLUGIN_PATH, and gives the
-demo pipeline, read with the plugin's own reader. Run from the repository root:
+demo pipeline, read with the plugin's own reader: the reconstruction at the automatic
+t_r (about 2.16 here) and, hidden, the one at t_r 2.5, of which it is the part below
+its t_r. Run from the repository root:
 pvpython Testing/ParaView/test_demo_state.py (test_states.py loads every state from
 elsewhere).
 """
@@ -14,7 +16,8 @@ from paraview import simple
 simple.LoadState("Data/demo.pvsm")
 names = sorted(key[0] for key in simple.GetSources())
 print("sources:", names)
-expected = ["FlowComplex", "Reconstruction t_r 2", "Reconstruction t_r 2.5",
+AUTO = "Reconstruction (automatic t_r)"
+expected = ["FlowComplex", AUTO, "Reconstruction t_r 2.5",
             "Simplification", "two_hemispheres.xyz"]
 if names != expected:
     sys.exit("FAIL: sources %s, expected %s" % (names, expected))
@@ -27,15 +30,21 @@ files = [files] if isinstance(files, str) else list(files)
 if files != ["Data/two_hemispheres.xyz"]:
     sys.exit("FAIL: reader file %s" % files)
 cells = {}
-for name in ("Reconstruction t_r 2", "Reconstruction t_r 2.5"):
+for name in (AUTO, "Reconstruction t_r 2.5"):
     source = simple.FindSource(name)
     source.UpdatePipeline()
     cells[name] = source.GetDataInformation().GetNumberOfCells()
 print("cells:", cells, "in", os.getcwd())
-if not 0 < cells["Reconstruction t_r 2"] < cells["Reconstruction t_r 2.5"]:
-    sys.exit("FAIL: reconstructions empty or not growing with t_r: %s" % cells)
-# Nested: the t_r = 2 cells are exactly the t_r = 2.5 cells with Threshold < 2.
 from paraview import servermanager
+
+chosen = servermanager.Fetch(simple.FindSource(AUTO)).GetFieldData().GetArray("ReconstructionThreshold")
+t_r = chosen.GetValue(0) if chosen else None
+print("automatic t_r:", t_r)
+if t_r is None or not 1.5 < t_r < 2.5:
+    sys.exit("FAIL: the automatic t_r is %s, not in the chosen range (1.5, 2.5)" % t_r)
+if not 0 < cells[AUTO] < cells["Reconstruction t_r 2.5"]:
+    sys.exit("FAIL: reconstructions empty or not growing with t_r: %s" % cells)
+# Nested: the automatic one's cells are exactly the t_r = 2.5 cells with Threshold < t_r.
 
 
 def cell_keys(name, below=None):
@@ -50,8 +59,8 @@ def cell_keys(name, below=None):
     return keys
 
 
-small, large = cell_keys("Reconstruction t_r 2"), cell_keys("Reconstruction t_r 2.5", below=2)
+small, large = cell_keys(AUTO), cell_keys("Reconstruction t_r 2.5", below=t_r)
 if small != large:
-    sys.exit("FAIL: the t_r 2 reconstruction is not the Threshold < 2 part of the t_r 2.5 one "
+    sys.exit("FAIL: the automatic reconstruction is not the Threshold < t_r part of the t_r 2.5 one "
              "(%d vs %d cells, %d in common)" % (len(small), len(large), len(small & large)))
 print("PASS")

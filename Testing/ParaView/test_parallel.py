@@ -19,7 +19,8 @@ from paraview import servermanager
 
 def serial(flowrecon, cloud, work):
     out = os.path.join(work, "serial.vtu")
-    subprocess.run([flowrecon, "reconstruct", cloud, "-o", out, "--tr", "2", "--tp", "1.1", "--quiet"], check=True)
+    # both at their defaults: t_p and t_r chosen from the data
+    subprocess.run([flowrecon, "reconstruct", cloud, "-o", out, "--quiet"], check=True)
     from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
     r = vtkXMLUnstructuredGridReader()
     r.SetFileName(out)

@@ -137,9 +137,12 @@ def main():
     xyz = os.path.join(WORK, "torus.xyz")
     np.savetxt(xyz, gen.torus(600, np.random.default_rng(4)), fmt="%.17g")
     reader = simple.OpenDataFile(xyz)
+    # Given thresholds (t_p 1.1, t_r set below), as the CLI's --tp 1.1 --tr T.
     simplified = FlowComplexSimplification(  # noqa: F821 (defined by LoadPlugin)
-        Input=FlowComplex(Input=reader, ComputeStableManifolds=0))  # noqa: F821
-    recon = FlowReconstruction(Input=simplified, MaximumThreshold=TMAX)  # noqa: F821
+        Input=FlowComplex(Input=reader, ComputeStableManifolds=0),  # noqa: F821
+        AutomaticPersistenceThreshold=0)
+    recon = FlowReconstruction(Input=simplified, MaximumThreshold=TMAX,  # noqa: F821
+                               AutomaticReconstructionThreshold=0)
     recon.UpdatePipeline()
 
     controller = vtkSMParaViewPipelineControllerWithRendering()

@@ -76,8 +76,9 @@ def main():
     reader = simple.OpenDataFile(xyz)
     recon = FlowReconstruction(  # noqa: F821 (defined by LoadPlugin)
         Input=FlowComplexSimplification(  # noqa: F821
-            Input=FlowComplex(Input=reader, ComputeStableManifolds=0)),  # noqa: F821
-        MaximumThreshold=4.0)
+            Input=FlowComplex(Input=reader, ComputeStableManifolds=0),  # noqa: F821
+            AutomaticPersistenceThreshold=0),
+        MaximumThreshold=4.0, AutomaticReconstructionThreshold=0)
     recon.UpdatePipeline()
 
     controller = vtkSMParaViewPipelineControllerWithRendering()

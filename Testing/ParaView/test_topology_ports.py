@@ -51,8 +51,10 @@ def cli(path):
 def paraview(path):
     reader = OpenDataFile(path)
     fc = FlowComplex(Input=reader)  # noqa: F821 (defined by LoadPlugin)
-    simplified = FlowComplexSimplification(Input=fc)  # noqa: F821
-    recon = FlowReconstruction(Input=simplified, MaximumThreshold=4.0)  # noqa: F821
+    # Given thresholds, as the CLI's --tp 1.1 --tr 2.
+    simplified = FlowComplexSimplification(Input=fc, AutomaticPersistenceThreshold=0)  # noqa: F821
+    recon = FlowReconstruction(Input=simplified, MaximumThreshold=4.0,  # noqa: F821
+                               AutomaticReconstructionThreshold=0)
     recon.UpdatePipeline()
     grid = servermanager.Fetch(recon, idx=0)
     b = grid.GetFieldData().GetArray("BettiNumbers")
@@ -144,7 +146,8 @@ for name, points in (("clean", base), ("thinned", thinned)):
             failures.append("thinned: Under Sampling points outside the cap: z = %s" % ppts[:, 2])
 
 # Sliders and Every Step, on the thinned sample (its family changes between 2 and 4).
-if slider(recon, "ReconstructionThreshold") != (1.0, 4.0):
+# t_r: 1 to the default Maximum Threshold (the automatic t_r's range)
+if slider(recon, "ReconstructionThreshold") != (1.0, 5.0):
     failures.append("t_r slider spans %s" % (slider(recon, "ReconstructionThreshold"),))
 if slider(simplified, "PersistenceThreshold") != (1.0, 1.5):
     failures.append("t_p slider spans %s" % (slider(simplified, "PersistenceThreshold"),))

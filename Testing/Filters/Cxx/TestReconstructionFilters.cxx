@@ -108,6 +108,7 @@ vtkSmartPointer<vtkMultiBlockDataSet> Simplified(vtkMultiBlockDataSet* complex, 
   vtkNew<vtkFlowComplexSimplification> s;
   s->SetInputData(complex);
   s->SetPersistenceThreshold(tp);
+  s->AutomaticPersistenceThresholdOff();
   s->Update();
   return s->GetOutput();
 }
@@ -118,6 +119,7 @@ vtkSmartPointer<vtkUnstructuredGrid> Reconstructed(vtkMultiBlockDataSet* input, 
   vtkNew<vtkFlowReconstruction> r;
   r->SetInputData(input);
   r->SetReconstructionThreshold(tr);
+  r->AutomaticReconstructionThresholdOff();
   r->SetMaximumThreshold(std::max(4.0, tr));
   r->Update();
   return vtkUnstructuredGrid::SafeDownCast(r->GetOutputDataObject(0));
@@ -495,9 +497,11 @@ void TestQueueCache(const Cloud& cloud)
   vtkSmartPointer<vtkMultiBlockDataSet> complex = FlowComplexOf(cloud);
   vtkNew<vtkFlowComplexSimplification> s;
   s->SetInputData(complex);
+  s->AutomaticPersistenceThresholdOff();
   vtkNew<vtkFlowReconstruction> r;
   r->SetInputConnection(s->GetOutputPort());
   r->SetReconstructionThreshold(2.0);
+  r->AutomaticReconstructionThresholdOff();
   r->Update();
   CHECK(r->GetNumberOfQueueRuns() == 1);
   const vtkIdType cells2 = r->GetOutput()->GetNumberOfCells();

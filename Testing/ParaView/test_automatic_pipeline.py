@@ -1,0 +1,144 @@
+"""The ParaView pipeline at its defaults chooses t_p and t_r from the data, as
+`flowrecon reconstruct` does: Flow Complex -> Flow Complex Simplification ->
+Flow Reconstruction, every property at its default, in pvpython.
+
+- 10^5 i.i.d. points on a torus (the generator's truth: Betti numbers 1 2 1;
+  at the old fixed t_r 2 the reconstruction has hundreds of holes) give 1 2 1.
+- On it and on a latitude-longitude lattice of a sphere (where t_p 1.1 removes
+  patches), the pipeline's choice equals the command line's at its defaults:
+  the same t_r, t_p, Betti numbers, stable window and warning lines.
+- The choice is in the field data of the Reconstruction (what the Information
+  panel shows); the Topology Profile's chart marks the chosen t_r;
+  the chosen t_r lies in the stable window, and the Betti numbers of the
+  profile there are the ones reported.
+- Turning Automatic t_r off shows the Reconstruction Threshold (2) instead,
+  and its Betti numbers are the profile's at 2.
+Usage: pvpython test_automatic_pipeline.py PLUGIN FLOWRECON WORKDIR
+"""
+import math
+import os
+import re
+import subprocess
+import sys
+
+PLUGIN, FLOWRECON, WORK = sys.argv[1:4]
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Data"))
+import generate_clouds as gc  # noqa: E402
+
+from paraview import servermanager  # noqa: E402
+from paraview.simple import Delete, LoadPlugin, OpenDataFile  # noqa: E402
+
+LoadPlugin(PLUGIN, remote=False, ns=globals())
+os.makedirs(WORK, exist_ok=True)
+failures = []
+
+
+def expect(ok, what):
+    if not ok:
+        failures.append(what)
+        print("FAIL:", what)
+
+
+def values(fd, name):
+    a = fd.GetAbstractArray(name)
+    if a is None:
+        return None
+    return [a.GetVariantValue(k).ToString() if a.IsA("vtkStringArray") else a.GetVariantValue(k).ToDouble()
+            for k in range(a.GetNumberOfValues())]
+
+
+def cli(path):
+    p = subprocess.run([FLOWRECON, "reconstruct", path, "-o", path + ".vtu"],
+                       capture_output=True, text=True)
+    assert p.returncode == 0, p.stderr
+    m = re.search(r"t_r ([0-9.]+) \(auto\), t_p ([0-9.]+) \(auto\): Betti numbers (\d+) (\d+) (\d+), "
+                  r"unchanged for t_r in \(([0-9.]+), ([0-9.]+)\]", p.stdout)
+    assert m, p.stdout
+    warnings = [line[len("warning: "):] for line in p.stderr.splitlines()
+                if line.startswith("warning: ") and "under-sampled near" not in line]
+    return {"tr": float(m.group(1)), "tp": float(m.group(2)),
+            "betti": tuple(int(m.group(k)) for k in (3, 4, 5)),
+            "window": (float(m.group(6)), float(m.group(7))), "warnings": warnings}
+
+
+def pipeline(path, automatic=True):
+    reader = OpenDataFile(path)
+    fc = FlowComplex(Input=reader)  # noqa: F821 (defined by LoadPlugin)
+    simplified = FlowComplexSimplification(Input=fc)  # noqa: F821
+    recon = FlowReconstruction(Input=simplified)  # noqa: F821
+    if not automatic:
+        recon.AutomaticReconstructionThreshold = 0
+    recon.UpdatePipeline()
+    grid = servermanager.Fetch(recon, idx=0)
+    table = servermanager.Fetch(recon, idx=3)
+    for proxy in (recon, simplified, fc, reader):
+        Delete(proxy)
+    return grid, table
+
+
+def profile_at(table, t):
+    """The profile's Betti numbers for t_r = t (row k holds for (Threshold_k, next])."""
+    betti = None
+    for r in range(table.GetNumberOfRows()):
+        if table.GetValueByName(r, "Threshold").ToDouble() < t:
+            betti = tuple(table.GetValueByName(r, c).ToInt() for c in ("b0", "b1", "b2"))
+    return betti
+
+
+def check(name, path, truth):
+    c = cli(path)
+    grid, table = pipeline(path)
+    fd = grid.GetFieldData()
+    betti = tuple(int(v) for v in values(fd, "BettiNumbers"))
+    tr = values(fd, "ReconstructionThreshold")[0]
+    tp = values(fd, "PersistenceThreshold")[0]
+    window = values(fd, "StableWindow")
+    print(name, "pipeline: t_r %.4f t_p %g Betti %s window %s" % (tr, tp, betti, window))
+    print(name, "command line:", c)
+    if truth:
+        expect(betti == truth, "%s: Betti numbers %s, the truth is %s" % (name, betti, truth))
+    expect(values(fd, "ThresholdsChosen") == [1.0, 1.0], name + ": ThresholdsChosen is not (1, 1)")
+    expect(abs(tr - c["tr"]) <= 5e-4 * c["tr"] and tp == c["tp"] and betti == c["betti"],
+           "%s: the pipeline chose t_r %g t_p %g %s, the command line t_r %g t_p %g %s"
+           % (name, tr, tp, betti, c["tr"], c["tp"], c["betti"]))
+    expect(window is not None and all(abs(a - b) <= 5e-3 * b for a, b in zip(window, c["window"])),
+           "%s: stable window %s, the command line's %s" % (name, window, c["window"]))
+    expect(window is not None and window[0] < tr <= window[1], name + ": t_r outside its window")
+    expect(profile_at(table, tr) == betti and profile_at(table, window[1]) == betti,
+           name + ": the topology profile does not hold the reported Betti numbers over the window")
+    expect(values(fd, "ThresholdWarnings") == c["warnings"],
+           "%s: warnings %s, the command line's %s" % (name, values(fd, "ThresholdWarnings"), c["warnings"]))
+    tfd = table.GetFieldData()
+    # The chart's vertical mark: the points where the t_r series is defined.
+    xs, marks = values(tfd, "Threshold"), values(tfd, "t_r")
+    at = [x for x, m in zip(xs, marks) if not math.isnan(m)]
+    expect(len(at) == 2 and all(x == tr for x in at), "%s: the chart marks t_r at %s" % (name, at))
+    return tr
+
+
+def main():
+    torus = os.path.join(WORK, "torus_iid.xyz")
+    with open(torus, "w") as f:
+        f.write(gc.to_xyz_text(gc.make("torus", 100000)))
+    lattice = os.path.join(WORK, "latlong_sphere.xyz")
+    with open(lattice, "w") as f:
+        f.write(gc.to_xyz_text(gc.make("latlong_sphere")))
+    check("torus 10^5 i.i.d.", torus, gc.betti("torus"))
+    check("latitude-longitude sphere", lattice, None)
+    grid, table = pipeline(torus, automatic=False)
+    fd = grid.GetFieldData()
+    fixed = tuple(int(v) for v in values(fd, "BettiNumbers"))
+    expect(values(fd, "ReconstructionThreshold") == [2.0] and values(fd, "ThresholdsChosen") == [0.0, 1.0],
+           "Automatic t_r off: t_r %s, chosen %s" % (values(fd, "ReconstructionThreshold"),
+                                                  values(fd, "ThresholdsChosen")))
+    expect(fixed == profile_at(table, 2.0), "Automatic t_r off: Betti numbers %s, the profile's at 2 %s"
+           % (fixed, profile_at(table, 2.0)))
+    print("t_r 2 on the torus:", fixed)
+    if failures:
+        print("%d failure(s)" % len(failures))
+        return 1
+    print("PASS")
+    return 0
+
+
+sys.exit(main())
