@@ -10,6 +10,7 @@
 #include "OutputFiles.h"
 #include "PhaseClock.h"
 #include "ReconstructionReport.h"
+#include "TopologyConversion.h"
 #include "vtkFlowComplexSimplification.h"
 #include "vtkFlowReconstruction.h"
 
@@ -277,6 +278,14 @@ int RunReconstruct(const Arguments& args)
   const Reconstruction r = complex
     ? FromComplex(args, complex, settings, cellBudget, options, clock, args.Jumps.Given)
     : FromCloud(args.Input, settings, options, clock);
+  const bool tpChosen = settings.AutomaticPersistence && r.Tps.size() > 1;
+  const std::vector<std::string> choiceWarnings = r.Automatic
+    ? ChoiceWarnings(r.Choice, r.Tps, settings.AutomaticReconstruction, tpChosen)
+    : std::vector<std::string>();
+  if (r.Automatic)
+  {
+    ThresholdWarningsToVTK(choiceWarnings, r.Grid); // in the file, as in the filter's output
+  }
   vtkNew<vtkXMLUnstructuredGridWriter> writer;
   WriteXML(writer, r.Grid, output);
   clock("writing");
@@ -306,11 +315,9 @@ int RunReconstruct(const Arguments& args)
       std::cout << "Betti numbers: " << betti[0] << " " << betti[1] << " " << betti[2] << "\n";
       if (r.Automatic)
       {
-        std::cout << DescribeChoice(r.Choice, r.Tps, settings.AutomaticReconstruction,
-                       settings.AutomaticPersistence && r.Tps.size() > 1)
+        std::cout << DescribeChoice(r.Choice, r.Tps, settings.AutomaticReconstruction, tpChosen)
                   << "\n";
-        for (const std::string& w : ChoiceWarnings(r.Choice, r.Tps,
-               settings.AutomaticReconstruction, settings.AutomaticPersistence && r.Tps.size() > 1))
+        for (const std::string& w : choiceWarnings)
         {
           std::cerr << "warning: " << w << "\n";
         }

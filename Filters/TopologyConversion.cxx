@@ -12,6 +12,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkStringArray.h"
 #include "vtkTable.h"
 #include "vtkUnstructuredGrid.h"
 
@@ -165,6 +166,16 @@ void TopologyToVTK(const std::vector<Bar>& bars, double t, double limit,
     table->AddColumn(column);
   }
   AddStaircase(profile, t, limit, table->GetFieldData());
+}
+
+void ThresholdWarningsToVTK(const std::vector<std::string>& lines, vtkUnstructuredGrid* grid)
+{
+  auto warnings = NamedArray<vtkStringArray>(flowrecon::names::ThresholdWarnings);
+  for (const std::string& line : lines)
+  {
+    warnings->InsertNextValue(line);
+  }
+  grid->GetFieldData()->AddArray(warnings);
 }
 
 void ThresholdsToVTK(double tp, double tr, bool tpChosen, bool trChosen,

@@ -8,6 +8,7 @@
 #include "CellHomology.h"        // core data structure
 #include "FlowComplex.h"  // core data structure
 
+#include <string>
 #include <vector>
 
 class vtkPolyData;
@@ -50,6 +51,10 @@ void TopologyToVTK(const std::vector<Bar>& bars, double t, double limit,
 /// where the reported Betti numbers hold.
 void ThresholdsToVTK(double tp, double tr, bool tpChosen, bool trChosen,
   const StableWindow* window, vtkUnstructuredGrid* grid);
+
+/// What the choice of the thresholds warns about, one line per value: the
+/// string array ThresholdWarnings in the field data of `grid`.
+void ThresholdWarningsToVTK(const std::vector<std::string>& lines, vtkUnstructuredGrid* grid);
 
 } // namespace flowrecon
 

@@ -87,13 +87,7 @@ void AddThresholds(const InputPersistence& tp, double tr, const flowrecon::Thres
     lines = flowrecon::ReconstructionChoiceWarnings(*choice);
   }
   lines.insert(lines.end(), tp.Warnings.begin(), tp.Warnings.end());
-  vtkNew<vtkStringArray> warnings;
-  warnings->SetName(flowrecon::names::ThresholdWarnings);
-  for (const std::string& line : lines)
-  {
-    warnings->InsertNextValue(line);
-  }
-  grid->GetFieldData()->AddArray(warnings);
+  flowrecon::ThresholdWarningsToVTK(lines, grid);
 }
 
 } // namespace

@@ -6,7 +6,8 @@ Flow Reconstruction, every property at its default, in pvpython.
   at the old fixed t_r 2 the reconstruction has hundreds of holes) give 1 2 1.
 - On it and on a latitude-longitude lattice of a sphere (where t_p 1.1 removes
   patches), the pipeline's choice equals the command line's at its defaults:
-  the same t_r, t_p, Betti numbers, stable window and warning lines.
+  the same t_r, t_p, Betti numbers, stable window and warning lines (printed by
+  the command line and in its file's field data).
 - The choice is in the field data of the Reconstruction (what the Information
   panel shows); the Topology Profile's chart marks the chosen t_r;
   the chosen t_r lies in the stable window, and the Betti numbers of the
@@ -27,6 +28,7 @@ import generate_clouds as gc  # noqa: E402
 
 from paraview import servermanager  # noqa: E402
 from paraview.simple import Delete, LoadPlugin, OpenDataFile  # noqa: E402
+from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader  # noqa: E402
 
 LoadPlugin(PLUGIN, remote=False, ns=globals())
 os.makedirs(WORK, exist_ok=True)
@@ -56,6 +58,11 @@ def cli(path):
     assert m, p.stdout
     warnings = [line[len("warning: "):] for line in p.stderr.splitlines()
                 if line.startswith("warning: ") and "under-sampled near" not in line]
+    reader = vtkXMLUnstructuredGridReader()
+    reader.SetFileName(path + ".vtu")
+    reader.Update()
+    written = values(reader.GetOutput().GetFieldData(), "ThresholdWarnings")
+    expect(written == warnings, "%s.vtu: ThresholdWarnings %s, printed %s" % (path, written, warnings))
     return {"tr": float(m.group(1)), "tp": float(m.group(2)),
             "betti": tuple(int(m.group(k)) for k in (3, 4, 5)),
             "window": (float(m.group(6)), float(m.group(7))), "warnings": warnings}
