@@ -118,10 +118,10 @@ def main():
     simp = ns["FlowComplexSimplification"](registrationName="Simplification", Input=fc)
     recon = ns["FlowReconstruction"](registrationName="Reconstruction", Input=simp)
     recon.UpdatePipeline()
-    t_p = simp.PersistenceThreshold[0] if hasattr(simp.PersistenceThreshold, "__getitem__") \
-        else simp.PersistenceThreshold
-    t_r = recon.ReconstructionThreshold[0] if hasattr(recon.ReconstructionThreshold, "__getitem__") \
-        else recon.ReconstructionThreshold
+    # t_p and t_r as the filters chose them from the data (their defaults)
+    chosen = servermanager.Fetch(recon).GetFieldData()
+    t_p = chosen.GetArray("PersistenceThreshold").GetValue(0)
+    t_r = chosen.GetArray("ReconstructionThreshold").GetValue(0)
     n_points = points.GetDataInformation().GetNumberOfPoints()
     info = recon.GetDataInformation()
     say("%s: %d points -> reconstruction at t_p %g, t_r %g: %d cells, %d points" % (
@@ -259,17 +259,21 @@ def main():
 
     tr_a, tr_b = args["tr"]
     compare("_tr.png",
-            lambda: ns["FlowReconstruction"](Input=simp, ReconstructionThreshold=tr_a),
-            lambda: ns["FlowReconstruction"](Input=simp, ReconstructionThreshold=tr_b),
+            lambda: ns["FlowReconstruction"](Input=simp, ReconstructionThreshold=tr_a,
+                                             AutomaticReconstructionThreshold=0),
+            lambda: ns["FlowReconstruction"](Input=simp, ReconstructionThreshold=tr_b,
+                                             AutomaticReconstructionThreshold=0),
             "t_r = %g" % tr_a, "t_r = %g" % tr_b)
     tp_a, tp_b = args["tp"]
     compare("_tp.png",
             lambda: ns["FlowReconstruction"](
-                Input=ns["FlowComplexSimplification"](Input=fc, PersistenceThreshold=tp_a),
-                ReconstructionThreshold=t_r),
+                Input=ns["FlowComplexSimplification"](Input=fc, PersistenceThreshold=tp_a,
+                                                      AutomaticPersistenceThreshold=0),
+                ReconstructionThreshold=t_r, AutomaticReconstructionThreshold=0),
             lambda: ns["FlowReconstruction"](
-                Input=ns["FlowComplexSimplification"](Input=fc, PersistenceThreshold=tp_b),
-                ReconstructionThreshold=t_r),
+                Input=ns["FlowComplexSimplification"](Input=fc, PersistenceThreshold=tp_b,
+                                                      AutomaticPersistenceThreshold=0),
+                ReconstructionThreshold=t_r, AutomaticReconstructionThreshold=0),
             "t_p = %g, t_r = %g" % (tp_a, t_r), "t_p = %g, t_r = %g" % (tp_b, t_r))
 
     # the profile plot
