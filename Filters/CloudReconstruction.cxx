@@ -155,6 +155,8 @@ CloudReconstructionReport ReconstructCloud(const std::vector<Point3>& samples,
         report.Automatic = true;
         pick = report.Choice.Candidate;
         tr = report.Choice.ReconstructionThreshold;
+        const CappedReconstruction& p = candidates[pick].R;
+        CheckFilled(report.Choice, samples, MaximaBelow(p.Complex.Nodes, p.Carriers, p.Run, tr));
       }
       chosen = std::move(candidates[pick]);
       candidates.clear();

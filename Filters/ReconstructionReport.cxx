@@ -144,6 +144,14 @@ std::vector<std::string> ReconstructionChoiceWarnings(const ThresholdChoice& cho
       " classes change at once: a cavity may have been filled together with its walls "
       "(a surface sampled with holes)");
   }
+  if (choice.Filled)
+  {
+    lines.push_back("the samples lie on a surface (median local flatness " +
+      Number(choice.Flatness, 2) + "), yet the reconstruction is solid, without a void (" +
+      std::to_string(choice.Maxima) + " maxima for " + std::to_string(choice.Samples) +
+      " samples): a closed surface sampled too sparsely or too noisily for its thickness "
+      "may have been filled in");
+  }
   if (choice.Longest.Length() > choice.Window.Length() && choice.Longest.Betti != choice.Window.Betti)
   {
     lines.push_back("the Betti numbers " + Betti(choice.Longest) + " hold longer, for t_r in " +

@@ -314,6 +314,9 @@ int vtkFlowReconstruction::RequestData(
       choice = flowrecon::ChooseThresholds({ flowrecon::TopologyProfile(c.Bars, 1, tmax) }, tmax);
       t = choice.ReconstructionThreshold;
       chosen = true;
+      flowrecon::CheckFilled(choice,
+        std::vector<flowrecon::Point3>(fc.Points.begin(), fc.Points.begin() + fc.NumberOfInputPoints),
+        flowrecon::MaximaBelow(fc.Nodes, c.Carrier, c.Run, t));
     }
     else
     {

@@ -1,5 +1,7 @@
 #include "AutomaticThresholds.h"
 
+#include "LocalFlatness.h"
+
 #include "Progress.h"
 
 #include <algorithm>
@@ -162,6 +164,35 @@ ThresholdChoice ChoosePersistence(
     choice.Window.From = choice.Window.To = tr;
   }
   return choice;
+}
+
+void CheckFilled(ThresholdChoice& choice, const std::vector<Point3>& samples, Id maxima)
+{
+  choice.Maxima = maxima;
+  choice.Samples = static_cast<Id>(samples.size());
+  choice.Filled = false;
+  if (choice.Window.Length() == 0 || choice.Window.Betti[2] != 0 || samples.empty() ||
+    static_cast<double>(maxima) < choice.Rule.SolidShare * static_cast<double>(samples.size()))
+  {
+    return;
+  }
+  choice.Flatness = MedianFlatness(samples);
+  choice.Filled = choice.Flatness < choice.Rule.SurfaceFlatness;
+}
+
+Id MaximaBelow(const std::vector<Node>& nodes, const std::vector<Id>& carriers,
+  const ReconstructionResult& run, double t)
+{
+  Id count = 0;
+  for (std::size_t v = 0; v < nodes.size() && v < carriers.size(); ++v)
+  {
+    if (nodes[v].Index == 3 && !nodes[v].IsInfinity() && carriers[v] >= 0 &&
+      run.Nodes[carriers[v]].Threshold < t)
+    {
+      ++count;
+    }
+  }
+  return count;
 }
 
 } // namespace flowrecon

@@ -14,6 +14,7 @@
 #define flowrecon_AutomaticThresholds_h
 
 #include "CellHomology.h"
+#include "Reconstruction.h"
 
 #include <array>
 #include <vector>
@@ -47,6 +48,13 @@ struct ThresholdRule
   /// Windows within this factor of length are ties, settled for the earlier
   /// candidate (the order of the t_p candidates is a preference).
   double Tie = 1.02;
+  /// A cloud is a surface's (or a curve's) sample when its MedianFlatness is
+  /// below this (volume samples: 0.6-0.8; surfaces up to noise of the spacing:
+  /// below 0.35, Data/EXPERIMENTS.md).
+  double SurfaceFlatness = 0.45;
+  /// A reconstruction is solid when it holds this many maxima per sample or
+  /// more (an open surface's has a few slivers: under 0.1 per sample).
+  double SolidShare = 0.125;
 };
 
 struct ThresholdChoice
@@ -70,6 +78,12 @@ struct ThresholdChoice
   /// cascade, a cavity filled together with its walls, which a surface sample
   /// with holes gives (warned).
   Id ChangesAtStart = 0;
+  /// A closed surface filled in (CheckFilled): no void in the answer, a
+  /// solid reconstruction, and samples that lie on a surface (warned).
+  bool Filled = false;
+  double Flatness = 1;   ///< MedianFlatness of the samples (1: not measured)
+  Id Maxima = 0;         ///< maxima in the reconstruction at t_r
+  Id Samples = 0;
   ThresholdRule Rule;
 };
 
@@ -86,6 +100,19 @@ ThresholdChoice ChooseThresholds(const std::vector<std::vector<TopologyStep>>& p
 /// every profile's end); Window is that window, unclipped.
 ThresholdChoice ChoosePersistence(
   const std::vector<std::vector<TopologyStep>>& profiles, double tr, double cap);
+
+/// Sets choice.Filled when the chosen Betti numbers have no void (b2 = 0),
+/// the reconstruction at t_r holds at least Rule.SolidShare maxima per sample
+/// (`maxima`: MaximaBelow) and the samples are locally flat (MedianFlatness
+/// below Rule.SurfaceFlatness, measured only then): a surface sampled too
+/// sparsely or too noisily for its thickness closes only as a solid, which
+/// no topology profile tells from a volume sample.
+void CheckFilled(ThresholdChoice& choice, const std::vector<Point3>& samples, Id maxima);
+
+/// The maxima whose cells are in the reconstruction at t_r = t (their carrier,
+/// CellCarriers, has Threshold < t in `run`).
+Id MaximaBelow(const std::vector<Node>& nodes, const std::vector<Id>& carriers,
+  const ReconstructionResult& run, double t);
 
 } // namespace flowrecon
 

@@ -4,8 +4,12 @@ known by construction: quasi-uniform and i.i.d. surfaces, lattices that the
 simplification breaks, a solid, a non-manifold union and a curve. At defaults
 each must print its truth, a line 't_r X (auto), t_p Y (auto): Betti numbers
 ..., unchanged for t_r in (a, b]' with a < X <= b, and the reconstruction's
-field data must state the same choice. With explicit numbers there is no such
-line and the field data says nothing was chosen.
+field data must state the same choice, and no warning may say that a surface
+was filled in. Closed surfaces sampled too sparsely for their thickness (a
+thin plate, two spheres through each other at 1000 i.i.d. points) close only
+as solids: wherever the answer is not the truth, the warning that the samples
+lie on a surface yet the reconstruction is solid must be printed. With explicit
+numbers there is no such line and the field data says nothing was chosen.
 Usage: test_automatic_thresholds.py FLOWRECON WORKDIR
 """
 import os
@@ -33,7 +37,11 @@ CLOUDS = [
     ("ball", 3000),             # a solid
     ("two_spheres_qu", 4000),   # non-manifold
     ("trefoil_qu", 1000),       # a curve
+    ("two_hemispheres", 1000),  # an open surface: no void, and not filled
 ]
+FILLED = "may have been filled in"
+# Closed surfaces whose samples are too sparse for their thickness.
+THIN = [("thin_plate", 1000), ("two_spheres", 1000)]
 CHOICE = re.compile(r"^t_r ([0-9.]+) \(auto\), t_p ([0-9.]+) \(auto\): Betti numbers "
                     r"(\d+) (\d+) (\d+), unchanged for t_r in \(([0-9.]+), ([0-9.]+)\]$", re.M)
 
@@ -87,6 +95,8 @@ for shape, size in CLOUDS:
             problems.append("field data ReconstructionThreshold %s, printed %g" % (used, tr))
         if field(base + ".vtu", "PersistenceThreshold") != [tp]:
             problems.append("field data PersistenceThreshold %s" % field(base + ".vtu", "PersistenceThreshold"))
+        if FILLED in p.stderr:
+            problems.append("a right answer warned as filled")
         window = field(base + ".vtu", "StableWindow")
         if not window or abs(window[0] - lo) > 0.01 or abs(window[1] - hi) > 0.01:
             problems.append("field data StableWindow %s, printed (%g, %g]" % (window, lo, hi))
@@ -94,6 +104,22 @@ for shape, size in CLOUDS:
                                   "OK " + m.group(0) if not problems else "WRONG: " + "; ".join(problems)))
     if problems:
         failures.append(shape)
+
+# Wrong answers on surfaces too thin for their sampling are warned.
+for shape, size in THIN:
+    base = os.path.join(WORK, "%s_%s" % (shape, size))
+    with open(base + ".xyz", "w") as f:
+        f.write(gc.to_xyz_text(gc.make(shape, size=size)))
+    p = subprocess.run([FLOWRECON, "reconstruct", base + ".xyz", "-o", base + ".vtu"],
+                       capture_output=True, text=True)
+    printed = re.search(r"^Betti numbers: (\d+) (\d+) (\d+)$", p.stdout, re.M)
+    betti = tuple(int(x) for x in printed.groups()) if printed else None
+    truth = tuple(gc.betti(shape))
+    warned = FILLED in p.stderr
+    print("%s (%d points): Betti %s, truth %s, %s" % (shape, size, betti, truth,
+                                                     "warned as filled" if warned else "no filled warning"))
+    if p.returncode != 0 or betti is None or (betti != truth and not warned):
+        failures.append(shape + " (a wrong answer without the filled warning)")
 
 # Explicit numbers: the old behaviour, nothing chosen.
 base = os.path.join(WORK, "explicit")

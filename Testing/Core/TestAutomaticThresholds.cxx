@@ -1,9 +1,12 @@
 // The automatic choice of t_r and t_p on hand-made topology profiles with
 // known answers: the windows of constant Betti numbers, the stable window
 // with the most voids, t_r just above its start, the flags behind the
-// warnings, and the choice of t_p for a given t_r.
+// warnings, and the choice of t_p for a given t_r. The local flatness of
+// clouds of known dimension, and the filled-surface check built on it.
 #include "AutomaticThresholds.h"
 #include "Check.h"
+#include "Clouds.h"
+#include "LocalFlatness.h"
 
 #include <cmath>
 #include <vector>
@@ -120,6 +123,26 @@ int main()
       threw = true;
     }
     CHECK(threw);
+  }
+  // Local flatness: a surface sample is flat, a volume sample is not, a few
+  // points say nothing; the filled-surface check needs no void, a solid
+  // reconstruction and flat samples.
+  {
+    const std::vector<Point3> sphere = clouds::Sphere(3000, 3), cube = clouds::Cube(3000, 5);
+    const double flatSphere = MedianFlatness(sphere), flatCube = MedianFlatness(cube);
+    CHECK(flatSphere < 0.1);
+    CHECK(flatCube > 0.5);
+    CHECK(MedianFlatness(clouds::Sphere(20, 7)) == 1);
+    ThresholdChoice c = ChooseThresholds({ Torus }, 6); // the surface, one void
+    CheckFilled(c, sphere, 3000);
+    CHECK(!c.Filled);
+    c.Window.Betti = { { 1, 1, 0 } }; // a solid torus
+    CheckFilled(c, sphere, 100);      // a few slivers only: not solid
+    CHECK(!c.Filled && c.Flatness == 1);
+    CheckFilled(c, sphere, 1000);
+    CHECK(c.Filled && c.Flatness == flatSphere && c.Maxima == 1000 && c.Samples == 3000);
+    CheckFilled(c, cube, 1000);       // a volume sample's solid is no surface filled
+    CHECK(!c.Filled);
   }
   return check::Finish("TestAutomaticThresholds");
 }
