@@ -5,6 +5,7 @@
 #include "CliError.h"
 #include "CloudReconstruction.h"
 #include "FlowComplexConversion.h"
+#include "FlowComplexFromVTK.h"
 #include "FlowReconNames.h"
 #include "MessageCapture.h"
 #include "OutputFiles.h"
@@ -14,6 +15,8 @@
 #include "vtkFlowComplexSimplification.h"
 #include "vtkFlowReconstruction.h"
 
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkNew.h"
 #include "vtkPolyData.h"
@@ -24,6 +27,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <set>
 #include <iostream>
 
 namespace flowrecon::cli
@@ -179,8 +183,25 @@ Reconstruction FromComplex(const Arguments& args, vtkMultiBlockDataSet* complex,
   }
   std::string error;
   FlowComplex stored;
-  if (nodes && FromMultiBlock(simplified[pick], stored, error, true))
+  const bool filledCheck = settings.AutomaticReconstruction && r.Choice.Window.Betti[2] == 0;
+  if ((nodes || filledCheck) && FromMultiBlock(simplified[pick], stored, error, true))
   {
+    if (filledCheck && ReadSamples(simplified[pick], stored, error))
+    {
+      // The maxima of the written cells below t_r, as on a cloud.
+      std::set<long long> maxima;
+      vtkDataArray* index = r.Grid->GetCellData()->GetArray(names::Index);
+      vtkDataArray* node = r.Grid->GetCellData()->GetArray(names::NodeId);
+      vtkDataArray* threshold = r.Grid->GetCellData()->GetArray(names::Threshold);
+      for (vtkIdType c = 0; index && node && threshold && c < r.Grid->GetNumberOfCells(); ++c)
+      {
+        if (index->GetComponent(c, 0) == 3 && threshold->GetComponent(c, 0) < tr)
+        {
+          maxima.insert(static_cast<long long>(node->GetComponent(c, 0)));
+        }
+      }
+      CheckFilled(r.Choice, stored.Points, static_cast<Id>(maxima.size()));
+    }
     r.Nodes = std::move(stored.Nodes);
   }
   return r;
