@@ -173,15 +173,19 @@ int vtkFlowReconstruction::RequestData(
     return 0;
   }
 
-  if (input->GetNumberOfBlocks() == 0)
-  {
-    // Empty in, empty out: what the other ranks of a parallel run receive
-    // (vtkFlowComplex computes on rank 0 only).
+  // What every early return leaves: empty outputs, all five.
+  auto emptyOutputs = [&]() {
     grid->Initialize();
     profile->Initialize();
     arrows->Initialize();
     topology->Initialize();
     undersampling->Initialize();
+  };
+  if (input->GetNumberOfBlocks() == 0)
+  {
+    // Empty in, empty out: what the other ranks of a parallel run receive
+    // (vtkFlowComplex computes on rank 0 only).
+    emptyOutputs();
     return 1;
   }
   // The queue runs only for a new input; a new threshold only re-selects.
@@ -248,11 +252,7 @@ int vtkFlowReconstruction::RequestData(
         }
         finished = true;
       },
-      [&]() {
-        grid->Initialize();
-        profile->Initialize();
-        arrows->Initialize();
-      });
+      [&]() { emptyOutputs(); }); // an abort too leaves all five ports empty
     if (!finished)
     {
       return ok; // failed (0) or aborted (1, nothing cached)
@@ -266,20 +266,12 @@ int vtkFlowReconstruction::RequestData(
     vtkErrorMacro(<< "Maximum Threshold (T_max) " << tmax << " is above the input's Defer "
                   << "Patches Above (" << this->Cached->FC.DeferralRatio
                   << "): lower T_max, or raise Defer Patches Above in Flow Complex");
-    grid->Initialize();
-    profile->Initialize();
-    arrows->Initialize();
-    topology->Initialize();
-    undersampling->Initialize();
+    emptyOutputs();
     return 0;
   }
   if (this->Cached->GeometryThreshold != tmax && !this->DrawGeometry(tmax))
   {
-    grid->Initialize();
-    profile->Initialize();
-    arrows->Initialize();
-    topology->Initialize();
-    undersampling->Initialize();
+    emptyOutputs();
     return this->GetAbortExecute() ? 1 : 0;
   }
   // Once per drawing and cell limit, when asked for (also when turned on later).
@@ -302,11 +294,7 @@ int vtkFlowReconstruction::RequestData(
     {
       vtkErrorMacro(<< "Automatic Reconstruction Threshold needs Compute Topology: turn "
                        "Compute Topology on, or set t_r yourself");
-      grid->Initialize();
-      profile->Initialize();
-      arrows->Initialize();
-      topology->Initialize();
-      undersampling->Initialize();
+      emptyOutputs();
       return 0;
     }
     if (c.TopologyError.empty() && tmax > choice.Rule.Lowest)
