@@ -52,8 +52,17 @@ PersistenceChoice ChoosePersistenceThreshold(
   for (std::size_t k = 0; k < c.Candidates.size(); ++k)
   {
     const double from = 0.3 + share * static_cast<double>(k);
-    flowrecon::StoredTopology t = flowrecon::TopologyOfStoredComplex(
-      fc, c.Candidates[k], cap, re.get(), progress.Range(from, from + share));
+    flowrecon::StoredTopology t;
+    try
+    {
+      t = flowrecon::TopologyOfStoredComplex(
+        fc, c.Candidates[k], cap, re.get(), progress.Range(from, from + share));
+    }
+    catch (const flowrecon::Degenerate&)
+    {
+      throw flowrecon::InputError("a deferred patch met a tie the flow complex did not see: "
+                                  "set Defer Patches Above to 0 in Flow Complex");
+    }
     if (!t.Error.empty())
     {
       std::ostringstream line;
