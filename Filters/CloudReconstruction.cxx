@@ -3,6 +3,7 @@
 #include "CappedReconstruction.h"
 #include "CellHomology.h"
 #include "HasseTopology.h"
+#include "TopologyInput.h"
 #include "MemoryGuard.h"
 #include "ReconstructionConversion.h"
 #include "TopologyConversion.h"
@@ -28,28 +29,28 @@ struct Candidate
   std::string TopologyError;
   double Tp = 0;
   double TopologySeconds = 0; ///< following the lines, the raw arcs and the bars
-  Id LinesDeferred = 0, LinesFollowed = 0; ///< before the topology follows them all
+  Id LinesDeferred = 0, LinesFollowed = 0;
+  Id LinesToRegions = 0; ///< ended by the topology at a region of {d > r*} (TopologyInput.h)
 };
 
-/// The run at `tp` from `build` (taken when `last`); `cones`: every raw 2-3
-/// arc when an earlier run of the build has followed its lines.
+/// The run at `tp` from `build` (taken when `last`); `regions`: shared by the
+/// runs of one build (TopologyOfCappedRun).
 Candidate Run(CappedBuild& build, double tp, bool last, const CloudReconstructionSettings& settings,
-  const std::vector<Arc>* cones, const Progress& progress)
+  std::unique_ptr<ExteriorRegions>& regions, const Progress& progress)
 {
   Candidate c;
   c.Tp = tp;
   c.R = ReconstructBuilt(build, tp, last, progress);
   c.LinesDeferred = c.R.Lines ? c.R.Lines->LinesDeferred() : 0;
-  c.LinesFollowed = c.R.Lines ? c.R.Lines->LinesFollowed() : 0;
   if (settings.Topology)
   {
     const auto start = std::chrono::steady_clock::now();
     // Every reconstruction below the cap, from the diagram alone.
-    const std::vector<Arc> raw = RawArcsForTopology(c.R, cones);
+    const TopologyInput input = TopologyOfCappedRun(c.R, &regions);
+    c.LinesToRegions = input.LinesToRegions;
     try
     {
-      c.Bars = HasseBarcode(
-        c.R.Complex.Nodes, raw, PresenceTimes(c.R.Complex.Nodes, raw, c.R.Carriers, c.R.Run));
+      c.Bars = HasseBarcode(c.R.Complex.Nodes, input.Arcs, input.Presence, input.Joined);
     }
     catch (const InputError& e)
     {
@@ -58,6 +59,7 @@ Candidate Run(CappedBuild& build, double tp, bool last, const CloudReconstructio
     c.TopologySeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
+  c.LinesFollowed = c.R.Lines ? c.R.Lines->LinesFollowed() : 0;
   return c;
 }
 
@@ -77,7 +79,8 @@ ThresholdChoice Choose(const std::vector<Candidate>& candidates,
     : ChoosePersistence(profiles, settings.ReconstructionThreshold, settings.Cap);
 }
 
-std::string WorkReport(const CappedReconstruction& r, Id linesDeferred, Id linesFollowed)
+std::string WorkReport(
+  const CappedReconstruction& r, Id linesDeferred, Id linesFollowed, Id linesToRegions)
 {
   const Timings& t = r.Complex.Time;
   std::ostringstream work;
@@ -85,6 +88,7 @@ std::string WorkReport(const CappedReconstruction& r, Id linesDeferred, Id lines
        << ", walked late: " << r.WalkedLate << ", owners found by replays: " << r.ReplayedOwners
        << "\nflow lines deferred: " << linesDeferred << " of " << 2 * r.Complex.CountByIndex()[2]
        << ", followed late: " << linesFollowed
+       << ", ended above every reconstruction for the topology: " << linesToRegions
        << (r.EagerBecause.empty() ? "" : "\nbuilt again without deferral: " + r.EagerBecause)
        << std::fixed << std::setprecision(3) << "\nflow complex (s): Delaunay " << t.Delaunay
        << "; critical points " << t.CriticalPoints << "; stable manifolds " << t.StableManifolds
@@ -130,13 +134,12 @@ CloudReconstructionReport ReconstructCloud(const std::vector<Point3>& samples,
       phaseDone("flow complex");
       std::vector<Candidate> candidates;
       candidates.reserve(tps.size());
+      std::unique_ptr<ExteriorRegions> regions;
       const double share = 0.3 / static_cast<double>(tps.size());
       for (std::size_t k = 0; k < tps.size(); ++k)
       {
         const bool last = k + 1 == tps.size();
-        // The lines followed once serve every run (their arcs are raw).
-        const std::vector<Arc>* cones = candidates.empty() ? nullptr : &candidates.front().R.Cones;
-        candidates.push_back(Run(build, tps[k], last, settings, cones,
+        candidates.push_back(Run(build, tps[k], last, settings, regions,
           progress.Range(0.4 + share * static_cast<double>(k), 0.4 + share * static_cast<double>(k + 1))));
       }
       phaseDone(tps.size() > 1 ? "simplification, reconstruction queue, Betti numbers (each t_p)"
@@ -205,10 +208,11 @@ CloudReconstructionReport ReconstructCloud(const std::vector<Point3>& samples,
       }
       CappedBuild eager = BuildBelow(samples, options, chosen.Tp, settings.Cap, false,
         progress.Range(0, 0.4), settings.Topology);
-      chosen = Run(eager, chosen.Tp, true, settings, nullptr, progress.Range(0.4, 0.7));
+      std::unique_ptr<ExteriorRegions> regions;
+      chosen = Run(eager, chosen.Tp, true, settings, regions, progress.Range(0.4, 0.7));
     }
   }
-  report.Work = WorkReport(r, linesDeferred, linesFollowed) +
+  report.Work = WorkReport(r, linesDeferred, linesFollowed, chosen.LinesToRegions) +
     (topologyTimes.empty() ? "" : "\nBetti numbers from the Hasse diagram (s): " + topologyTimes);
   r.Triangulation.reset();
   // The triangulation is the largest block until here (~0.7 KB per point, in

@@ -93,14 +93,6 @@ CappedBuild BuildBelow(const std::vector<Point3>& points, BuildOptions options,
 CappedReconstruction ReconstructBuilt(
   CappedBuild& build, double persistenceThreshold, bool last, const Progress& progress);
 
-/// The unsimplified diagram's arcs that the topology of r's reconstructions
-/// needs (HasseBarcode): the 0-1 arcs, the 1-2 arcs of every index-2 node that
-/// is drawn below the cap (deferred patches are walked again without the
-/// simplification's replay), and every 2-3 arc (deferred flow lines are
-/// followed, or `cones` is taken for them: another run's of the same build).
-/// Needs r from keepRawPatchArcs; moves RawPatchArcs out; frees the lines.
-std::vector<Arc> RawArcsForTopology(CappedReconstruction& r, const std::vector<Arc>* cones = nullptr);
-
 } // namespace flowrecon
 
 #endif

@@ -143,16 +143,7 @@ void DeferredFlowLines::Follow(const std::vector<Id>& nodes)
   }
   const CriticalSimplices& cs = this->Re.Critical();
   const Triangulation& tri = this->Re.Tri();
-  if (!this->Forest)
-  {
-    this->MaximumOfCell.assign(static_cast<std::size_t>(tri.NumberOfCells()), -1);
-    for (std::size_t i = 0; i < cs.Cells.size(); ++i)
-    {
-      this->MaximumOfCell[cs.Cells[i].Cell] = static_cast<std::int32_t>(this->Re.Base3() + static_cast<Id>(i));
-    }
-    this->Forest = std::make_unique<SuccessorForest>(
-      tri, this->MaximumOfCell, this->InfinityNode, 0, false, this->Re.Options().ExactOnly);
-  }
+  this->MakeForest();
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, todo.size()),
     [&](const tbb::blocked_range<std::size_t>& r) {
       for (std::size_t k = r.begin(); k != r.end(); ++k)
@@ -173,6 +164,76 @@ void DeferredFlowLines::Follow(const std::vector<Id>& nodes)
     }
   }
   this->Followed += static_cast<Id>(todo.size());
+}
+
+void DeferredFlowLines::MakeForest()
+{
+  if (this->Forest)
+  {
+    return;
+  }
+  const CriticalSimplices& cs = this->Re.Critical();
+  const Triangulation& tri = this->Re.Tri();
+  this->MaximumOfCell.assign(static_cast<std::size_t>(tri.NumberOfCells()), -1);
+  for (std::size_t i = 0; i < cs.Cells.size(); ++i)
+  {
+    this->MaximumOfCell[cs.Cells[i].Cell] = static_cast<std::int32_t>(this->Re.Base3() + static_cast<Id>(i));
+  }
+  this->Forest = std::make_unique<SuccessorForest>(
+    tri, this->MaximumOfCell, this->InfinityNode, 0, false, this->Re.Options().ExactOnly);
+}
+
+std::vector<DeferredFlowLines::Ends> DeferredFlowLines::EndsAbove(double levelSq)
+{
+  std::vector<Ends> out;
+  std::vector<Id> todo; // line positions
+  for (std::size_t k = 0; k < this->Pending.size(); ++k)
+  {
+    if (this->Done[k])
+    {
+      continue;
+    }
+    Ends e;
+    e.Node = this->Pending[k];
+    e.End = { this->Other[k], this->Other[k] };
+    for (Id l = this->PendingBegin[k]; l < this->PendingBegin[k + 1]; ++l)
+    {
+      todo.push_back(l);
+    }
+    out.push_back(e);
+  }
+  if (todo.empty())
+  {
+    return out;
+  }
+  const CriticalSimplices& cs = this->Re.Critical();
+  const Triangulation& tri = this->Re.Tri();
+  this->MakeForest();
+  std::vector<Id> end(todo.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, todo.size()),
+    [&](const tbb::blocked_range<std::size_t>& r) {
+      for (std::size_t k = r.begin(); k != r.end(); ++k)
+      {
+        const Line& line = this->Lines[static_cast<std::size_t>(todo[k])];
+        const auto& facet = cs.Facets[static_cast<std::size_t>(line.Node - this->Re.Base2())];
+        const CellHandle side = FlowLineSides(tri, facet.Cell, facet.Opposite)[line.Side];
+        double boundSq = 0;
+        Id stop = -1;
+        const Id root = this->Forest->RootBelow(tri.CellId(side), levelSq, &boundSq, &stop);
+        end[k] = root == SuccessorForest::Pending ? -2 - stop : root;
+      }
+    });
+  std::size_t e = 0;
+  for (std::size_t k = 0; k < todo.size(); ++k)
+  {
+    const Line& line = this->Lines[static_cast<std::size_t>(todo[k])];
+    while (out[e].Node != line.Node)
+    {
+      ++e;
+    }
+    out[e].End[line.Side] = end[k];
+  }
+  return out;
 }
 
 void DeferredFlowLines::FollowBoundsUpTo(double value)
@@ -234,22 +295,27 @@ void DeferredFlowLines::CompleteRawArcs(std::vector<Arc>& arcs) const
   {
     --tail;
   }
+  ReplaceRows(arcs, tail, followed);
+}
+
+void ReplaceRows(std::vector<Arc>& arcs, std::size_t tail, const std::vector<Arc>& rows)
+{
   std::vector<Arc> merged;
-  merged.reserve(arcs.size() - tail + followed.size());
+  merged.reserve(arcs.size() - tail + rows.size());
   std::size_t f = 0;
   for (std::size_t i = tail; i < arcs.size(); ++i)
   {
-    while (f < followed.size() && followed[f].Lower < arcs[i].Lower)
+    while (f < rows.size() && rows[f].Lower < arcs[i].Lower)
     {
-      merged.push_back(followed[f++]);
+      merged.push_back(rows[f++]);
     }
-    if (f < followed.size() && followed[f].Lower == arcs[i].Lower)
+    if (f < rows.size() && rows[f].Lower == arcs[i].Lower)
     {
-      continue; // replaced by its raw arcs
+      continue; // replaced by its row
     }
     merged.push_back(arcs[i]);
   }
-  merged.insert(merged.end(), followed.begin() + static_cast<std::ptrdiff_t>(f), followed.end());
+  merged.insert(merged.end(), rows.begin() + static_cast<std::ptrdiff_t>(f), rows.end());
   arcs.resize(tail);
   arcs.insert(arcs.end(), merged.begin(), merged.end());
 }

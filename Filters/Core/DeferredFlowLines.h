@@ -25,6 +25,7 @@
 #include "Reconstruction.h"
 #include "Simplification.h"
 
+#include <array>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -64,6 +65,20 @@ public:
   /// (side order, one arc of multiplicity 2 when both lines meet), grouped by
   /// lower node.
   std::vector<Arc> FollowedRawArcs() const;
+
+  /// The two ends of the lines of a node not followed yet (EndsAbove).
+  struct Ends
+  {
+    Id Node;
+    std::array<Id, 2> End; ///< by side: a maximum, or -2 - c for the cell c of a stop
+  };
+
+  /// The nodes not followed yet (in increasing order), their lines walked only
+  /// until a Voronoi vertex certainly farther than sqrt(levelSq) from the
+  /// samples (the stop), or to their maximum when there is none on the way
+  /// (their nodes stay pending). For the topology: where a line goes beyond a
+  /// level no reconstruction reaches is said by ExteriorRegions.
+  std::vector<Ends> EndsAbove(double levelSq);
 
   /// `arcs` (grouped by index of the lower node, the 2-3 ones by lower node)
   /// with the 2-3 arcs of the nodes followed so far replaced by their raw arcs.
@@ -128,8 +143,13 @@ private:
   std::vector<double> SortedValues, SuffixLow; ///< maxima by value; min LowExp from there on
 
   std::size_t Position(Id node) const; ///< in Pending; npos when absent
+  void MakeForest();
   double LeastBound(std::size_t k) const;
 };
+
+/// Replaces the rows of `arcs` from position `tail` on (sorted by lower node)
+/// by `rows` (sorted by lower node): a node with a row in `rows` keeps only it.
+void ReplaceRows(std::vector<Arc>& arcs, std::size_t tail, const std::vector<Arc>& rows);
 
 } // namespace flowrecon
 

@@ -2,6 +2,7 @@
 
 #include "PersistenceUnionFind.h"
 
+#include <tbb/parallel_for.h>
 #include <tbb/parallel_sort.h>
 
 #include <algorithm>
@@ -24,7 +25,7 @@ using Int = std::int32_t;
 
 /// Up to two odd-multiplicity neighbours of each inserted node (by position):
 /// the ends of an edge (0-1 arcs) or the sides of a 2-cell (2-3 arcs).
-std::vector<Int> PairsOf(const std::vector<Node>& nodes, const std::vector<Arc>& arcs,
+std::vector<Int> PairsOf(const std::vector<std::int8_t>& index, const std::vector<Arc>& arcs,
   const std::vector<Int>& pos, int lowerIndex, std::size_t inserted)
 {
   std::vector<Int> ends(2 * inserted, -1);
@@ -37,7 +38,7 @@ std::vector<Int> PairsOf(const std::vector<Node>& nodes, const std::vector<Arc>&
     // Edges are found from their ends (the upper), 2-cells from themselves.
     const Id cell = lowerIndex == 0 ? a.Upper : a.Lower;
     const Id other = lowerIndex == 0 ? a.Lower : a.Upper;
-    if (nodes[a.Lower].Index != lowerIndex || pos[cell] < 0)
+    if (index[a.Lower] != lowerIndex || pos[cell] < 0)
     {
       continue;
     }
@@ -50,6 +51,16 @@ std::vector<Int> PairsOf(const std::vector<Node>& nodes, const std::vector<Arc>&
     slot[slot[0] >= 0 ? 1 : 0] = static_cast<Int>(other);
   }
   return ends;
+}
+
+/// The nodes' indices side by side: the passes over the arcs read them at
+/// random, and a node is 56 bytes (at 10^6 points the nodes are 200 MB).
+std::vector<std::int8_t> Indices(const std::vector<Node>& nodes)
+{
+  std::vector<std::int8_t> index(nodes.size());
+  tbb::parallel_for(std::size_t(0), nodes.size(),
+    [&](std::size_t v) { index[v] = static_cast<std::int8_t>(nodes[v].Index); });
+  return index;
 }
 
 } // namespace
@@ -71,11 +82,12 @@ std::vector<double> PresenceTimes(const std::vector<Node>& nodes, const std::vec
     }
   }
   // Every face of a drawn cell is drawn with it: from the maxima down.
+  const std::vector<std::int8_t> index = Indices(nodes);
   for (int upper = 3; upper >= 1; --upper)
   {
     for (const Arc& a : rawArcs)
     {
-      if (nodes[a.Upper].Index == upper)
+      if (index[a.Upper] == upper)
       {
         presence[a.Lower] = std::min(presence[a.Lower], presence[a.Upper]);
       }
@@ -84,11 +96,12 @@ std::vector<double> PresenceTimes(const std::vector<Node>& nodes, const std::vec
   return presence;
 }
 
-std::vector<Bar> HasseBarcode(
-  const std::vector<Node>& nodes, const std::vector<Arc>& rawArcs, const std::vector<double>& presence)
+std::vector<Bar> HasseBarcode(const std::vector<Node>& nodes, const std::vector<Arc>& rawArcs,
+  const std::vector<double>& presence, const std::vector<std::pair<Id, Id>>& joined)
 {
   const std::vector<Arc>& arcs = rawArcs;
   const std::size_t n = nodes.size();
+  const std::vector<std::int8_t> index = Indices(nodes);
   if (presence.size() != n)
   {
     NotClosed("the presence times and the diagram have different nodes");
@@ -109,7 +122,7 @@ std::vector<Bar> HasseBarcode(
   {
     if (presence[v] < HUGE_VAL)
     {
-      keys.push_back(Key{ presence[v], nodes[v].Index, static_cast<Int>(v) });
+      keys.push_back(Key{ presence[v], index[v], static_cast<Int>(v) });
     }
   }
   tbb::parallel_sort(keys.begin(), keys.end());
@@ -126,6 +139,19 @@ std::vector<Bar> HasseBarcode(
   }
   auto tau = [&](Int v) { return presence[v]; };
   std::vector<Bar> bars;
+  // Most classes die where they are born: only bars of positive length are made.
+  auto make = [&](int dimension, Int birth, Int death) {
+    if (tau(birth) < (death >= 0 ? tau(death) : HUGE_VAL))
+    {
+      Bar bar;
+      bar.Dimension = dimension;
+      bar.Birth = tau(birth);
+      bar.BirthCell = birth;
+      bar.Death = death >= 0 ? tau(death) : HUGE_VAL;
+      bar.DeathCell = death;
+      bars.push_back(bar);
+    }
+  };
 
   // Backwards, on the complement: maxima outside K_t joined by index-2 nodes
   // outside it. Elements are maxima by age in that direction: never inserted
@@ -133,7 +159,7 @@ std::vector<Bar> HasseBarcode(
   std::vector<Int> elementOf(n, -1), nodeOf;
   for (std::size_t v = 0; v < n; ++v)
   {
-    if (nodes[v].Index == 3 && pos[v] < 0)
+    if (index[v] == 3 && pos[v] < 0)
     {
       elementOf[v] = static_cast<Int>(nodeOf.size());
       nodeOf.push_back(static_cast<Int>(v));
@@ -141,13 +167,22 @@ std::vector<Bar> HasseBarcode(
   }
   for (std::size_t p = order.size(); p-- > 0;)
   {
-    if (nodes[order[p]].Index == 3)
+    if (index[order[p]] == 3)
     {
       elementOf[order[p]] = static_cast<Int>(nodeOf.size());
       nodeOf.push_back(order[p]);
     }
   }
   ElderUnionFind outside(nodeOf.size());
+  for (const auto& [a, b] : joined)
+  {
+    if (a < 0 || b < 0 || a >= static_cast<Id>(n) || b >= static_cast<Id>(n) ||
+      index[a] != 3 || index[b] != 3 || pos[a] >= 0 || pos[b] >= 0)
+    {
+      NotClosed("joined nodes that are not maxima outside every reconstruction");
+    }
+    outside.Merge(elementOf[a], elementOf[b]);
+  }
   // Index-2 nodes never present: outside at every threshold.
   for (std::size_t k = 0; k < arcs.size();)
   {
@@ -156,12 +191,12 @@ std::vector<Bar> HasseBarcode(
     int count = 0;
     for (; k < arcs.size() && arcs[k].Lower == s; ++k)
     {
-      if (nodes[s].Index == 2 && arcs[k].Multiplicity % 2 != 0)
+      if (index[s] == 2 && arcs[k].Multiplicity % 2 != 0)
       {
         sides[std::min(count++, 2)] = arcs[k].Upper;
       }
     }
-    if (nodes[s].Index != 2 || pos[s] >= 0 || count == 0)
+    if (index[s] != 2 || pos[s] >= 0 || count == 0)
     {
       continue;
     }
@@ -176,12 +211,12 @@ std::vector<Bar> HasseBarcode(
     }
     outside.Merge(elementOf[sides[0]], elementOf[sides[1]]);
   }
-  const std::vector<Int> sides = PairsOf(nodes, arcs, pos, 2, order.size());
+  const std::vector<Int> sides = PairsOf(index, arcs, pos, 2, order.size());
   std::vector<char> separates(order.size(), 0);
   for (std::size_t p = order.size(); p-- > 0;)
   {
     const Int s = order[p];
-    if (nodes[s].Index != 2)
+    if (index[s] != 2)
     {
       continue;
     }
@@ -203,40 +238,20 @@ std::vector<Bar> HasseBarcode(
     {
       separates[p] = 1;
       const Int m = nodeOf[dies];
-      Bar bar;
-      bar.Dimension = 2;
-      bar.Birth = tau(s);
-      bar.BirthCell = s;
-      bar.Death = pos[m] >= 0 ? tau(m) : HUGE_VAL;
-      bar.DeathCell = pos[m] >= 0 ? m : -1;
-      bars.push_back(bar);
+      make(2, s, pos[m] >= 0 ? m : -1);
     }
   }
 
   // Forwards: components by union-find over the edges' ends, loops as they
   // close, and the 2-cells that do not separate fill a loop each.
-  const std::vector<Int> ends = PairsOf(nodes, arcs, pos, 0, order.size());
+  const std::vector<Int> ends = PairsOf(index, arcs, pos, 0, order.size());
   ElderUnionFind inside(order.size());
-  std::vector<std::size_t> barOfVertex(order.size(), 0);
-  std::vector<std::size_t> loops; // open 1-bars, latest last
-  auto open = [&](int dimension, Int v) {
-    Bar bar;
-    bar.Dimension = dimension;
-    bar.Birth = tau(v);
-    bar.BirthCell = v;
-    bar.Death = HUGE_VAL;
-    bars.push_back(bar);
-    return bars.size() - 1;
-  };
+  std::vector<Int> loops; // edges of the open loops, latest last
   for (std::size_t p = 0; p < order.size(); ++p)
   {
     const Int v = order[p];
-    const int index = nodes[v].Index;
-    if (index == 0)
-    {
-      barOfVertex[p] = open(0, v);
-    }
-    else if (index == 1)
+    const int dimension = index[v];
+    if (dimension == 1)
     {
       const Int a = ends[2 * p], b = ends[2 * p + 1];
       if ((a >= 0) != (b >= 0) || (a >= 0 && (pos[a] < 0 || pos[b] < 0 ||
@@ -244,33 +259,38 @@ std::vector<Bar> HasseBarcode(
       {
         NotClosed("edge " + std::to_string(v) + " is inserted before its ends");
       }
+      // A component is named by its oldest vertex: the younger one dies.
       const Int dies = a >= 0 ? inside.Merge(pos[a], pos[b]) : -1;
       if (dies >= 0)
       {
-        Bar& bar = bars[barOfVertex[dies]];
-        bar.Death = tau(v);
-        bar.DeathCell = v;
+        make(0, order[dies], v);
       }
       else
       {
-        loops.push_back(open(1, v));
+        loops.push_back(v);
       }
     }
-    else if (index == 2 && !separates[p])
+    else if (dimension == 2 && !separates[p])
     {
       if (loops.empty())
       {
         NotClosed("2-cell " + std::to_string(v) + " fills no loop");
       }
-      Bar& bar = bars[loops.back()];
+      make(1, loops.back(), v);
       loops.pop_back();
-      bar.Death = tau(v);
-      bar.DeathCell = v;
     }
   }
-  bars.erase(std::remove_if(bars.begin(), bars.end(),
-               [](const Bar& b) { return !(b.Birth < b.Death); }),
-    bars.end());
+  for (std::size_t p = 0; p < order.size(); ++p)
+  {
+    if (index[order[p]] == 0 && inside.Find(static_cast<Int>(p)) == static_cast<Int>(p))
+    {
+      make(0, order[p], -1);
+    }
+  }
+  for (const Int e : loops)
+  {
+    make(1, e, -1);
+  }
   return bars;
 }
 

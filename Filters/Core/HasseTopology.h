@@ -29,6 +29,7 @@
 #include "FlowComplex.h"
 #include "Reconstruction.h"
 
+#include <utility>
 #include <vector>
 
 namespace flowrecon
@@ -56,8 +57,11 @@ std::vector<double> PresenceTimes(const std::vector<Node>& nodes, const std::vec
 /// index-2 node, grouped by lower node (even multiplicities count as absent).
 /// Throws InputError when they do not form a closed filtration of a
 /// decomposition of S^3 (a node before its boundary, a 2-cell with one side).
-std::vector<Bar> HasseBarcode(
-  const std::vector<Node>& nodes, const std::vector<Arc>& rawArcs, const std::vector<double>& presence);
+/// `joined`: pairs of maxima never present that lie in one component of the
+/// complement at every threshold (TopologyInput.h); rawArcs may then give a
+/// 2-cell's side as any maximum of the component its side lies in.
+std::vector<Bar> HasseBarcode(const std::vector<Node>& nodes, const std::vector<Arc>& rawArcs,
+  const std::vector<double>& presence, const std::vector<std::pair<Id, Id>>& joined = {});
 
 } // namespace flowrecon
 

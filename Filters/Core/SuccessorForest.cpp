@@ -399,7 +399,7 @@ Id SuccessorForest::Root(Id cell)
   return this->RootBelow(cell, HUGE_VAL, nullptr);
 }
 
-Id SuccessorForest::RootBelow(Id cell, double limitSq, double* boundSq)
+Id SuccessorForest::RootBelow(Id cell, double limitSq, double* boundSq, Id* stopCell)
 {
   // Without recording, NEXT is not walked twice: the chain stops at the first
   // cell whose ROOT is known, and a stopped chain leaves its NEXTs behind.
@@ -427,6 +427,10 @@ Id SuccessorForest::RootBelow(Id cell, double limitSq, double* boundSq)
       if (r2 >= limitSq)
       {
         *boundSq = r2;
+        if (stopCell)
+        {
+          *stopCell = id;
+        }
         return Pending;
       }
     }

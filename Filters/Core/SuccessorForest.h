@@ -46,8 +46,9 @@ public:
   /// then Pending, and *boundSq is a certified lower bound of that squared
   /// distance. The distance grows along the flow, so the maximum reached lies
   /// above it: a flow line stopped there cannot end below it (deferred flow
-  /// lines, DeferredFlowLines.h). Thread-safe as Root.
-  Id RootBelow(Id cell, double limitSq, double* boundSq);
+  /// lines, DeferredFlowLines.h). Thread-safe as Root. `stopCell` (if given)
+  /// receives the cell of that Voronoi vertex.
+  Id RootBelow(Id cell, double limitSq, double* boundSq, Id* stopCell = nullptr);
 
   /// Appends the polyline of the flow from c_T (excluded) to its maximum, or to a
   /// stub pointing toward infinity. Flow lines merge: with `shareTails`, the

@@ -130,6 +130,12 @@ void SameProfiles(const std::string& what, const std::vector<TopologyStep>& hass
   Expect(differ == 0, what + ": the profiles differ at " + std::to_string(differ) + " places");
 }
 
+long& LinesEndedEarly()
+{
+  static long n = 0;
+  return n;
+}
+
 void Compare(const std::string& name, const std::vector<Point3>& cloud, double tp, double cap)
 {
   CloudReconstructionSettings settings;
@@ -143,6 +149,11 @@ void Compare(const std::string& name, const std::vector<Point3>& cloud, double t
     cloud, settings, { grid, profile, topology, warnings }, Progress(), [](const char*) {});
   const std::string what = name + " t_p " + std::to_string(tp) + " cap " + std::to_string(cap);
   Expect(report.TopologyError.empty(), what + ": " + report.TopologyError);
+  // Lines ended in a region of the complement rather than followed (TopologyInput.h).
+  const std::string tag = "ended above every reconstruction for the topology: ";
+  const std::size_t at = report.Work.find(tag);
+  Expect(at != std::string::npos, what + ": the work report does not count the lines ended early");
+  LinesEndedEarly() += at == std::string::npos ? 0 : std::stol(report.Work.substr(at + tag.size()));
   const std::vector<TopologyStep> hasse = Rows(topology);
   const std::vector<TopologyStep> cells = CellProfile(grid, cap);
   Expect(hasse.size() > 3, what + ": a profile of a few rows only");
@@ -266,5 +277,8 @@ int main()
       CompareStored("cube", clouds::Cube(800, 11), tp, defer);
     }
   }
+  // The fixtures exercise the regions, not only the lines followed to their maxima.
+  std::cout << LinesEndedEarly() << " flow lines ended in a region of the complement\n";
+  Expect(LinesEndedEarly() > 1000, "few flow lines ended in a region of the complement");
   return check::Finish("TestHasseTopology");
 }

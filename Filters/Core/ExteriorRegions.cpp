@@ -1,0 +1,171 @@
+#include "ExteriorRegions.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <array>
+#include <atomic>
+
+namespace flowrecon
+{
+
+namespace
+{
+
+/// Union-find for concurrent unions: a root is the smallest element of its
+/// component whatever the order of the unions, so the result is deterministic.
+class ConcurrentUnionFind
+{
+public:
+  explicit ConcurrentUnionFind(std::size_t n)
+    : Parent(n)
+  {
+    tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
+      this->Parent[i].store(static_cast<std::int32_t>(i), std::memory_order_relaxed);
+    });
+  }
+
+  std::int32_t Find(std::int32_t x)
+  {
+    while (true)
+    {
+      std::int32_t p = this->Parent[x].load(std::memory_order_relaxed);
+      if (p == x)
+      {
+        return x;
+      }
+      const std::int32_t g = this->Parent[p].load(std::memory_order_relaxed);
+      if (g != p)
+      {
+        this->Parent[x].compare_exchange_weak(p, g, std::memory_order_relaxed); // halving
+      }
+      x = p;
+    }
+  }
+
+  void Union(std::int32_t a, std::int32_t b)
+  {
+    while (true)
+    {
+      a = this->Find(a);
+      b = this->Find(b);
+      if (a == b)
+      {
+        return;
+      }
+      if (a < b)
+      {
+        std::swap(a, b);
+      }
+      // Link the larger root under the smaller, if it is still a root.
+      std::int32_t expected = a;
+      if (this->Parent[a].compare_exchange_strong(expected, b, std::memory_order_relaxed))
+      {
+        return;
+      }
+    }
+  }
+
+private:
+  std::vector<std::atomic<std::int32_t>> Parent;
+};
+
+} // namespace
+
+ExteriorRegions::ExteriorRegions(const Triangulation& tri, double levelSq)
+  : LevelSq(levelSq)
+  , TriangulationSerial(tri.Serial())
+{
+  if (tri.Dimension() != 3)
+  {
+    throw Degenerate("exterior regions: the triangulation is not 3-dimensional");
+  }
+  const Kernel kernel;
+  const auto compare = kernel.compare_squared_radius_3_object();
+  const auto side = kernel.side_of_bounded_sphere_3_object();
+  const Delaunay& dt = tri.Dt();
+  const std::size_t n = static_cast<std::size_t>(tri.NumberOfCells());
+  // The Voronoi vertices in U_r: cells of circumradius > r.
+  std::vector<char> above(n);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n), [&](const tbb::blocked_range<std::size_t>& r) {
+    for (std::size_t c = r.begin(); c != r.end(); ++c)
+    {
+      const CellHandle h = tri.Cell(static_cast<Id>(c));
+      above[c] = compare(h->vertex(0)->point(), h->vertex(1)->point(), h->vertex(2)->point(),
+                   h->vertex(3)->point(), levelSq) == CGAL::LARGER;
+    }
+  });
+  // The Voronoi edge dual to facet (c, i) lies in U_r, given that its finite
+  // ends do: f is not Gabriel (its lowest point is an end) or R_f > r.
+  auto edgeAbove = [&](CellHandle c, int i) {
+    std::array<const KPoint*, 3> f;
+    for (int k = 0, j = 0; k < 4; ++k)
+    {
+      if (k != i)
+      {
+        f[j++] = &c->vertex(k)->point();
+      }
+    }
+    if (compare(*f[0], *f[1], *f[2], levelSq) == CGAL::LARGER)
+    {
+      return true;
+    }
+    const CellHandle d = c->neighbor(i);
+    for (const auto& [cell, apex] : { std::make_pair(c, i), std::make_pair(d, d->index(c)) })
+    {
+      if (!dt.is_infinite(cell->vertex(apex)) &&
+        side(*f[0], *f[1], *f[2], cell->vertex(apex)->point()) == CGAL::ON_BOUNDED_SIDE)
+      {
+        return true;
+      }
+    }
+    return false;
+  };
+  // Element n: infinity, joined to every cell whose Voronoi ray lies in U_r.
+  ConcurrentUnionFind components(n + 1);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n), [&](const tbb::blocked_range<std::size_t>& r) {
+    for (std::size_t c = r.begin(); c != r.end(); ++c)
+    {
+      if (!above[c])
+      {
+        continue;
+      }
+      const CellHandle h = tri.Cell(static_cast<Id>(c));
+      for (int i = 0; i < 4; ++i)
+      {
+        const Id d = tri.CellId(h->neighbor(i));
+        const std::size_t other = d < 0 ? n : static_cast<std::size_t>(d);
+        if ((d < 0 || (other > c && above[other])) && edgeAbove(h, i))
+        {
+          components.Union(static_cast<std::int32_t>(c), static_cast<std::int32_t>(other));
+        }
+      }
+    }
+  });
+  // Dense region ids, by smallest member (infinity last).
+  this->Region.assign(n, -1);
+  std::vector<std::int32_t> id(n + 1, -1);
+  for (std::size_t c = 0; c <= n; ++c)
+  {
+    if (c < n && !above[c])
+    {
+      continue;
+    }
+    const std::int32_t root = components.Find(static_cast<std::int32_t>(c));
+    if (id[root] < 0)
+    {
+      id[root] = this->Count_++;
+    }
+    if (c < n)
+    {
+      this->Region[c] = id[root];
+      ++this->Above;
+    }
+    else
+    {
+      this->Infinite = id[root];
+    }
+  }
+}
+
+} // namespace flowrecon

@@ -1,0 +1,54 @@
+// What the Betti numbers of a capped run's reconstructions need
+// (HasseBarcode): the unsimplified diagram's arcs, the presence times, and
+// where the deferred flow lines that no reconstruction below the cap meets
+// end, up to the complement's components.
+//
+// Why those lines need not be followed to their maxima. A line still pending
+// after the run ends at a maximum that no reconstruction below the cap holds
+// (the run followed every line that can reach one it inserts). The
+// reconstructions lie at distance <= r* from the samples, r* the largest value
+// of a node they hold, so the line's maximum lies in the component of
+// {d > r*} that the line enters (ExteriorRegions.h), which is inside one
+// component of every reconstruction's complement. The line is walked until it
+// enters {d > r*}; its side is given the first maximum of that component, and
+// the component's maxima are joined at every threshold. On the surface
+// samples of a sphere this replaces the walk of 10^6 lines through the nearly
+// cospherical Voronoi vertices at its centre by a flood of cheap radius tests.
+#ifndef flowrecon_TopologyInput_h
+#define flowrecon_TopologyInput_h
+
+#include "CappedReconstruction.h"
+#include "ExteriorRegions.h"
+
+#include <memory>
+#include <utility>
+#include <vector>
+
+namespace flowrecon
+{
+
+struct TopologyInput
+{
+  /// The 0-1 arcs, the 1-2 arcs of every index-2 node drawn below the cap,
+  /// every 2-3 arc (a line not followed: to its region's first maximum),
+  /// grouped by lower node.
+  std::vector<Arc> Arcs;
+  std::vector<double> Presence; ///< PresenceTimes
+  /// Maxima in one component of the complement of every reconstruction.
+  std::vector<std::pair<Id, Id>> Joined;
+  Id LinesFollowed = 0; ///< lines followed to their maxima for the topology
+  Id LinesToRegions = 0; ///< lines ended at a region of {d > r*}
+  Id Regions = 0;
+  std::int64_t CellsAbove = 0; ///< cells whose Voronoi vertex is in {d > r*}
+};
+
+/// Needs r from keepRawPatchArcs; moves RawPatchArcs out. The lines stay
+/// pending for the drawing (CompleteCones). `regions` (if given) keeps the
+/// regions computed for another run of the same build, reused when their
+/// level is high enough (the runs of t_p candidates often share r*).
+TopologyInput TopologyOfCappedRun(
+  CappedReconstruction& r, std::unique_ptr<ExteriorRegions>* regions = nullptr);
+
+} // namespace flowrecon
+
+#endif
