@@ -135,7 +135,10 @@ ExteriorRegions::ExteriorRegions(const Triangulation& tri, double levelSq)
       {
         const Id d = tri.CellId(h->neighbor(i));
         const std::size_t other = d < 0 ? n : static_cast<std::size_t>(d);
-        if ((d < 0 || (other > c && above[other])) && edgeAbove(h, i))
+        // Cells already joined need no predicate (most facets inside a region).
+        if ((d < 0 || (other > c && above[other])) &&
+          components.Find(static_cast<std::int32_t>(c)) != components.Find(static_cast<std::int32_t>(other)) &&
+          edgeAbove(h, i))
         {
           components.Union(static_cast<std::int32_t>(c), static_cast<std::int32_t>(other));
         }

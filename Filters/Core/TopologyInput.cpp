@@ -112,6 +112,7 @@ void EndInRegions(CappedReconstruction& r, TopologyInput& t, std::size_t cones,
     throw Degenerate("topology: a region of the complement without a maximum");
   }
   std::vector<Arc> rows;
+  bool reachesPresent = false; // a walk that ended at a maximum some reconstruction holds
   for (const DeferredFlowLines::Ends& e : ends)
   {
     Id to[2];
@@ -122,7 +123,8 @@ void EndInRegions(CappedReconstruction& r, TopologyInput& t, std::size_t cones,
       {
         throw Degenerate("topology: a pending line without its end");
       }
-      to[s] = end >= 0 ? absent(end) : first[regions->RegionOf(-2 - end)];
+      to[s] = end >= 0 ? end : first[regions->RegionOf(-2 - end)];
+      reachesPresent = reachesPresent || (end >= 0 && t.Presence[end] < HUGE_VAL);
       t.LinesToRegions += end >= 0 ? 0 : 1;
     }
     if (to[0] == to[1])
@@ -136,6 +138,12 @@ void EndInRegions(CappedReconstruction& r, TopologyInput& t, std::size_t cones,
     }
   }
   ReplaceRows(t.Arcs, cones, rows);
+  if (reachesPresent)
+  {
+    // Its node is drawn with that maximum's cone. The nodes this adds have
+    // values below the maximum's, so r* and the regions stand.
+    t.Presence = PresenceTimes(fc.Nodes, t.Arcs, r.Carriers, r.Run);
+  }
   t.Regions = regions->Count();
   t.CellsAbove = regions->CellsAbove();
 }
@@ -181,8 +189,8 @@ TopologyInput TopologyOfCappedRun(CappedReconstruction& r, std::unique_ptr<Exter
     raw.insert(raw.begin() + static_cast<std::ptrdiff_t>(cones), more.begin(), more.end());
     cones += more.size();
   }
-  // A line still pending ends at a maximum no reconstruction holds: the
-  // presence times do not need it.
+  // Without the pending lines' sides: those that end at a maximum some
+  // reconstruction holds are walked to it, and added then (EndInRegions).
   t.Presence = PresenceTimes(fc.Nodes, raw, r.Carriers, r.Run);
   if (!r.Lines)
   {

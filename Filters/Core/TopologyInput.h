@@ -3,15 +3,15 @@
 // where the deferred flow lines that no reconstruction below the cap meets
 // end, up to the complement's components.
 //
-// Why those lines need not be followed to their maxima. A line still pending
-// after the run ends at a maximum that no reconstruction below the cap holds
-// (the run followed every line that can reach one it inserts). The
-// reconstructions lie at distance <= r* from the samples, r* the largest value
-// of a node they hold, so the line's maximum lies in the component of
-// {d > r*} that the line enters (ExteriorRegions.h), which is inside one
-// component of every reconstruction's complement. The line is walked until it
-// enters {d > r*}; its side is given the first maximum of that component, and
-// the component's maxima are joined at every threshold. On the surface
+// Why those lines need not be followed to their maxima. The reconstructions
+// below the cap lie at distance <= r* from the samples, r* the largest value
+// of a node they hold (the presence times without the pending lines: a line
+// that ends at a maximum they hold is walked to it below). A pending line is
+// walked until it enters {d > r*}; there it is in the component of {d > r*}
+// (ExteriorRegions.h) of its maximum, since the distance grows along the flow,
+// and that component lies inside one component of every reconstruction's
+// complement. The line's side is given the first maximum of that component,
+// and the component's maxima are joined at every threshold. On the surface
 // samples of a sphere this replaces the walk of 10^6 lines through the nearly
 // cospherical Voronoi vertices at its centre by a flood of cheap radius tests.
 #ifndef flowrecon_TopologyInput_h

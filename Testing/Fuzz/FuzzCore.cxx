@@ -52,10 +52,13 @@
 // Any InputError (non-finite coordinates, fewer than 4 distinct points,
 // coplanar points, too degenerate) is an acceptable outcome.
 #include "CappedReconstruction.h"
+#include "CellHomology.h"
+#include "HasseTopology.h"
 #include "FlowComplexBuilder.h"
 #include "Reconstruction.h"
 #include "Simplification.h"
 #include "StableManifoldGeometry.h"
+#include "TopologyInput.h"
 
 #include <tbb/global_control.h>
 
@@ -493,7 +496,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     CappedReconstruction capped;
     try
     {
-      capped = ReconstructBelow(cloud, options, tp, cap, true, Progress());
+      capped = ReconstructBelow(cloud, options, tp, cap, true, Progress(), true);
     }
     catch (const InputError& e)
     {
@@ -514,6 +517,46 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       }
       const Id c = carriers[i];
       REQUIRE(capped.Carriers[i] == (c >= 0 && run.Contains(c, cap) ? c : -1));
+    }
+
+    // The Betti numbers of every reconstruction below the cap: the capped run's
+    // (its pending lines ended in regions of the complement, TopologyInput.h)
+    // against the eager diagram's, where every line is followed.
+    auto profile = [&](auto&& bars, std::vector<TopologyStep>& out) {
+      try
+      {
+        out = TopologyProfile(bars(), 1, cap);
+        return true;
+      }
+      catch (const InputError&)
+      {
+        return false;
+      }
+    };
+    std::vector<TopologyStep> lazy, full;
+    bool lazyOk = false;
+    try
+    {
+      lazyOk = profile([&] {
+        const TopologyInput input = TopologyOfCappedRun(capped);
+        return HasseBarcode(capped.Complex.Nodes, input.Arcs, input.Presence, input.Joined);
+      }, lazy);
+    }
+    catch (const Degenerate&)
+    {
+      lazyOk = false; // a tie in a late walk: the CLI builds again eagerly
+      lazy.clear();
+    }
+    const bool fullOk = profile(
+      [&] { return HasseBarcode(fc.Nodes, fc.Arcs, PresenceTimes(fc.Nodes, fc.Arcs, carriers, run)); },
+      full);
+    if (lazyOk && fullOk)
+    {
+      REQUIRE(lazy.size() == full.size());
+      for (std::size_t k = 0; k < lazy.size(); ++k)
+      {
+        REQUIRE(lazy[k].Threshold == full[k].Threshold && lazy[k].Betti == full[k].Betti);
+      }
     }
 
     // Draw what `flowrecon reconstruct --tr 2` writes.
