@@ -146,7 +146,7 @@ std::vector<std::string> ReconstructionChoiceWarnings(const ThresholdChoice& cho
   }
   if (choice.Filled)
   {
-    lines.push_back("the samples lie on a surface (median local flatness " +
+    lines.push_back("the samples lie on a surface (local flatness " +
       Number(choice.Flatness, 2) + "), yet the reconstruction is solid, without a void (" +
       std::to_string(choice.Maxima) + " maxima for " + std::to_string(choice.Samples) +
       " samples): a closed surface sampled too sparsely or too noisily for its thickness "

@@ -176,7 +176,7 @@ void CheckFilled(ThresholdChoice& choice, const std::vector<Point3>& samples, Id
   {
     return;
   }
-  choice.Flatness = MedianFlatness(samples);
+  choice.Flatness = RelativeFlatness(samples);
   choice.Filled = choice.Flatness < choice.Rule.SurfaceFlatness;
 }
 

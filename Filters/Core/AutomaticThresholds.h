@@ -48,10 +48,10 @@ struct ThresholdRule
   /// Windows within this factor of length are ties, settled for the earlier
   /// candidate (the order of the t_p candidates is a preference).
   double Tie = 1.02;
-  /// A cloud is a surface's (or a curve's) sample when its MedianFlatness is
-  /// below this (volume samples: 0.6-0.8; surfaces up to noise of the spacing:
-  /// below 0.35, Data/EXPERIMENTS.md).
-  double SurfaceFlatness = 0.45;
+  /// A cloud is a surface's (or a curve's) sample when its RelativeFlatness
+  /// is below this (volume samples: 0.84-1; surfaces up to noise of the
+  /// spacing, and thin tubes and plates: below 0.5, Data/EXPERIMENTS.md).
+  double SurfaceFlatness = 0.6;
   /// A reconstruction is solid when it holds this many maxima per sample or
   /// more (an open surface's has a few slivers: under 0.1 per sample).
   double SolidShare = 0.125;
@@ -81,7 +81,7 @@ struct ThresholdChoice
   /// A closed surface filled in (CheckFilled): no void in the answer, a
   /// solid reconstruction, and samples that lie on a surface (warned).
   bool Filled = false;
-  double Flatness = 1;   ///< MedianFlatness of the samples (1: not measured)
+  double Flatness = 1;   ///< RelativeFlatness of the samples (1: not measured)
   Id Maxima = 0;         ///< maxima in the reconstruction at t_r
   Id Samples = 0;
   ThresholdRule Rule;
@@ -103,8 +103,8 @@ ThresholdChoice ChoosePersistence(
 
 /// Sets choice.Filled when the chosen Betti numbers have no void (b2 = 0),
 /// the reconstruction at t_r holds at least Rule.SolidShare maxima per sample
-/// (`maxima`: MaximaBelow) and the samples are locally flat (MedianFlatness
-/// below Rule.SurfaceFlatness, measured only then): a surface sampled too
+/// (`maxima`: MaximaBelow) and the samples are locally flat at some scale
+/// (RelativeFlatness below Rule.SurfaceFlatness, measured only then): a surface sampled too
 /// sparsely or too noisily for its thickness closes only as a solid, which
 /// no topology profile tells from a volume sample.
 void CheckFilled(ThresholdChoice& choice, const std::vector<Point3>& samples, Id maxima);

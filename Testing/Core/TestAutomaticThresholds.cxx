@@ -140,9 +140,38 @@ int main()
     CheckFilled(c, sphere, 100);      // a few slivers only: not solid
     CHECK(!c.Filled && c.Flatness == 1);
     CheckFilled(c, sphere, 1000);
-    CHECK(c.Filled && c.Flatness == flatSphere && c.Maxima == 1000 && c.Samples == 3000);
+    CHECK(c.Filled && c.Flatness == RelativeFlatness(sphere) && c.Maxima == 1000 && c.Samples == 3000);
+    CHECK(c.Flatness <= flatSphere / FlatnessScales()[1].Volume);
     CheckFilled(c, cube, 1000);       // a volume sample's solid is no surface filled
     CHECK(!c.Filled);
+  }
+  // Several scales: the two walls of a thin tube (0.1 apart, 10^4 points, about
+  // 0.05 apart on each wall) are flat within 10 samples and look like a volume
+  // within 30, where both walls are in reach; the multi-scale test sees the
+  // surface, a volume sample is a volume at every scale.
+  {
+    clouds::Rng r(11);
+    std::vector<Point3> tube(10000);
+    for (Point3& p : tube)
+    {
+      const double rho = r.U() < 1.0 / 1.9 ? 1.0 : 0.9, u = 2 * M_PI * r.U(), z = 2 * r.U() - 1;
+      p = { { rho * std::cos(u), rho * std::sin(u), z } };
+    }
+    const std::vector<double> m = MedianFlatness(tube, { 10, 30, 100 });
+    CHECK(m.size() == 3 && m[0] == MedianFlatness(tube, 10) && m[1] == MedianFlatness(tube, 30) &&
+      m[2] == MedianFlatness(tube, 100));
+    CHECK(m[0] < 0.1 && m[1] > ThresholdRule().SurfaceFlatness * FlatnessScales()[1].Volume);
+    CHECK(RelativeFlatness(tube) == m[0] / FlatnessScales()[0].Volume);
+    const std::vector<Point3> volume = clouds::Cube(10000, 12);
+    CHECK(RelativeFlatness(volume) > 0.8);
+    // Under 20 samples per neighbourhood size no scale is tried.
+    CHECK(RelativeFlatness(clouds::Sphere(199, 5)) == 1 && RelativeFlatness(clouds::Sphere(200, 5)) < 0.1);
+    ThresholdChoice c = ChooseThresholds({ Torus }, 6);
+    c.Window.Betti = { { 1, 1, 0 } };
+    CheckFilled(c, tube, 5000);
+    CHECK(c.Filled);
+    CheckFilled(c, volume, 5000);
+    CHECK(!c.Filled && c.Flatness > 0.8);
   }
   return check::Finish("TestAutomaticThresholds");
 }
