@@ -1,5 +1,6 @@
 #include "MemoryGuard.h"
 
+#include "CgroupMemory.h"
 #include "Progress.h"
 
 #include <sys/resource.h>
@@ -23,7 +24,7 @@ namespace
 {
 
 /// A field of /proc/meminfo or /proc/self/status in bytes (-1 if absent).
-double ProcField(const char* file, const std::string& key)
+double ProcField(const std::string& file, const std::string& key)
 {
   std::ifstream in(file);
   std::string line;
@@ -47,48 +48,72 @@ std::string Gigabytes(double bytes)
   return text;
 }
 
-} // namespace
-
-double AvailableMemory()
+/// AvailableMemory(), and whether the cgroup is what binds.
+MemoryRoom Available()
 {
-  double available = ProcField("/proc/meminfo", "MemAvailable");
-  if (available < 0)
-  {
-    available = HUGE_VAL; // not Linux: no estimate, no refusal
-  }
+  MemoryRoom room = SystemMemoryRoom("/");
   rlimit limit{};
   if (getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY)
   {
     const double used = ProcField("/proc/self/status", "VmSize");
-    available = std::min(available, static_cast<double>(limit.rlim_cur) - std::max(0.0, used));
+    const double left = static_cast<double>(limit.rlim_cur) - std::max(0.0, used);
+    if (left < room.bytes)
+    {
+      room = { left, false };
+    }
   }
   if (const char* text = std::getenv("FLOWRECON_MEMORY_LIMIT"))
   {
     const double cap = std::strtod(text, nullptr);
     const double used = ProcField("/proc/self/status", "VmRSS");
-    if (cap > 0)
+    if (cap > 0 && cap - std::max(0.0, used) < room.bytes)
     {
-      available = std::min(available, cap - std::max(0.0, used));
+      room = { cap - std::max(0.0, used), false };
     }
   }
-  return std::max(0.0, available);
+  room.bytes = std::max(0.0, room.bytes);
+  return room;
+}
+
+} // namespace
+
+MemoryRoom SystemMemoryRoom(const std::string& root)
+{
+  std::string prefix = root;
+  while (!prefix.empty() && prefix.back() == '/')
+  {
+    prefix.pop_back();
+  }
+  double available = ProcField(prefix + "/proc/meminfo", "MemAvailable");
+  if (available < 0)
+  {
+    available = HUGE_VAL; // not Linux: no estimate, no refusal
+  }
+  const double cgroup = CgroupMemoryRoom(root);
+  return cgroup < available ? MemoryRoom{ cgroup, true } : MemoryRoom{ available, false };
+}
+
+double AvailableMemory()
+{
+  return Available().bytes;
 }
 
 void RequireMemory(double bytes, const std::string& what, const std::string& advice)
 {
-  double available = AvailableMemory();
-  if (bytes > available)
+  MemoryRoom available = Available();
+  if (bytes > available.bytes)
   {
     // Blocks the process freed but its allocators still hold count as used:
     // hand them back before refusing (measured: 10^7 points were refused a
     // drawing while the simplification's lists sat in tbbmalloc's pools).
     ReleaseFreedMemory();
-    available = AvailableMemory();
+    available = Available();
   }
-  if (bytes > available)
+  if (bytes > available.bytes)
   {
     throw InputError(what + " needs about " + Gigabytes(bytes) + " of memory, " +
-      Gigabytes(available) + " are available; " + advice);
+      Gigabytes(available.bytes) + " are available" +
+      (available.cgroupBinds ? " (cgroup memory limit); " : "; ") + advice);
   }
 }
 
