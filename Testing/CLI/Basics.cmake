@@ -125,3 +125,8 @@ endif ()
 add_test(NAME cli.MemoryGuard
   COMMAND sh "${CMAKE_CURRENT_LIST_DIR}/RunUnderLimit.sh" "$<TARGET_FILE:flowrecon>" "${_w}")
 set_tests_properties(cli.MemoryGuard PROPERTIES TIMEOUT 400)
+# So must a run in a cgroup whose memory limit it would exceed (the kernel
+# kills without a word): needs root and a writable cgroup, else skipped.
+add_test(NAME cli.MemoryGuardCgroup
+  COMMAND sh "${CMAKE_CURRENT_LIST_DIR}/RunUnderCgroup.sh" "$<TARGET_FILE:flowrecon>" "${_w}")
+set_tests_properties(cli.MemoryGuardCgroup PROPERTIES TIMEOUT 300 SKIP_RETURN_CODE 77)
