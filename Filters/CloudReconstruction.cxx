@@ -31,6 +31,8 @@ struct Candidate
   double TopologySeconds = 0; ///< following the lines, the raw arcs and the bars
   Id LinesDeferred = 0, LinesFollowed = 0;
   Id LinesToRegions = 0; ///< ended by the topology at a region of {d > r*} (TopologyInput.h)
+  Id Regions = 0;        ///< of {d > r*}
+  std::int64_t CellsAbove = 0;
 };
 
 /// The run at `tp` from `build` (taken when `last`); `regions`: shared by the
@@ -48,6 +50,8 @@ Candidate Run(CappedBuild& build, double tp, bool last, const CloudReconstructio
     // Every reconstruction below the cap, from the diagram alone.
     const TopologyInput input = TopologyOfCappedRun(c.R, &regions);
     c.LinesToRegions = input.LinesToRegions;
+    c.Regions = input.Regions;
+    c.CellsAbove = input.CellsAbove;
     try
     {
       c.Bars = HasseBarcode(c.R.Complex.Nodes, input.Arcs, input.Presence, input.Joined);
@@ -79,8 +83,8 @@ ThresholdChoice Choose(const std::vector<Candidate>& candidates,
     : ChoosePersistence(profiles, settings.ReconstructionThreshold, settings.Cap);
 }
 
-std::string WorkReport(
-  const CappedReconstruction& r, Id linesDeferred, Id linesFollowed, Id linesToRegions)
+std::string WorkReport(const CappedReconstruction& r, Id linesDeferred, Id linesFollowed,
+  const Candidate& chosen)
 {
   const Timings& t = r.Complex.Time;
   std::ostringstream work;
@@ -88,7 +92,8 @@ std::string WorkReport(
        << ", walked late: " << r.WalkedLate << ", owners found by replays: " << r.ReplayedOwners
        << "\nflow lines deferred: " << linesDeferred << " of " << 2 * r.Complex.CountByIndex()[2]
        << ", followed late: " << linesFollowed
-       << ", ended above every reconstruction for the topology: " << linesToRegions
+       << ", ended above every reconstruction for the topology: " << chosen.LinesToRegions
+       << " (in " << chosen.Regions << " regions of " << chosen.CellsAbove << " Delaunay cells)"
        << (r.EagerBecause.empty() ? "" : "\nbuilt again without deferral: " + r.EagerBecause)
        << std::fixed << std::setprecision(3) << "\nflow complex (s): Delaunay " << t.Delaunay
        << "; critical points " << t.CriticalPoints << "; stable manifolds " << t.StableManifolds
@@ -212,7 +217,7 @@ CloudReconstructionReport ReconstructCloud(const std::vector<Point3>& samples,
       chosen = Run(eager, chosen.Tp, true, settings, regions, progress.Range(0.4, 0.7));
     }
   }
-  report.Work = WorkReport(r, linesDeferred, linesFollowed, chosen.LinesToRegions) +
+  report.Work = WorkReport(r, linesDeferred, linesFollowed, chosen) +
     (topologyTimes.empty() ? "" : "\nBetti numbers from the Hasse diagram (s): " + topologyTimes);
   r.Triangulation.reset();
   // The triangulation is the largest block until here (~0.7 KB per point, in

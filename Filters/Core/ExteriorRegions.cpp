@@ -90,6 +90,19 @@ ExteriorRegions::ExteriorRegions(const Triangulation& tri, double levelSq)
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n), [&](const tbb::blocked_range<std::size_t>& r) {
     for (std::size_t c = r.begin(); c != r.end(); ++c)
     {
+      // Memory-bound: fetch the cells ahead, then their vertices.
+      if (c + 16 < r.end())
+      {
+        __builtin_prefetch(&*tri.Cell(static_cast<Id>(c + 16)));
+      }
+      if (c + 8 < r.end())
+      {
+        const CellHandle a = tri.Cell(static_cast<Id>(c + 8));
+        for (int k = 0; k < 4; ++k)
+        {
+          __builtin_prefetch(&a->vertex(k)->point());
+        }
+      }
       const CellHandle h = tri.Cell(static_cast<Id>(c));
       above[c] = compare(h->vertex(0)->point(), h->vertex(1)->point(), h->vertex(2)->point(),
                    h->vertex(3)->point(), levelSq) == CGAL::LARGER;
@@ -126,6 +139,14 @@ ExteriorRegions::ExteriorRegions(const Triangulation& tri, double levelSq)
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n), [&](const tbb::blocked_range<std::size_t>& r) {
     for (std::size_t c = r.begin(); c != r.end(); ++c)
     {
+      if (c + 8 < r.end() && above[c + 8])
+      {
+        const CellHandle a = tri.Cell(static_cast<Id>(c + 8));
+        for (int i = 0; i < 4; ++i)
+        {
+          __builtin_prefetch(&a->neighbor(i)->info());
+        }
+      }
       if (!above[c])
       {
         continue;
@@ -145,30 +166,50 @@ ExteriorRegions::ExteriorRegions(const Triangulation& tri, double levelSq)
       }
     }
   });
-  // Dense region ids, by smallest member (infinity last).
+  // Dense region ids in the order of the regions' smallest cells (infinity's
+  // last when it is alone), labels in place: a root, the smallest element of
+  // its component, comes before the other members, so one scan numbers the
+  // roots (as -2 - id) and the members then copy their root's label.
   this->Region.assign(n, -1);
-  std::vector<std::int32_t> id(n + 1, -1);
-  for (std::size_t c = 0; c <= n; ++c)
+  std::vector<std::int32_t>& region = this->Region;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n), [&](const tbb::blocked_range<std::size_t>& r) {
+    for (std::size_t c = r.begin(); c != r.end(); ++c)
+    {
+      if (above[c])
+      {
+        region[c] = components.Find(static_cast<std::int32_t>(c));
+      }
+    }
+  });
+  for (std::size_t c = 0; c < n; ++c)
   {
-    if (c < n && !above[c])
+    if (region[c] == static_cast<std::int32_t>(c))
     {
-      continue;
-    }
-    const std::int32_t root = components.Find(static_cast<std::int32_t>(c));
-    if (id[root] < 0)
-    {
-      id[root] = this->Count_++;
-    }
-    if (c < n)
-    {
-      this->Region[c] = id[root];
+      region[c] = -2 - this->Count_++;
       ++this->Above;
     }
-    else
+    else if (region[c] >= 0)
     {
-      this->Infinite = id[root];
+      ++this->Above;
     }
   }
+  const std::int32_t infinity = components.Find(static_cast<std::int32_t>(n));
+  this->Infinite = infinity == static_cast<std::int32_t>(n) ? this->Count_++ : -2 - region[infinity];
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n), [&](const tbb::blocked_range<std::size_t>& r) {
+    for (std::size_t c = r.begin(); c != r.end(); ++c)
+    {
+      if (region[c] >= 0)
+      {
+        region[c] = region[region[c]]; // a root's label, not changed by this pass
+      }
+    }
+  });
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n), [&](const tbb::blocked_range<std::size_t>& r) {
+    for (std::size_t c = r.begin(); c != r.end(); ++c)
+    {
+      region[c] = region[c] == -1 ? -1 : -2 - region[c];
+    }
+  });
 }
 
 } // namespace flowrecon
