@@ -1,5 +1,8 @@
 #include "ExteriorRegions.h"
 
+#include "FastPredicates.h"
+#include "HugePages.h"
+
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
@@ -18,26 +21,26 @@ class ConcurrentUnionFind
 {
 public:
   explicit ConcurrentUnionFind(std::size_t n)
-    : Parent(n)
   {
-    tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
-      this->Parent[i].store(static_cast<std::int32_t>(i), std::memory_order_relaxed);
-    });
+    ReserveHugePopulated(this->Parent, n);
+    this->Parent.resize(n);
+    tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) { this->Parent[i] = static_cast<std::int32_t>(i); });
   }
 
   std::int32_t Find(std::int32_t x)
   {
     while (true)
     {
-      std::int32_t p = this->Parent[x].load(std::memory_order_relaxed);
+      std::int32_t p = __atomic_load_n(&this->Parent[x], __ATOMIC_RELAXED);
       if (p == x)
       {
         return x;
       }
-      const std::int32_t g = this->Parent[p].load(std::memory_order_relaxed);
+      const std::int32_t g = __atomic_load_n(&this->Parent[p], __ATOMIC_RELAXED);
       if (g != p)
       {
-        this->Parent[x].compare_exchange_weak(p, g, std::memory_order_relaxed); // halving
+        // Halving; losing the race only leaves a longer path.
+        __atomic_compare_exchange_n(&this->Parent[x], &p, g, true, __ATOMIC_RELAXED, __ATOMIC_RELAXED);
       }
       x = p;
     }
@@ -59,7 +62,7 @@ public:
       }
       // Link the larger root under the smaller, if it is still a root.
       std::int32_t expected = a;
-      if (this->Parent[a].compare_exchange_strong(expected, b, std::memory_order_relaxed))
+      if (__atomic_compare_exchange_n(&this->Parent[a], &expected, b, false, __ATOMIC_RELAXED, __ATOMIC_RELAXED))
       {
         return;
       }
@@ -67,7 +70,9 @@ public:
   }
 
 private:
-  std::vector<std::atomic<std::int32_t>> Parent;
+  // Plain integers under GCC's atomic built-ins: a vector of std::atomic
+  // cannot be sized after a reserve (for huge pages).
+  std::vector<std::int32_t> Parent;
 };
 
 } // namespace
@@ -82,11 +87,12 @@ ExteriorRegions::ExteriorRegions(const Triangulation& tri, double levelSq)
   }
   const Kernel kernel;
   const auto compare = kernel.compare_squared_radius_3_object();
-  const auto side = kernel.side_of_bounded_sphere_3_object();
   const Delaunay& dt = tri.Dt();
   const std::size_t n = static_cast<std::size_t>(tri.NumberOfCells());
   // The Voronoi vertices in U_r: cells of circumradius > r.
-  std::vector<char> above(n);
+  std::vector<char> above;
+  ReserveHugePopulated(above, n);
+  above.resize(n);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n), [&](const tbb::blocked_range<std::size_t>& r) {
     for (std::size_t c = r.begin(); c != r.end(); ++c)
     {
@@ -127,7 +133,8 @@ ExteriorRegions::ExteriorRegions(const Triangulation& tri, double levelSq)
     for (const auto& [cell, apex] : { std::make_pair(c, i), std::make_pair(d, d->index(c)) })
     {
       if (!dt.is_infinite(cell->vertex(apex)) &&
-        side(*f[0], *f[1], *f[2], cell->vertex(apex)->point()) == CGAL::ON_BOUNDED_SIDE)
+        FastSideOfDiametralSphere(*f[0], *f[1], *f[2], cell->vertex(apex)->point()) ==
+          CGAL::ON_BOUNDED_SIDE)
       {
         return true;
       }
@@ -170,6 +177,7 @@ ExteriorRegions::ExteriorRegions(const Triangulation& tri, double levelSq)
   // last when it is alone), labels in place: a root, the smallest element of
   // its component, comes before the other members, so one scan numbers the
   // roots (as -2 - id) and the members then copy their root's label.
+  ReserveHugePopulated(this->Region, n);
   this->Region.assign(n, -1);
   std::vector<std::int32_t>& region = this->Region;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n), [&](const tbb::blocked_range<std::size_t>& r) {

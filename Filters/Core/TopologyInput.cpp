@@ -3,6 +3,7 @@
 #include "DeferredPatches.h"
 #include "ExteriorRegions.h"
 #include "HasseTopology.h"
+#include "HugePages.h"
 #include "MemoryGuard.h"
 
 #include <algorithm>
@@ -170,7 +171,7 @@ TopologyInput TopologyOfCappedRun(CappedReconstruction& r, std::unique_ptr<Exter
   std::vector<Arc>& raw = t.Arcs;
   raw.swap(r.RawPatchArcs);
   // One allocation for all (growing by doubling copied ~10^7 arcs twice).
-  raw.reserve(raw.size() + 2 * static_cast<std::size_t>(fc.CountByIndex()[1]) + r.Cones.size() +
+  ReserveHuge(raw, raw.size() + 2 * static_cast<std::size_t>(fc.CountByIndex()[1]) + r.Cones.size() +
     (r.Lines ? 2 * r.Lines->Nodes().size() : 0));
   AppendEdgeEnds(fc, raw);
   std::size_t cones = raw.size(); // the 2-3 arcs are the tail, by lower node
