@@ -123,7 +123,8 @@ ThresholdChoice ChooseThresholds(
   {
     choice.Window.From = rule.Lowest;
     choice.Window.To = rule.Lowest;
-    choice.ReconstructionThreshold = rule.Lowest * rule.Margin;
+    // Never past the cap: the run has nothing above it.
+    choice.ReconstructionThreshold = std::min(rule.Lowest * rule.Margin, cap);
     return choice;
   }
   const StableWindow& w = choice.Window;

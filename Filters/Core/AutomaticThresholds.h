@@ -90,7 +90,8 @@ struct ThresholdChoice
 /// The stable window with the largest b2 over every profile (one per t_p
 /// candidate, profiles up to `cap`), the longest on ties, and t_r in it;
 /// without a stable window, the longest one (Unstable() is then true). When
-/// no profile has a window above Lowest, t_r is Lowest * Margin on the first
+/// no profile has a window above Lowest, t_r is Lowest * Margin (at most the
+/// cap) on the first
 /// candidate. Throws InputError without profiles or with a cap not above Lowest.
 ThresholdChoice ChooseThresholds(const std::vector<std::vector<TopologyStep>>& profiles,
   double cap, const ThresholdRule& rule = ThresholdRule());

@@ -103,6 +103,11 @@ int main()
     CHECK(c.Window.Betti[0] == 2); // (1.5, 1.55]: a window, but not stable
     CHECK(c.Unstable());
   }
+  // No window at all: t_r 1.65, but never past the cap, where the run stops.
+  {
+    CHECK(ChooseThresholds({ std::vector<TopologyStep>() }, 6).ReconstructionThreshold == 1.5 * 1.1);
+    CHECK(ChooseThresholds({ std::vector<TopologyStep>() }, 1.6).ReconstructionThreshold == 1.6);
+  }
   // A given t_r: the t_p whose window around it is longest.
   {
     const ThresholdChoice c = ChoosePersistence({ Torus, Sphere }, 2.2, 6);

@@ -51,9 +51,11 @@
 //
 // Any InputError (non-finite coordinates, fewer than 4 distinct points,
 // coplanar points, too degenerate) is an acceptable outcome.
+#include "AutomaticThresholds.h"
 #include "CappedReconstruction.h"
 #include "CellHomology.h"
 #include "HasseTopology.h"
+#include "LocalFlatness.h"
 #include "FlowComplexBuilder.h"
 #include "Reconstruction.h"
 #include "Simplification.h"
@@ -63,6 +65,7 @@
 #include <tbb/global_control.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -427,6 +430,56 @@ extern "C" int LLVMFuzzerInitialize(int*, char***)
   return 0;
 }
 
+/// The Betti numbers `profile` gives at t_r = t (row k holds for t_r in
+/// (Threshold_k, Threshold_k+1]); false before its first row.
+bool BettiAt(const std::vector<TopologyStep>& profile, double t, std::array<Id, 3>& betti)
+{
+  bool found = false;
+  for (const TopologyStep& step : profile)
+  {
+    if (step.Threshold < t)
+    {
+      betti = { { step.Betti[0], step.Betti[1], step.Betti[2] } };
+      found = true;
+    }
+  }
+  return found;
+}
+
+/// The automatic thresholds on the profiles of a fuzzed cloud (AutomaticThresholds.h):
+/// t_r inside the chosen window, the window's Betti numbers those of the chosen
+/// profile at t_r, a stable window as long as the rule asks, the same answer
+/// twice; a given t_r picks a candidate with the Betti numbers there; the
+/// flatness of any cloud is a number in [0, 1].
+void CheckAutomatic(const std::vector<std::vector<TopologyStep>>& profiles, double cap,
+  const std::vector<Point3>& cloud)
+{
+  const ThresholdRule rule;
+  if (!(cap > rule.Lowest))
+  {
+    return;
+  }
+  const ThresholdChoice c = ChooseThresholds(profiles, cap);
+  const ThresholdChoice again = ChooseThresholds(profiles, cap);
+  REQUIRE(c.Candidate == again.Candidate && c.ReconstructionThreshold == again.ReconstructionThreshold &&
+    c.Window.From == again.Window.From && c.Window.To == again.Window.To && c.Window.Betti == again.Window.Betti);
+  REQUIRE(c.Candidate < profiles.size());
+  const double tr = c.ReconstructionThreshold;
+  REQUIRE(std::isfinite(tr) && tr > rule.Lowest && tr <= cap);
+  if (c.Window.Length() > 0)
+  {
+    REQUIRE(c.Window.From < tr && tr <= c.Window.To && c.Window.To <= cap);
+    std::array<Id, 3> betti{};
+    REQUIRE(BettiAt(profiles[c.Candidate], tr, betti) && betti == c.Window.Betti);
+    REQUIRE(c.Unstable() || c.Window.To >= rule.Stable * c.Window.From * (1 - 1e-12));
+    const ThresholdChoice p = ChoosePersistence(profiles, tr, cap);
+    std::array<Id, 3> there{};
+    REQUIRE(p.Candidate < profiles.size() && BettiAt(profiles[p.Candidate], tr, there));
+  }
+  const double flat = RelativeFlatness(cloud);
+  REQUIRE(flat >= 0 && flat <= 1);
+}
+
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {
   int flags = 0;
@@ -556,6 +609,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       for (std::size_t k = 0; k < lazy.size(); ++k)
       {
         REQUIRE(lazy[k].Threshold == full[k].Threshold && lazy[k].Betti == full[k].Betti);
+      }
+    }
+    if (fullOk)
+    {
+      // With the eager profile as a second candidate's: ties settle the same.
+      CheckAutomatic({ full }, cap, cloud);
+      if (lazyOk)
+      {
+        CheckAutomatic({ lazy, full }, cap, cloud);
       }
     }
 
