@@ -291,7 +291,7 @@ int RunReconstruct(const Arguments& args)
   options.Quiet = args.Quiet;
   options.Label = command;
   // The reconstruction draws the cells it writes by itself: the complex needs
-  // only its Hasse diagram (DESIGN.md, "Cost follows the output").
+  // only its Hasse diagram (docs/design.md, "Cost follows the output").
   options.Stable = false;
   options.Unstable = false;
   vtkSmartPointer<vtkMultiBlockDataSet> complex = LoadStoredFlowComplex(args.Input);

@@ -1,11 +1,11 @@
 #!/usr/bin/python3
-"""The README's pictures of the topology profile (issue #9): the Betti numbers
-against t_r for a clean torus (2 000 quasi-uniform points) and for a sphere
-(3 000 quasi-uniform points) whose polar cap z > 0.7 lost half of its points,
-and that sphere with the places `flowrecon reconstruct` warns about.
+"""The pictures of the topology profile in docs/concepts.md (issue #9): the
+Betti numbers against t_r for a clean torus (2 000 quasi-uniform points) and
+for a sphere (3 000 quasi-uniform points) whose polar cap z > 0.7 lost half of
+its points, and that sphere with the places `flowrecon reconstruct` warns about.
 
   /usr/bin/python3 Data/topology_pictures.py build/bin/flowrecon OUTDIR
-  (the README's copies are Data/pictures/topology_profiles.png and
+  (docs/concepts.md shows the copies Data/pictures/topology_profiles.png and
   Data/pictures/undersampled_sphere.png)
 """
 import csv

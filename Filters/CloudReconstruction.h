@@ -1,7 +1,7 @@
 // Flow Reconstruction of a point cloud straight through the core: the flow
 // complex stays in the core's compact form (a VTK copy of its Hasse diagram
 // would be most of the memory), it is exact below a cap (the patches that
-// cannot matter below it are walked only when needed, DESIGN.md "Cost follows
+// cannot matter below it are walked only when needed, docs/design.md "Cost follows
 // the output"), and only the cells written are drawn. The outputs are
 // vtkFlowReconstruction's (the tests compare the two paths). What
 // `flowrecon reconstruct` runs on a cloud.

@@ -1,4 +1,4 @@
-// The data contract's blocks and arrays (DESIGN.md §1): finding a named block,
+// The data contract's blocks and arrays (docs/data-contract.md): finding a named block,
 // making a named array, reading a required one. Shared by every conversion.
 #ifndef ContractArrays_h
 #define ContractArrays_h

@@ -1,4 +1,4 @@
-// Conversions between VTK data and the core's plain structures (DESIGN.md §1),
+// Conversions between VTK data and the core's plain structures (docs/data-contract.md),
 // one header per direction; this one gathers them for the filters and the CLI.
 #ifndef FlowComplexConversion_h
 #define FlowComplexConversion_h

@@ -1,4 +1,4 @@
-// The flow complex as the named blocks of DESIGN.md §1 (CriticalPoints,
+// The flow complex as the named blocks of docs/data-contract.md (CriticalPoints,
 // HasseDiagram, StableManifolds, UnstableManifolds, GabrielEdges) and its report
 // arrays. No geometry is computed here: only what the core built is copied.
 #ifndef FlowComplexToVTK_h

@@ -1,6 +1,6 @@
-// The names of the data contract (DESIGN.md): blocks of a flow complex and the
-// arrays every stage writes and reads. Filters, the CLI and C++ tests use these;
-// changing one changes the product.
+// The names of the data contract (docs/data-contract.md): blocks of a flow
+// complex and the arrays every stage writes and reads. Filters, the CLI and C++
+// tests use these; changing one changes the product.
 #ifndef FlowReconNames_h
 #define FlowReconNames_h
 

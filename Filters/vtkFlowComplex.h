@@ -25,7 +25,7 @@
  * whole input, rank 0 (piece 0) computes it and the other pieces are empty, so
  * the result is the same as in serial.
  *
- * The computation is exact (see flow-complex-algorithm.md): predicates use
+ * The computation is exact (see docs/algorithm.md): predicates use
  * CGAL's exact-predicates kernel, walks are interval-filtered with an exact
  * rational fallback; degenerate input is perturbed deterministically and says so.
  */

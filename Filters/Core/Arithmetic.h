@@ -1,7 +1,7 @@
 // Number types for the walks through Voronoi faces. Walk points are iterated
 // rational constructions, so predicates on them are evaluated with interval
 // arithmetic first and redone with exact rationals when an interval cannot
-// decide (flow-complex-algorithm.md §4.4).
+// decide (docs/algorithm.md §4.4).
 #ifndef flowrecon_Arithmetic_h
 #define flowrecon_Arithmetic_h
 

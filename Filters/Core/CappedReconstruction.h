@@ -1,5 +1,5 @@
 // The reconstruction of a cloud, exact below a cap T_max, whose work follows
-// what lies below the cap (DESIGN.md, "Cost follows the output"): the patches
+// what lies below the cap (docs/design.md, "Cost follows the output"): the patches
 // that cannot matter below T_max are walked only if a maximum below it
 // regularizes them (DeferredPatches.h). The eager computation is its oracle.
 #ifndef flowrecon_CappedReconstruction_h

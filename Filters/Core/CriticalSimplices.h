@@ -1,7 +1,7 @@
-// The critical points of d_P as Delaunay simplices (§2 of
-// flow-complex-algorithm.md): Gabriel edges (index 1), acute Gabriel facets
-// (index 2) and self-centred cells (index 3). Vertex indices are those of the
-// Triangulation; every list is sorted, which fixes the node order.
+// The critical points of d_P as Delaunay simplices (docs/algorithm.md §2):
+// Gabriel edges (index 1), acute Gabriel facets (index 2) and self-centred cells
+// (index 3). Vertex indices are those of the Triangulation; every list is sorted,
+// which fixes the node order.
 #ifndef flowrecon_CriticalSimplices_h
 #define flowrecon_CriticalSimplices_h
 

@@ -1,4 +1,4 @@
-// The driver of a Delaunay simplex (Lemma A of flow-complex-algorithm.md): the
+// The driver of a Delaunay simplex (Lemma A, docs/algorithm.md §1.3): the
 // face tau(sigma) whose circumcentre is the point of sigma closest to c_sigma.
 // Decided with exact predicates on the input points only (§1.6); any boundary
 // outcome means the input is not in general position and raises Degenerate.

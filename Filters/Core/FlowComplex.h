@@ -68,7 +68,7 @@ struct FlowLine
   std::vector<Point3> Points; ///< polyline; toward infinity: ends on a stub, cut at the DrawingBox
 };
 
-/// What was done about degenerate input (§2.6 of flow-complex-algorithm.md).
+/// What was done about degenerate input (docs/algorithm.md §2.3).
 struct DegeneracyReport
 {
   Id InputPoints = 0;

@@ -1,6 +1,6 @@
 // Turning raw samples into triangulation input: validation, merging of
 // duplicate points, and the deterministic perturbation used when the input is
-// not in general position (§2.6 of flow-complex-algorithm.md).
+// not in general position (docs/algorithm.md §2.3).
 #ifndef flowrecon_InputPreparation_h
 #define flowrecon_InputPreparation_h
 

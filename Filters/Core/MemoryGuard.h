@@ -1,4 +1,4 @@
-// Refusing work that would not fit (DESIGN.md: "never killed for memory"): the
+// Refusing work that would not fit (docs/design.md: "Never killed for memory"): the
 // kernel's out-of-memory killer ends a process without a word, and an address-
 // space limit turns into an uncaught allocation failure deep inside a library.
 #ifndef flowrecon_MemoryGuard_h

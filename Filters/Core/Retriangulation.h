@@ -29,7 +29,7 @@ public:
     const FlowComplex& fc, const Progress& progress, const std::string& advice);
   /// The triangulation of a stored complex's samples (the first
   /// fc.NumberOfInputPoints of fc.Points) with its stored seed: what a later
-  /// stage recomputes instead of carrying geometry (DESIGN.md, "Cost follows the
+  /// stage recomputes instead of carrying geometry (docs/design.md, "Cost follows the
   /// output"). Throws as the constructor above.
   static std::unique_ptr<Retriangulation> OfStoredComplex(
     const FlowComplex& fc, const Progress& progress, const std::string& advice);

@@ -1,5 +1,5 @@
 // The stable manifold of an index-2 critical point: the descending walk through
-// Voronoi facets of flow-complex-algorithm.md §4.2 (Giesen & John's
+// Voronoi facets of docs/algorithm.md §4.2 (Giesen & John's
 // STABLEFLOWCOMPLEX). It yields a triangulated patch and the Gabriel edges the
 // walk arrives at (the 1-2 incidences, with multiplicity).
 #ifndef flowrecon_StableManifold_h

@@ -1,4 +1,4 @@
-// Geometry on demand (DESIGN.md, "Cost follows the output"): the triangulated
+// Geometry on demand (docs/design.md, "Cost follows the output"): the triangulated
 // stable manifolds of chosen nodes only. The whole complex's geometry grows like
 // n^1.5 on samples of surfaces with tubes, while a stage outputs a small part.
 #ifndef flowrecon_StableManifoldGeometry_h

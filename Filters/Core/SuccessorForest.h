@@ -1,4 +1,4 @@
-// Unstable manifolds (§5 of flow-complex-algorithm.md): from a Voronoi vertex
+// Unstable manifolds (docs/algorithm.md §5): from a Voronoi vertex
 // c_T the future of the flow is determined, so NEXT(T) is computed once per
 // Delaunay cell (lazily, memoised) and ROOT(T) -- the maximum reached, or
 // infinity -- follows NEXT with memoisation. Without recorded polylines only

@@ -1,7 +1,7 @@
 // The primitive shared by the descending (stable manifold) and ascending
 // (unstable manifold) walks: inside the Voronoi facet V(uv), a point z on a
 // Voronoi edge V(g) moves along the line through the midpoint m of uv until a
-// link sample s becomes equidistant (flow-complex-algorithm.md §3.2).
+// link sample s becomes equidistant (docs/algorithm.md §3.2).
 //
 // Why this form: a walk point is written z = c_g + lambda * n_g, where c_g and
 // n_g (circumcentre and normal of the triangle g) depend on input points only.

@@ -28,7 +28,7 @@ if (TARGET flowrecon)
 endif ()
 
 # The output-sensitive reconstruction equals the eager one below every t_r
-# (DESIGN.md, "Cost follows the output").
+# (docs/design.md, "Cost follows the output").
 flowrecon_add_cli_python_test(py.reconstruction.lazy_equals_eager test_lazy_equals_eager.py lazy_equals_eager)
 
 # Betti numbers of reconstructions (issue #9): the printed line, the field data

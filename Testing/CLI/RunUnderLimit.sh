@@ -1,5 +1,5 @@
 #!/bin/sh
-# Memory guard test (DESIGN.md, "never killed for memory"): under an
+# Memory guard test (docs/design.md, "Never killed for memory"): under an
 # address-space limit, `flowrecon reconstruct --tr inf` of a 20000-point torus
 # surface (whose whole flow complex does not fit) must stop with exit code 1 and
 # one line giving the estimate and what to do, never abort or be killed; so

@@ -1,4 +1,4 @@
-// Invariants that hold for every point cloud (flow-complex-algorithm.md §8.1):
+// Invariants that hold for every point cloud (docs/algorithm.md §8.1):
 // Euler characteristic, boundary of boundary, monotone values along arcs, arc
 // counts, EMST inside the Gabriel graph, patches bounded by their Gabriel edges,
 // contractible total complex, determinism; on random, structured and degenerate

@@ -1,4 +1,4 @@
-// The configurations of flow-complex-algorithm.md §8.3 with their published
+// The configurations of docs/algorithm.md §8.3 with their published
 // answers (counts, critical values, incidences, stable-manifold areas and the
 // exact exit point of configuration D), and the degenerate inputs of §8.3 F
 // checked at persistence level after the builder's perturbation.

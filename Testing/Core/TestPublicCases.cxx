@@ -1,4 +1,4 @@
-// The public small cases of flow-complex-algorithm.md §8.3 E: the point sets of
+// The public small cases of docs/algorithm.md §8.3 E: the point sets of
 // UmbReTHY/flow-complex tests/test_cases/d3_*.dat, checked against the published
 // counts, critical values and incidences.
 //

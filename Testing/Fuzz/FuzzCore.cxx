@@ -1,5 +1,5 @@
 // libFuzzer target: the core pipeline on a small point cloud made from the
-// input bytes, with the invariants of DESIGN.md §3 checked after each stage
+// input bytes, with the invariants of docs/design.md §3 checked after each stage
 // (a violation aborts, which libFuzzer reports as a crash).
 //
 // Input layout (every byte string is a valid input):

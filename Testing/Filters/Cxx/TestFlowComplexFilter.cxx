@@ -1,6 +1,6 @@
-// vtkFlowComplex as a VTK user meets it: block and array names of DESIGN.md §1,
-// agreement between blocks, point-set and table input, progress events, abort,
-// a clear error on coplanar input, and a .vtm round trip.
+// vtkFlowComplex as a VTK user meets it: block and array names of
+// docs/data-contract.md, agreement between blocks, point-set and table input,
+// progress events, abort, a clear error on coplanar input, and a .vtm round trip.
 #include "Check.h"
 
 #include "vtkFlowComplex.h"

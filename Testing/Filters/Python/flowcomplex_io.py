@@ -1,6 +1,6 @@
 """Shared helpers of the Python tests: run vtkFlowComplex on a numpy point array and
 turn its output multiblock into plain numpy / Python structures, following the
-data contract of Filters/vtkFlowComplex.h and DESIGN.md §1; plus the Z/2
+data contract of Filters/vtkFlowComplex.h and docs/data-contract.md; plus the Z/2
 persistence of a Hasse diagram and a tolerant comparison of persistence diagrams.
 
 Nothing here decides what the right answer is: the tests take their expected

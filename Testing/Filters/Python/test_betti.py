@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Homotopy type of reconstructions (DESIGN.md §3): the Betti numbers over Z/2 of
+"""Homotopy type of reconstructions (docs/design.md §3): the Betti numbers over Z/2 of
 the output of vtkFlowReconstruction, at the DEFAULT parameters (t_p and t_r
 chosen from the data: the filters' defaults, not set here), equal those of the sampled set,
 on quasi-uniform samples made by Data/generate_clouds.py (farthest-point

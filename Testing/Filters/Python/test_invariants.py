@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Invariants of the flow complex that must hold on every input
-(flow-complex-algorithm.md §8.1, DESIGN.md §3), on random clouds (uniform cube,
+(docs/algorithm.md §8.1, docs/design.md §3), on random clouds (uniform cube,
 sphere, torus; 20..2000 points; several seeds) and on structured, degenerate
 ones (jittered and exact grids, cospherical points, duplicates, right angles):
 
@@ -216,7 +216,7 @@ def check_invariants(label, P, res, expectation):
         label, int((~inc).sum()),
         [(int(a), float(res.value[row[int(a)]]), int(b), float(res.value[row[int(b)]]))
          for a, b in zip(res.lower[~inc], res.upper[~inc])][:5]))
-    # Ratio = V(upper) / V(lower), never below 1 (DESIGN.md §1)
+    # Ratio = V(upper) / V(lower), never below 1 (docs/design.md §1)
     with np.errstate(divide="ignore", invalid="ignore"):
         expect_ratio = res.value[up_r] / res.value[lo_r]
     same = (res.ratio == expect_ratio) | (np.abs(res.ratio - expect_ratio) <=

@@ -4,7 +4,7 @@
 (a) Brute-force critical points of d_P on small random clouds (n <= 40): every
     subset S of 2, 3 or 4 samples whose circumcentre in aff S has positive
     barycentric coordinates and no sample strictly closer is critical of index
-    |S|-1 (flow-complex-algorithm.md §8.2). The filter must give the same nodes
+    |S|-1 (docs/algorithm.md §8.2). The filter must give the same nodes
     (index, location, value, nearest set). The brute force is itself checked
     against GUDHI (the critical simplices of the Delaunay radius function) and
     the Euler relation. Also: a patch whose three edges are Gabriel is its

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """The persistence diagram of the flow-complex filtration equals the alpha-complex
-persistence diagram computed by GUDHI (flow-complex-algorithm.md §8.2).
+persistence diagram computed by GUDHI (docs/algorithm.md §8.2).
 
 Flow-complex side (computed here, not by the filter): the finite Hasse nodes
 ordered by (value, index), the Z/2 boundary matrix from the arc multiplicities

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Plain VTK scripting with the `flowrecon` package: vtkFlowComplex in a pipeline
 after a vtkPointSource, and its output checked against the data contract of
-DESIGN.md §1 and Filters/vtkFlowComplex.h (block names and order, data types,
+docs/data-contract.md and Filters/vtkFlowComplex.h (block names and order, data types,
 array names and types, the maximum at infinity, cell kinds per index, input ids
 of the samples, options, vtkTable input, unstable manifolds vs 2->3 arcs).
 
