@@ -225,7 +225,7 @@ def check_invariants(label, P, res, expectation):
         label, int((~same).sum()), list(zip(res.lower[~same], res.upper[~same],
                                             res.ratio[~same], expect_ratio[~same]))[:5]))
     below = res.ratio < 1.0
-    CHK.check(not below.any(), "%s: %d arcs have Ratio < 1 (DESIGN.md §1: ratios are never "
+    CHK.check(not below.any(), "%s: %d arcs have Ratio < 1 (docs/design.md §1: ratios are never "
               "below 1), e.g. (lower, upper, ratio, lower value, upper value) %s" % (
                   label, int(below.sum()),
                   [(int(a), int(b), repr(float(q)), repr(float(res.value[row[int(a)]])),
