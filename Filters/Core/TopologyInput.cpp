@@ -159,12 +159,12 @@ TopologyInput TopologyOfCappedRun(CappedReconstruction& r, std::unique_ptr<Exter
     r.Lines->CompleteRawArcs(r.Cones); // what the run followed
   }
   // Memory: the raw arcs (the 1-2 ones kept, two per edge, the cones), the
-  // regions (13 bytes a cell while built: a flag, the union-find, ids,
-  // labels) and the topology's arrays after them (HasseBarcode: ~40 bytes a node).
+  // regions (9 bytes a cell while built: a flag, the union-find, the labels)
+  // and the topology's arrays after them (HasseBarcode: ~40 bytes a node).
   const double cells = r.Triangulation ? static_cast<double>(r.Triangulation->Tri().NumberOfCells()) : 0;
   RequireMemory(static_cast<double>(sizeof(Arc)) *
         static_cast<double>(r.RawPatchArcs.size() + 2 * fc.CountByIndex()[1] + r.Cones.size()) +
-      13.0 * cells + 40.0 * static_cast<double>(fc.Nodes.size()),
+      9.0 * cells + 40.0 * static_cast<double>(fc.Nodes.size()),
     "the Betti numbers of a " + std::to_string(fc.CountByIndex()[0]) + "-point cloud's reconstructions",
     "turn the topology off with given thresholds, or use fewer points");
   TopologyInput t;
