@@ -2,6 +2,7 @@
 
 #include "CompressedRows.h"
 #include "MemoryGuard.h"
+#include "Z2ColumnReduction.h"
 
 #include <tbb/parallel_sort.h>
 
@@ -166,52 +167,7 @@ void Push(std::vector<Bar>& bars, int dimension, double birth, double death, Id 
   }
 }
 
-/// Z/2 column reduction with a pivot table. Columns are sorted row ranks; the
-/// pivot is the greatest row (homology) or the least (cohomology, where the
-/// columns are coboundaries). Reduced columns are kept in one pool: millions
-/// of two- and three-entry columns would otherwise be as many allocations.
-class Reducer
-{
-public:
-  Reducer(std::size_t rows, bool cohomology)
-    : PivotColumn(rows, -1)
-    , Cohomology(cohomology)
-  {
-  }
-
-  /// Reduces `column` (sorted) against the columns reduced so far; returns its
-  /// pivot row, or -1 when it reduces to zero. A non-zero column is kept.
-  Id Reduce(std::vector<Id>& column)
-  {
-    while (!column.empty())
-    {
-      const Id low = this->Cohomology ? column.front() : column.back();
-      const Id other = this->PivotColumn[low];
-      if (other < 0)
-      {
-        this->Begin.push_back(static_cast<Id>(this->Pool.size()));
-        this->Pool.insert(this->Pool.end(), column.begin(), column.end());
-        this->Begin.push_back(static_cast<Id>(this->Pool.size()));
-        this->PivotColumn[low] = static_cast<Id>(this->Begin.size() - 2);
-        return low;
-      }
-      const Id* add = this->Pool.data() + this->Begin[other];
-      const Id* addEnd = this->Pool.data() + this->Begin[other + 1];
-      this->Sum.clear();
-      std::set_symmetric_difference(
-        column.begin(), column.end(), add, addEnd, std::back_inserter(this->Sum));
-      column.swap(this->Sum);
-    }
-    return -1;
-  }
-
-private:
-  std::vector<Id> PivotColumn; ///< position in Begin of the column with that pivot
-  std::vector<Id> Begin;       ///< each stored column: its begin and end in Pool
-  std::vector<Id> Pool;
-  std::vector<Id> Sum;
-  bool Cohomology;
-};
+using Reduction = Z2ColumnReduction<Id>;
 
 /// Cofaces by rank: for each simplex of `lower` (by rank), the ranks in `upper`
 /// of the simplices it is a face of, increasing (they are listed by rank).
@@ -241,7 +197,7 @@ void TrianglePairs(const Layer<4>& tets, const Layer<3>& triangles, std::vector<
   std::vector<char>& killer, std::vector<Bar>& bars, const Progress& progress)
 {
   const CompressedRows<Id> cofaces = Cofaces(tets, triangles);
-  Reducer reducer(tets.S.size(), true);
+  Reduction reduction(tets.S.size(), Reduction::Pivot::Least);
   born.assign(triangles.S.size(), 0);
   killer.assign(tets.S.size(), 0);
   std::vector<Id> column;
@@ -258,7 +214,7 @@ void TrianglePairs(const Layer<4>& tets, const Layer<3>& triangles, std::vector<
       continue;
     }
     column.assign(row.begin(), row.end());
-    const Id pivot = reducer.Reduce(column);
+    const Id pivot = reduction.Reduce(column);
     if (pivot >= 0)
     {
       born[r] = 1;
@@ -277,7 +233,7 @@ void TrianglePairs(const Layer<4>& tets, const Layer<3>& triangles, std::vector<
 void EdgePairs(const Layer<3>& triangles, const Layer<2>& edges, const std::vector<char>& born,
   std::vector<char>& killed, std::vector<Bar>& bars, const Progress& progress)
 {
-  Reducer reducer(edges.S.size(), false);
+  Reduction reduction(edges.S.size(), Reduction::Pivot::Greatest);
   killed.assign(edges.S.size(), 0);
   std::vector<Id> column;
   const Id n = static_cast<Id>(triangles.Order.size());
@@ -294,7 +250,7 @@ void EdgePairs(const Layer<3>& triangles, const Layer<2>& edges, const std::vect
     const Id* e = triangles.FacesOfRank(r);
     column.assign(e, e + 3);
     std::sort(column.begin(), column.end());
-    const Id pivot = reducer.Reduce(column);
+    const Id pivot = reduction.Reduce(column);
     if (pivot < 0)
     {
       Push(bars, 2, triangles.ValueOfRank(r), HUGE_VAL, triangles.CellOfRank(r), -1);

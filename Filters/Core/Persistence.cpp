@@ -2,6 +2,7 @@
 
 #include "PersistenceInput.h"
 #include "PersistenceUnionFind.h"
+#include "Z2ColumnReduction.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -13,7 +14,6 @@
 #include <atomic>
 #include <cmath>
 #include <cstdint>
-#include <iterator>
 #include <memory>
 #include <stdexcept>
 #include <utility>
@@ -72,35 +72,25 @@ std::vector<PersistencePair> ComputePersistenceByReduction(
       columns[position[a.Upper]].push_back(position[a.Lower]);
     }
   }
-  std::vector<Id> pivotOwner(order.size(), -1); // row -> column whose low it is
-  std::vector<Id> merged;
+  // Each column freed once reduced: the pool holds the reduced ones.
+  Z2ColumnReduction<Id> reduction(order.size(), Z2ColumnReduction<Id>::Pivot::Greatest);
+  std::vector<Id> pivot(order.size(), -1);
   for (std::size_t j = 0; j < columns.size(); ++j)
   {
-    std::vector<Id>& col = columns[j];
-    std::sort(col.begin(), col.end());
-    while (!col.empty() && pivotOwner[col.back()] >= 0)
-    {
-      const std::vector<Id>& other = columns[pivotOwner[col.back()]];
-      merged.clear();
-      std::set_symmetric_difference(
-        col.begin(), col.end(), other.begin(), other.end(), std::back_inserter(merged));
-      col.swap(merged);
-    }
-    if (!col.empty())
-    {
-      pivotOwner[col.back()] = static_cast<Id>(j);
-    }
+    std::sort(columns[j].begin(), columns[j].end());
+    pivot[j] = reduction.Reduce(columns[j]);
+    std::vector<Id>().swap(columns[j]);
   }
   std::vector<PersistencePair> pairs;
   std::vector<bool> killed(order.size(), false);
   for (std::size_t j = 0; j < columns.size(); ++j)
   {
-    if (!columns[j].empty())
+    if (pivot[j] >= 0)
     {
-      killed[columns[j].back()] = true;
+      killed[pivot[j]] = true;
       killed[j] = true; // a destroyer is not a creator
       PersistencePair p;
-      p.Birth = order[columns[j].back()];
+      p.Birth = order[pivot[j]];
       p.Death = order[j];
       p.Dimension = nodes[p.Birth].Index;
       p.BirthValue = nodes[p.Birth].Value;
@@ -375,51 +365,25 @@ std::vector<PersistencePair> ComputePersistence(
   }
   std::vector<std::uint64_t>().swap(signature);
 
-  // H1: column reduction of the remaining index-2 nodes in filtration order. The
-  // reduced column of each pivot is found by its row: the boundary in `rows`, or
-  // a reduced column appended to `rows`.
+  // H1: column reduction of the remaining index-2 nodes in filtration order,
+  // their boundaries in `rows`, where the reduced columns go too.
   {
-    struct Stored
-    {
-      std::int64_t Begin = 0;
-      Int Size = 0; ///< 0: the row is no pivot yet
-    };
-    std::vector<Stored> pivot(n[1]);
-    std::vector<Int> work, merged;
+    using Reduction = Z2ColumnReduction<Int>;
+    Reduction reduction(n[1], Reduction::Pivot::Greatest, &rows);
     for (std::size_t f = 0; f < n[2]; ++f)
     {
       if (faces[f] == 0)
       {
         continue; // an H2 creator (cleared), or an essential H2 class
       }
-      const Int low = rows[begin[f] + faces[f] - 1];
-      if (pivot[low].Size == 0)
+      const Int low = reduction.ReducePooled(begin[f], faces[f]);
+      if (low >= 0) // else a creator of an essential H2 class
       {
-        pivot[low] = { begin[f], faces[f] };
         paired.emplace_back(rank.Node[1][low], rank.Node[2][f]);
-        continue;
       }
-      work.assign(rows.begin() + begin[f], rows.begin() + begin[f] + faces[f]);
-      ++done.ReducedColumns;
-      while (!work.empty() && pivot[work.back()].Size > 0)
-      {
-        ++done.ColumnAdditions;
-        const Stored other = pivot[work.back()];
-        const auto o = rows.begin() + other.Begin;
-        merged.clear();
-        std::set_symmetric_difference(
-          work.begin(), work.end(), o, o + other.Size, std::back_inserter(merged));
-        work.swap(merged);
-      }
-      if (work.empty())
-      {
-        continue; // a creator of an essential H2 class
-      }
-      pivot[work.back()] = { static_cast<std::int64_t>(rows.size()),
-        static_cast<Int>(work.size()) };
-      paired.emplace_back(rank.Node[1][work.back()], rank.Node[2][f]);
-      rows.insert(rows.end(), work.begin(), work.end());
     }
+    done.ReducedColumns = reduction.NumberOfReducedColumns();
+    done.ColumnAdditions = reduction.NumberOfAdditions();
   }
 
   done.FastPath = true;
