@@ -177,96 +177,81 @@ std::uint64_t Signature(std::uint64_t level, std::uint64_t rank)
   return (z ^ (z >> 31)) | 1; // never zero
 }
 
-} // namespace
+/// The (birth node, death node) pairs as they are found.
+using FoundPairs = std::vector<std::pair<Int, Int>>;
 
-std::vector<PersistencePair> ComputePersistence(
-  const std::vector<Node>& nodes, const std::vector<Arc>& arcs, PersistenceReport* report)
+/// H0: union-find over the index-1 nodes in filtration order. Element 0 is the
+/// virtual vertex, element r + 1 the index-0 node of rank r. Returns, per
+/// index-1 node, whether it kills an H0 class.
+std::vector<std::uint8_t> PairComponents(const TwoEnds& edgeEnds, const Ranking& rank,
+  const std::array<std::size_t, 4>& n, FoundPairs& paired)
 {
-  PersistenceReport unused;
-  PersistenceReport& done = report ? *report : unused;
-  done = PersistenceReport();
-  Ranking rank;
-  if (!RankNodes(nodes, rank))
+  std::vector<std::uint8_t> killsH0(n[1], 0);
+  ElderUnionFind components(n[0] + 1);
+  for (std::size_t e = 0; e < n[1]; ++e)
   {
-    return ComputePersistenceByReduction(nodes, arcs);
+    const Int ends = edgeEnds.Size(static_cast<Int>(e));
+    if (ends == 0)
+    {
+      continue;
+    }
+    const Int a = edgeEnds.End(static_cast<Int>(e), 0) + 1;
+    const Int b = ends == 2 ? edgeEnds.End(static_cast<Int>(e), 1) + 1 : 0;
+    const Int younger = components.Merge(a, b);
+    if (younger > 0)
+    {
+      paired.emplace_back(rank.Node[0][younger - 1], rank.Node[1][e]);
+      killsH0[e] = 1;
+    }
   }
-  const std::array<std::size_t, 4> n{ { rank.Node[0].size(), rank.Node[1].size(),
-    rank.Node[2].size(), rank.Node[3].size() } };
-  const std::vector<Slot>& of = rank.Of;
+  return killsH0;
+}
 
-  // The boundaries, from one or two parallel passes over the arcs.
-  Boundaries boundaries(n);
-  const Gathering gathered = GatherBoundaries(arcs, rank, n, boundaries, done.GroupedArcs);
-  if (gathered == Gathering::MissingNode)
+/// H2: union-find on the dual graph, index-2 nodes in decreasing filtration
+/// order. Element 0 is the maximum at infinity, element n3 - r the maximum of
+/// rank r (the later a maximum, the older it is here). Returns, per index-2
+/// node, whether it creates an H2 class (that dies).
+std::vector<std::uint8_t> PairVoids(const TwoEnds& faceEnds, const Ranking& rank,
+  const std::array<std::size_t, 4>& n, FoundPairs& paired)
+{
+  const Int n3 = static_cast<Int>(n[3]);
+  std::vector<std::uint8_t> createsH2(n[2], 0);
+  ElderUnionFind regions(n[3] + 1);
+  for (std::size_t f = n[2]; f-- > 0;)
   {
-    throw std::out_of_range("persistence: an arc names a node that does not exist");
+    const Int ends = faceEnds.Size(static_cast<Int>(f));
+    if (ends == 0)
+    {
+      continue;
+    }
+    const Int a = n3 - faceEnds.End(static_cast<Int>(f), 0);
+    const Int b = ends == 2 ? n3 - faceEnds.End(static_cast<Int>(f), 1) : 0;
+    const Int younger = regions.Merge(a, b);
+    if (younger > 0)
+    {
+      paired.emplace_back(rank.Node[2][f], rank.Node[3][n3 - younger]);
+      createsH2[f] = 1;
+    }
   }
+  return createsH2;
+}
+
+/// Per index-2 node, in id order (the flow complex lists neighbours together):
+/// its faces, checked (repeated arcs; boundary of boundary zero), sorted, and
+/// cut down to the rows H1 needs (none for H2 creators, no H0 killers). The
+/// signature of its boundary goes to `signature`, for the check one level up.
+Tally TrimFaces(const std::vector<Node>& nodes, const std::vector<Arc>& arcs,
+  const Ranking& rank, const std::array<std::size_t, 4>& n,
+  const std::vector<std::uint8_t>& killsH0, const std::vector<std::uint8_t>& createsH2,
+  Boundaries& boundaries, std::vector<std::uint64_t>& signature)
+{
+  const std::vector<Slot>& of = rank.Of;
   const TwoEnds& edgeEnds = boundaries.EdgeEnds;
-  const TwoEnds& faceEnds = boundaries.FaceEnds;
-  if (gathered != Gathering::Done || !edgeEnds.Distinct() || !faceEnds.Distinct())
-  {
-    return ComputePersistenceByReduction(nodes, arcs);
-  }
   std::vector<std::int64_t>& begin = boundaries.Begin;
   std::vector<Int>& faces = boundaries.Faces;
   std::vector<Int>& rows = boundaries.Rows;
-
-  std::vector<std::pair<Int, Int>> paired; // (birth node, death node)
-  paired.reserve(n[0] + n[2] + n[3]);
-
-  // H0: union-find over the index-1 nodes in filtration order. Element 0 is the
-  // virtual vertex, element r + 1 the index-0 node of rank r.
-  std::vector<std::uint8_t> killsH0(n[1], 0);
-  {
-    ElderUnionFind components(n[0] + 1);
-    for (std::size_t e = 0; e < n[1]; ++e)
-    {
-      const Int ends = edgeEnds.Size(static_cast<Int>(e));
-      if (ends == 0)
-      {
-        continue;
-      }
-      const Int a = edgeEnds.End(static_cast<Int>(e), 0) + 1;
-      const Int b = ends == 2 ? edgeEnds.End(static_cast<Int>(e), 1) + 1 : 0;
-      const Int younger = components.Merge(a, b);
-      if (younger > 0)
-      {
-        paired.emplace_back(rank.Node[0][younger - 1], rank.Node[1][e]);
-        killsH0[e] = 1;
-      }
-    }
-  }
-
-  // H2: union-find on the dual graph, index-2 nodes in decreasing filtration
-  // order. Element 0 is the maximum at infinity, element n3 - r the maximum of
-  // rank r (the later a maximum, the older it is here).
-  const Int n3 = static_cast<Int>(n[3]);
-  std::vector<std::uint8_t> createsH2(n[2], 0);
-  {
-    ElderUnionFind regions(n[3] + 1);
-    for (std::size_t f = n[2]; f-- > 0;)
-    {
-      const Int ends = faceEnds.Size(static_cast<Int>(f));
-      if (ends == 0)
-      {
-        continue;
-      }
-      const Int a = n3 - faceEnds.End(static_cast<Int>(f), 0);
-      const Int b = ends == 2 ? n3 - faceEnds.End(static_cast<Int>(f), 1) : 0;
-      const Int younger = regions.Merge(a, b);
-      if (younger > 0)
-      {
-        paired.emplace_back(rank.Node[2][f], rank.Node[3][n3 - younger]);
-        createsH2[f] = 1;
-      }
-    }
-  }
-
-  // Per index-2 node, in id order (the flow complex lists neighbours together):
-  // its faces, checked (repeated arcs; boundary of boundary zero), sorted, and the
-  // rows H1 needs (none for H2 creators, no H0 killers). The signature of its
-  // boundary is kept for the check one level up. Per index-1 node id: the
-  // signature of its boundary, bit 0 set when it kills an H0 class.
+  // Per index-1 node id: the signature of its boundary, bit 0 set when it
+  // kills an H0 class.
   std::unique_ptr<std::uint64_t[]> edgeInfo(new std::uint64_t[nodes.size()]);
   ParallelRange(n[1], [&](std::size_t e) {
     std::uint64_t sig = 0;
@@ -276,9 +261,9 @@ std::vector<PersistencePair> ComputePersistence(
     }
     edgeInfo[rank.Node[1][e]] = (sig & ~std::uint64_t(1)) | killsH0[e];
   });
-  std::vector<std::uint64_t> signature(n[2], 0);
+  signature.assign(n[2], 0);
   const Id nodeCount = static_cast<Id>(nodes.size());
-  const Tally checked = tbb::parallel_reduce(
+  return tbb::parallel_reduce(
     tbb::blocked_range<std::size_t>(0, n[2], 1024), Tally(),
     [&](const tbb::blocked_range<std::size_t>& r, Tally t) {
       std::vector<std::uint32_t> face; // rank * 2 + (kills H0)
@@ -343,55 +328,57 @@ std::vector<PersistencePair> ComputePersistence(
       x.Join(y);
       return x;
     });
-  edgeInfo.reset();
-  if (checked.MissingNode)
+}
+
+/// The boundary of the boundary of each maximum vanishes: the signatures of
+/// its faces' boundaries cancel.
+bool BoundaryOfBoundaryOfMaximaVanishes(const TwoEnds& faceEnds,
+  const std::array<std::size_t, 4>& n, const std::vector<std::uint64_t>& signature)
+{
+  std::vector<std::uint64_t> threeDown(n[3], 0);
+  for (std::size_t f = 0; f < n[2]; ++f)
   {
-    throw std::out_of_range("persistence: an arc names a node that does not exist");
-  }
-  {
-    std::vector<std::uint64_t> threeDown(n[3], 0);
-    for (std::size_t f = 0; f < n[2]; ++f)
+    for (int k = 0; k < faceEnds.Size(static_cast<Int>(f)); ++k)
     {
-      for (int k = 0; k < faceEnds.Size(static_cast<Int>(f)); ++k)
-      {
-        threeDown[faceEnds.End(static_cast<Int>(f), k)] ^= signature[f];
-      }
-    }
-    if (!checked.Usable ||
-      std::any_of(threeDown.begin(), threeDown.end(), [](std::uint64_t x) { return x != 0; }))
-    {
-      return ComputePersistenceByReduction(nodes, arcs);
+      threeDown[faceEnds.End(static_cast<Int>(f), k)] ^= signature[f];
     }
   }
-  std::vector<std::uint64_t>().swap(signature);
+  return std::none_of(threeDown.begin(), threeDown.end(), [](std::uint64_t x) { return x != 0; });
+}
 
-  // H1: column reduction of the remaining index-2 nodes in filtration order,
-  // their boundaries in `rows`, where the reduced columns go too.
+/// H1: column reduction of the remaining index-2 nodes in filtration order,
+/// their trimmed boundaries in `boundaries.Rows`, where the reduced columns go
+/// too.
+void PairLoops(Boundaries& boundaries, const Ranking& rank, const std::array<std::size_t, 4>& n,
+  FoundPairs& paired, PersistenceReport& done)
+{
+  using Reduction = Z2ColumnReduction<Int>;
+  Reduction reduction(n[1], Reduction::Pivot::Greatest, &boundaries.Rows);
+  for (std::size_t f = 0; f < n[2]; ++f)
   {
-    using Reduction = Z2ColumnReduction<Int>;
-    Reduction reduction(n[1], Reduction::Pivot::Greatest, &rows);
-    for (std::size_t f = 0; f < n[2]; ++f)
+    if (boundaries.Faces[f] == 0)
     {
-      if (faces[f] == 0)
-      {
-        continue; // an H2 creator (cleared), or an essential H2 class
-      }
-      const Int low = reduction.ReducePooled(begin[f], faces[f]);
-      if (low >= 0) // else a creator of an essential H2 class
-      {
-        paired.emplace_back(rank.Node[1][low], rank.Node[2][f]);
-      }
+      continue; // an H2 creator (cleared), or an essential H2 class
     }
-    done.ReducedColumns = reduction.NumberOfReducedColumns();
-    done.ColumnAdditions = reduction.NumberOfAdditions();
+    const Int low = reduction.ReducePooled(boundaries.Begin[f], boundaries.Faces[f]);
+    if (low >= 0) // else a creator of an essential H2 class
+    {
+      paired.emplace_back(rank.Node[1][low], rank.Node[2][f]);
+    }
   }
+  done.ReducedColumns = reduction.NumberOfReducedColumns();
+  done.ColumnAdditions = reduction.NumberOfAdditions();
+}
 
-  done.FastPath = true;
-
-  // The pairs in their final order, dimension after dimension: births in
-  // filtration order (value, then id), then equal birth values by death value and
-  // birth id. deathOf[k][r]: what kills the class born at the index-k node of
-  // rank r (a node id; -1: nothing, an essential class; -2: this node kills).
+/// The pairs in their final order, dimension after dimension: births in
+/// filtration order (value, then id), then equal birth values by death value
+/// and birth id.
+std::vector<PersistencePair> SortedPairs(const std::vector<Node>& nodes, const Ranking& rank,
+  const std::array<std::size_t, 4>& n, FoundPairs& paired)
+{
+  const std::vector<Slot>& of = rank.Of;
+  // deathOf[k][r]: what kills the class born at the index-k node of rank r (a
+  // node id; -1: nothing, an essential class; -2: this node kills).
   std::array<std::vector<Int>, 4> deathOf;
   for (int k = 0; k < 4; ++k)
   {
@@ -402,7 +389,7 @@ std::vector<PersistencePair> ComputePersistence(
     deathOf[of[p.first].Index][of[p.first].Rank] = p.second;
     deathOf[of[p.second].Index][of[p.second].Rank] = -2;
   }
-  std::vector<std::pair<Int, Int>>().swap(paired);
+  FoundPairs().swap(paired);
   constexpr std::size_t Block = 1 << 16;
   std::array<std::vector<std::size_t>, 4> at; // output position of each block of ranks
   std::size_t total = 0;
@@ -462,6 +449,58 @@ std::vector<PersistencePair> ComputePersistence(
     i = j;
   }
   return pairs;
+}
+
+} // namespace
+
+std::vector<PersistencePair> ComputePersistence(
+  const std::vector<Node>& nodes, const std::vector<Arc>& arcs, PersistenceReport* report)
+{
+  PersistenceReport unused;
+  PersistenceReport& done = report ? *report : unused;
+  done = PersistenceReport();
+  Ranking rank;
+  if (!RankNodes(nodes, rank))
+  {
+    return ComputePersistenceByReduction(nodes, arcs);
+  }
+  const std::array<std::size_t, 4> n{ { rank.Node[0].size(), rank.Node[1].size(),
+    rank.Node[2].size(), rank.Node[3].size() } };
+
+  // The boundaries, from one or two parallel passes over the arcs.
+  Boundaries boundaries(n);
+  const Gathering gathered = GatherBoundaries(arcs, rank, n, boundaries, done.GroupedArcs);
+  if (gathered == Gathering::MissingNode)
+  {
+    throw std::out_of_range("persistence: an arc names a node that does not exist");
+  }
+  if (gathered != Gathering::Done || !boundaries.EdgeEnds.Distinct() ||
+    !boundaries.FaceEnds.Distinct())
+  {
+    return ComputePersistenceByReduction(nodes, arcs);
+  }
+
+  FoundPairs paired;
+  paired.reserve(n[0] + n[2] + n[3]);
+  const std::vector<std::uint8_t> killsH0 = PairComponents(boundaries.EdgeEnds, rank, n, paired);
+  const std::vector<std::uint8_t> createsH2 = PairVoids(boundaries.FaceEnds, rank, n, paired);
+  {
+    std::vector<std::uint64_t> signature;
+    const Tally checked =
+      TrimFaces(nodes, arcs, rank, n, killsH0, createsH2, boundaries, signature);
+    if (checked.MissingNode)
+    {
+      throw std::out_of_range("persistence: an arc names a node that does not exist");
+    }
+    if (!checked.Usable ||
+      !BoundaryOfBoundaryOfMaximaVanishes(boundaries.FaceEnds, n, signature))
+    {
+      return ComputePersistenceByReduction(nodes, arcs);
+    }
+  }
+  PairLoops(boundaries, rank, n, paired, done);
+  done.FastPath = true;
+  return SortedPairs(nodes, rank, n, paired);
 }
 
 } // namespace flowrecon
