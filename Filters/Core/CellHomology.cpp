@@ -274,39 +274,23 @@ Id Find(std::vector<Id>& parent, Id x)
   return x;
 }
 
-} // namespace
-
-std::string TooManyCells(Id cells, Id maximumCells)
+/// The simplicial complex the cells span: its simplices by dimension, each
+/// present from the least value of the cells it is a face of.
+struct CellComplex
 {
-  return "skipped for " + std::to_string(cells) + " cells, more than " +
-    std::to_string(maximumCells) + " (flowrecon --betti-max-cells, MaximumTopologyCells)";
-}
+  Layer<1> Vertices;
+  Layer<2> Edges;
+  Layer<3> Triangles;
+  Layer<4> Tetrahedra;
+};
 
-std::vector<Bar> CellBarcode(const FilteredCells& cells, const Progress& progress, Id maximumCells)
+/// Lists the cells as simplices, then their faces, down one dimension at a time.
+void ListSimplices(const FilteredCells& cells, CellComplex& complex)
 {
-  if (maximumCells >= 0 && cells.Size() > maximumCells)
-  {
-    throw InputError(TooManyCells(cells.Size(), maximumCells));
-  }
-  if (cells.Offsets.size() != cells.Values.size() + 1 || cells.Offsets.back() != static_cast<Id>(cells.Points.size()))
-  {
-    throw InputError("cell homology: inconsistent cell arrays");
-  }
-  // Every face of every cell is listed before duplicates go: 376 bytes for a
-  // tetrahedron, 152 for a triangle; then ranks and reduced columns.
-  double bytes = 0;
-  for (Id c = 0; c < cells.Size(); ++c)
-  {
-    const Id n = cells.Offsets[c + 1] - cells.Offsets[c];
-    bytes += n >= 4 ? 376 : n == 3 ? 152 : n == 2 ? 56 : 16;
-  }
-  RequireMemory(1.6 * bytes, "the Betti numbers of " + std::to_string(cells.Size()) + " cells",
-    "lower the reconstruction threshold (or MaximumThreshold)");
-  Layer<1> l0;
-  Layer<2> l1;
-  Layer<3> l2;
-  Layer<4> l3;
-  progress(0, "Betti numbers");
+  Layer<1>& l0 = complex.Vertices;
+  Layer<2>& l1 = complex.Edges;
+  Layer<3>& l2 = complex.Triangles;
+  Layer<4>& l3 = complex.Tetrahedra;
   // Reserved once: growing lists of tens of millions by doubling copied them
   // and faulted their pages in again (a third of the time on solids).
   {
@@ -355,17 +339,20 @@ std::vector<Bar> CellBarcode(const FilteredCells& cells, const Progress& progres
   l1.Finish(&l2.Faces);
   AddFaces(l1, l0);
   l0.Finish(&l1.Faces);
-  progress(0.2, "Betti numbers");
-  std::vector<Bar> bars;
+}
 
-  // H0 by union-find: an edge joining two components kills the younger one.
-  std::vector<Id> parent(l0.S.size());
+/// H0 by union-find: an edge joining two components kills the younger one.
+/// `positiveEdge` marks the edges that join none (they create H1 classes).
+void VertexPairs(const Layer<1>& vertices, const Layer<2>& edges,
+  std::vector<char>& positiveEdge, std::vector<Bar>& bars)
+{
+  std::vector<Id> parent(vertices.S.size());
   std::iota(parent.begin(), parent.end(), Id(0));
-  std::vector<char> positiveEdge(l1.S.size(), 0);
-  for (Id r = 0; r < static_cast<Id>(l1.Order.size()); ++r)
+  positiveEdge.assign(edges.S.size(), 0);
+  for (Id r = 0; r < static_cast<Id>(edges.Order.size()); ++r)
   {
-    const auto& e = l1.OfRank(r);
-    const Id* ends = l1.FacesOfRank(r);
+    const auto& e = edges.OfRank(r);
+    const Id* ends = edges.FacesOfRank(r);
     Id a = Find(parent, ends[0]), b = Find(parent, ends[1]);
     if (a == b)
     {
@@ -376,22 +363,61 @@ std::vector<Bar> CellBarcode(const FilteredCells& cells, const Progress& progres
     {
       std::swap(a, b); // b is the elder (smaller rank): it survives
     }
-    Push(bars, 0, l0.ValueOfRank(a), e.Value, l0.CellOfRank(a), e.Cell);
+    Push(bars, 0, vertices.ValueOfRank(a), e.Value, vertices.CellOfRank(a), e.Cell);
     parent[a] = b;
   }
   for (Id v = 0; v < static_cast<Id>(parent.size()); ++v)
   {
     if (Find(parent, v) == v)
     {
-      Push(bars, 0, l0.ValueOfRank(v), HUGE_VAL, l0.CellOfRank(v), -1);
+      Push(bars, 0, vertices.ValueOfRank(v), HUGE_VAL, vertices.CellOfRank(v), -1);
     }
   }
+}
+
+} // namespace
+
+std::string TooManyCells(Id cells, Id maximumCells)
+{
+  return "skipped for " + std::to_string(cells) + " cells, more than " +
+    std::to_string(maximumCells) + " (flowrecon --betti-max-cells, MaximumTopologyCells)";
+}
+
+std::vector<Bar> CellBarcode(const FilteredCells& cells, const Progress& progress, Id maximumCells)
+{
+  if (maximumCells >= 0 && cells.Size() > maximumCells)
+  {
+    throw InputError(TooManyCells(cells.Size(), maximumCells));
+  }
+  if (cells.Offsets.size() != cells.Values.size() + 1 || cells.Offsets.back() != static_cast<Id>(cells.Points.size()))
+  {
+    throw InputError("cell homology: inconsistent cell arrays");
+  }
+  // Every face of every cell is listed before duplicates go: 376 bytes for a
+  // tetrahedron, 152 for a triangle; then ranks and reduced columns.
+  double bytes = 0;
+  for (Id c = 0; c < cells.Size(); ++c)
+  {
+    const Id n = cells.Offsets[c + 1] - cells.Offsets[c];
+    bytes += n >= 4 ? 376 : n == 3 ? 152 : n == 2 ? 56 : 16;
+  }
+  RequireMemory(1.6 * bytes, "the Betti numbers of " + std::to_string(cells.Size()) + " cells",
+    "lower the reconstruction threshold (or MaximumThreshold)");
+  CellComplex complex;
+  progress(0, "Betti numbers");
+  ListSimplices(cells, complex);
+  progress(0.2, "Betti numbers");
+  std::vector<Bar> bars;
+  std::vector<char> positiveEdge;
+  VertexPairs(complex.Vertices, complex.Edges, positiveEdge, bars);
   progress(0.4, "Betti numbers");
 
   // H2 pairs by cohomology, then H1 pairs by homology with clearing.
+  const Layer<2>& l1 = complex.Edges;
+  const Layer<4>& l3 = complex.Tetrahedra;
   std::vector<char> bornTriangles, killerTetrahedra, killedEdges;
-  TrianglePairs(l3, l2, bornTriangles, killerTetrahedra, bars, progress);
-  EdgePairs(l2, l1, bornTriangles, killedEdges, bars, progress);
+  TrianglePairs(l3, complex.Triangles, bornTriangles, killerTetrahedra, bars, progress);
+  EdgePairs(complex.Triangles, l1, bornTriangles, killedEdges, bars, progress);
   for (Id r = 0; r < static_cast<Id>(l1.S.size()); ++r)
   {
     if (positiveEdge[r] && !killedEdges[r])
