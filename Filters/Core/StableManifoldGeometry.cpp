@@ -15,6 +15,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -85,11 +86,43 @@ std::vector<Id> NodesWithinBudget(
   return order;
 }
 
-void DrawStableManifolds(const std::vector<Point3>& points, const BuildOptions& options,
-  const std::vector<Id>& draw, FlowComplex& fc, const Progress& progress, const std::string& advice,
-  const std::vector<Arc>* unsimplifiedArcs, const Retriangulation* retriangulation)
+namespace
 {
-  const std::string mismatch = Retriangulation::Mismatch();
+
+/// What every step of a drawing reads: the triangulation of the samples, its
+/// critical simplices, and where their nodes start in the flow complex.
+struct DrawingContext
+{
+  const Retriangulation& Re;
+  const Triangulation& Tri;
+  const CriticalSimplices& Cs;
+  Id NumberOfFacets, NumberOfCells;
+  Id Base2, Base3; ///< node of facet 0, of cell 0
+  std::string Mismatch;
+
+  explicit DrawingContext(const Retriangulation& re)
+    : Re(re)
+    , Tri(re.Tri())
+    , Cs(re.Critical())
+    , NumberOfFacets(static_cast<Id>(re.Critical().Facets.size()))
+    , NumberOfCells(static_cast<Id>(re.Critical().Cells.size()))
+    , Base2(re.Base2())
+    , Base3(re.Base3())
+    , Mismatch(Retriangulation::Mismatch())
+  {
+  }
+};
+
+/// The index-2 facets (patches) and index-3 cells (cones) whose stable
+/// manifolds are asked for, as positions among the facets and cells, sorted.
+struct AskedCells
+{
+  std::vector<Id> Patches, Cones;
+};
+
+/// Resets fc's geometry to the samples alone, each sample node on its sample.
+void StartFromSamples(const std::vector<Point3>& points, FlowComplex& fc, const std::string& mismatch)
+{
   fc.Points = points;
   fc.NumberOfInputPoints = static_cast<Id>(points.size());
   fc.Triangles.clear();
@@ -97,7 +130,6 @@ void DrawStableManifolds(const std::vector<Point3>& points, const BuildOptions& 
   fc.Tetrahedra.clear();
   fc.TetrahedronNode.clear();
   fc.NodePoint.assign(fc.Nodes.size(), -1);
-  const std::array<Id, 4> n = fc.CountByIndex();
   for (std::size_t i = 0; i < fc.Nodes.size(); ++i)
   {
     const Node& node = fc.Nodes[i];
@@ -111,179 +143,216 @@ void DrawStableManifolds(const std::vector<Point3>& points, const BuildOptions& 
       fc.NodePoint[i] = node.Simplex[0];
     }
   }
-  std::vector<Id> patches, cones; // facet and cell positions asked for
+}
+
+AskedCells CellsAskedFor(const std::vector<Id>& draw, const FlowComplex& fc, const std::array<Id, 4>& n)
+{
+  AskedCells asked;
+  const Id base2 = n[0] + n[1], base3 = base2 + n[2];
   for (const Id node : draw)
   {
     if (node < 0 || node >= static_cast<Id>(fc.Nodes.size()) || fc.Nodes[node].IsInfinity())
     {
       continue;
     }
-    const Id base2 = n[0] + n[1], base3 = base2 + n[2];
     if (fc.Nodes[node].Index == 2)
     {
-      patches.push_back(node - base2);
+      asked.Patches.push_back(node - base2);
     }
     else if (fc.Nodes[node].Index == 3)
     {
-      cones.push_back(node - base3);
+      asked.Cones.push_back(node - base3);
     }
   }
-  std::sort(patches.begin(), patches.end());
-  patches.erase(std::unique(patches.begin(), patches.end()), patches.end());
-  std::sort(cones.begin(), cones.end());
-  cones.erase(std::unique(cones.begin(), cones.end()), cones.end());
-  if (patches.empty() && cones.empty())
+  for (std::vector<Id>* v : { &asked.Patches, &asked.Cones })
   {
-    return;
+    std::sort(v->begin(), v->end());
+    v->erase(std::unique(v->begin(), v->end()), v->end());
   }
+  return asked;
+}
 
-  std::optional<Retriangulation> own;
-  if (!retriangulation)
-  {
-    own.emplace(points, options, fc, progress, advice);
-    retriangulation = &*own;
-  }
-  const Retriangulation& re = *retriangulation;
-  if (re.Options().Seed != options.Seed || re.Options().ExactOnly != options.ExactOnly)
-  {
-    throw InputError("drawing: the triangulation was made with other options");
-  }
-  const Triangulation& tri = re.Tri();
-  const CriticalSimplices& cs = re.Critical();
-  const PreparedInput& in = re.Prepared();
-  const Id nFacets = static_cast<Id>(cs.Facets.size());
-  const Id nCells = static_cast<Id>(cs.Cells.size());
-  const Id base2 = re.Base2(), base3 = re.Base3();
-  if (base3 + nCells != fc.InfinityNode || n[2] != nFacets || n[3] != nCells)
-  {
-    throw InputError(mismatch);
-  }
-  auto sameSimplex = [&](Id node, const Id* v, int count) {
-    return re.SameSimplex(fc, node, v, count);
-  };
-  auto backScaled = [&](const Point3& p) { return re.BackScaled(p); };
+/// The boundary of each cone: the index-2 points with a flow line ending at its
+/// maximum (the 2-3 arcs of the unsimplified complex, which a simplified input
+/// no longer holds). A patch with both lines there is a fin inside the cell:
+/// left out, it would be a disc glued to the contractible cone along its rim,
+/// a void that the flow complex does not have.
+struct ConeBoundaries
+{
+  /// Per cone, its boundary facets in facet order.
+  std::vector<std::vector<Id>> Facets;
+  /// Per facet, the maxima its two flow lines reach (side 0: its cell, side 1:
+  /// the neighbour; -1: not followed): the side of each patch the cell is on.
+  std::vector<std::array<std::int32_t, 2>> Ends;
+};
 
-  // The boundary of a cone: the index-2 points with a flow line ending at its
-  // maximum (the 2-3 arcs of the unsimplified complex, which a simplified input
-  // no longer holds). A patch with both lines there is a fin inside the cell:
-  // left out, it would be a disc glued to the contractible cone along its rim,
-  // a void that the flow complex does not have.
-  std::vector<std::vector<Id>> boundary(cones.size());
-  std::vector<char> drawPatch(static_cast<std::size_t>(nFacets), 0);
-  for (const Id f : patches)
+/// Where the flow lines of the facets [0, count) of `facets` (null: of all
+/// facets) end, followed in parallel.
+void FollowFlowLines(const DrawingContext& at, Id infinity, SuccessorForest& forest,
+  const Id* facets, Id count, const Progress& progress, ConeBoundaries& cones)
+{
+  ParallelSlices(count, Id(1) << 17, progress, 0.35, 0.45, "boundaries of maxima",
+    [&](Id first, Id last) {
+      for (Id k = first; k < last; ++k)
+      {
+        const Id i = facets ? facets[k] : k;
+        const CellHandle cell = at.Tri.Cell(at.Cs.Facets[i].Cell);
+        const CellHandle sides[2] = { cell, cell->neighbor(at.Cs.Facets[i].Opposite) };
+        for (int s = 0; s < 2; ++s)
+        {
+          cones.Ends[i][s] = static_cast<std::int32_t>(at.Tri.Dt().is_infinite(sides[s])
+              ? infinity
+              : forest.Root(at.Tri.CellId(sides[s])));
+        }
+      }
+    });
+}
+
+/// The boundaries of the cones, and the facets whose patches are walked for
+/// them marked in `walk`. With the unsimplified arcs, the boundary facets are
+/// read from them and only their flow lines followed; otherwise the flow lines
+/// of every facet are.
+ConeBoundaries FindConeBoundaries(const DrawingContext& at, const FlowComplex& fc,
+  const std::vector<Id>& cones, const std::vector<Arc>* unsimplifiedArcs, bool exactOnly,
+  const Progress& progress, std::vector<char>& walk)
+{
+  ConeBoundaries boundaries;
+  boundaries.Facets.resize(cones.size());
+  if (cones.empty())
   {
-    drawPatch[f] = 1;
+    return boundaries;
   }
-  std::vector<char> walk(drawPatch);
-  // The maxima the two flow lines of each boundary facet reach (side 0: its
-  // cell, side 1: the neighbour): the side of each patch the cell is on.
-  std::vector<std::array<std::int32_t, 2>> ends;
-  std::vector<std::int32_t> maximumOfCell;
-  if (!cones.empty())
+  std::vector<std::int32_t> maximumOfCell(static_cast<std::size_t>(at.Tri.NumberOfCells()), -1);
+  for (Id i = 0; i < at.NumberOfCells; ++i)
   {
-    maximumOfCell.assign(static_cast<std::size_t>(tri.NumberOfCells()), -1);
-    for (Id i = 0; i < nCells; ++i)
-    {
-      maximumOfCell[cs.Cells[i].Cell] = static_cast<std::int32_t>(base3 + i);
-    }
-    ends.assign(static_cast<std::size_t>(nFacets), { { -1, -1 } });
+    maximumOfCell[at.Cs.Cells[i].Cell] = static_cast<std::int32_t>(at.Base3 + i);
   }
-  std::optional<SuccessorForest> forest;
-  if (!cones.empty())
+  boundaries.Ends.assign(static_cast<std::size_t>(at.NumberOfFacets), { { -1, -1 } });
+  SuccessorForest forest(at.Tri, maximumOfCell, fc.InfinityNode, 0, false, exactOnly);
+  std::vector<std::int32_t> coneOf(static_cast<std::size_t>(at.NumberOfCells), -1);
+  for (std::size_t k = 0; k < cones.size(); ++k)
   {
-    forest.emplace(tri, maximumOfCell, fc.InfinityNode, 0, false, options.ExactOnly);
+    coneOf[cones[k]] = static_cast<std::int32_t>(k);
   }
-  auto endsOf = [&](Id i) {
-    const CellHandle cell = tri.Cell(cs.Facets[i].Cell);
-    const CellHandle sides[2] = { cell, cell->neighbor(cs.Facets[i].Opposite) };
-    for (int s = 0; s < 2; ++s)
-    {
-      ends[i][s] = static_cast<std::int32_t>(
-        tri.Dt().is_infinite(sides[s]) ? fc.InfinityNode : forest->Root(tri.CellId(sides[s])));
-    }
-  };
-  if (!cones.empty() && unsimplifiedArcs)
+  if (unsimplifiedArcs)
   {
-    std::vector<std::int32_t> coneOf(static_cast<std::size_t>(nCells), -1);
-    for (std::size_t k = 0; k < cones.size(); ++k)
-    {
-      coneOf[cones[k]] = static_cast<std::int32_t>(k);
-    }
     for (const Arc& a : *unsimplifiedArcs) // grouped by lower node: facets in order
     {
-      if (a.Lower >= base2 && a.Lower < base3 && a.Upper >= base3 && a.Upper < fc.InfinityNode &&
-        coneOf[a.Upper - base3] >= 0)
+      if (a.Lower >= at.Base2 && a.Lower < at.Base3 && a.Upper >= at.Base3 &&
+        a.Upper < fc.InfinityNode && coneOf[a.Upper - at.Base3] >= 0)
       {
-        boundary[coneOf[a.Upper - base3]].push_back(a.Lower - base2);
-        walk[a.Lower - base2] = 1;
+        boundaries.Facets[coneOf[a.Upper - at.Base3]].push_back(a.Lower - at.Base2);
+        walk[a.Lower - at.Base2] = 1;
       }
     }
     std::vector<Id> boundaryFacets;
-    for (const std::vector<Id>& b : boundary)
+    for (const std::vector<Id>& b : boundaries.Facets)
     {
       boundaryFacets.insert(boundaryFacets.end(), b.begin(), b.end());
     }
     std::sort(boundaryFacets.begin(), boundaryFacets.end());
     boundaryFacets.erase(
       std::unique(boundaryFacets.begin(), boundaryFacets.end()), boundaryFacets.end());
-    ParallelSlices(static_cast<Id>(boundaryFacets.size()), Id(1) << 17, progress, 0.35, 0.45,
-      "boundaries of maxima", [&](Id first, Id last) {
-        for (Id k = first; k < last; ++k)
-        {
-          endsOf(boundaryFacets[k]);
-        }
-      });
+    FollowFlowLines(at, fc.InfinityNode, forest, boundaryFacets.data(),
+      static_cast<Id>(boundaryFacets.size()), progress, boundaries);
   }
-  else if (!cones.empty())
+  else
   {
-    std::vector<std::int32_t> coneOf(static_cast<std::size_t>(nCells), -1);
-    for (std::size_t k = 0; k < cones.size(); ++k)
-    {
-      coneOf[cones[k]] = static_cast<std::int32_t>(k);
-    }
-    ParallelSlices(nFacets, Id(1) << 17, progress, 0.35, 0.45, "boundaries of maxima",
-      [&](Id first, Id last) {
-        for (Id i = first; i < last; ++i)
-        {
-          endsOf(i);
-        }
-      });
-    for (Id i = 0; i < nFacets; ++i)
+    FollowFlowLines(at, fc.InfinityNode, forest, nullptr, at.NumberOfFacets, progress, boundaries);
+    for (Id i = 0; i < at.NumberOfFacets; ++i)
     {
       for (int s = 0; s < 2; ++s)
       {
-        const std::int32_t e = ends[i][s];
-        if (s == 1 && e == ends[i][0])
+        const std::int32_t e = boundaries.Ends[i][s];
+        if (s == 1 && e == boundaries.Ends[i][0])
         {
           break; // a fin: once in the cone
         }
-        if (e != fc.InfinityNode && coneOf[e - base3] >= 0)
+        if (e != fc.InfinityNode && coneOf[e - at.Base3] >= 0)
         {
-          boundary[coneOf[e - base3]].push_back(i);
+          boundaries.Facets[coneOf[e - at.Base3]].push_back(i);
           walk[i] = 1;
         }
       }
     }
   }
-
-  for (std::vector<Id>& b : boundary)
+  for (std::vector<Id>& b : boundaries.Facets)
   {
     std::sort(b.begin(), b.end()); // facet order, however the arcs came
   }
+  return boundaries;
+}
 
-  // Walks in parallel chunks, merged in facet order (deterministic).
+/// Triangles of every walked patch, kept for the cones only (without cones
+/// they would copy fc.Triangles: 24 B per drawn triangle).
+struct WalkedPatches
+{
+  std::vector<std::array<Id, 3>> Triangles;
+  /// Per facet: its patch is Triangles[Begin[f], End[f]).
+  std::vector<Id> Begin, End;
+};
+
+/// Moves the walked patch of facet f into fc (its constructed points, and its
+/// triangles when drawn) and into `walked` (its triangles, when kept).
+void AddPatch(const DrawingContext& at, Id f, Patch& patch, bool drawn, bool keep,
+  FlowComplex& fc, WalkedPatches& walked)
+{
+  const Id node = at.Base2 + f;
+  const Id v[3] = { at.Cs.Facets[f].Vertices[0], at.Cs.Facets[f].Vertices[1],
+    at.Cs.Facets[f].Vertices[2] };
+  if (!at.Re.SameSimplex(fc, node, v, 3))
+  {
+    throw InputError(at.Mismatch);
+  }
+  const auto& inputId = at.Re.Prepared().InputId;
+  const Id offset = static_cast<Id>(fc.Points.size());
+  for (const Point3& p : patch.Constructed)
+  {
+    fc.Points.push_back(at.Re.BackScaled(p));
+  }
+  fc.NodePoint[node] = offset; // Constructed[0] is the critical point
+  walked.Begin[f] = static_cast<Id>(walked.Triangles.size());
+  for (const auto& t : patch.Triangles)
+  {
+    std::array<Id, 3> w;
+    for (int j = 0; j < 3; ++j)
+    {
+      w[j] = t[j] >= 0 ? inputId[t[j]] : offset + (-1 - t[j]);
+    }
+    if (keep)
+    {
+      walked.Triangles.push_back(w);
+    }
+    if (drawn)
+    {
+      fc.Triangles.push_back(w);
+      fc.TriangleNode.push_back(node);
+    }
+  }
+  walked.End[f] = static_cast<Id>(walked.Triangles.size());
+  patch = Patch();
+}
+
+/// Walks the patches of the facets marked in `walk` (in parallel chunks, merged
+/// in facet order: deterministic), draws those marked in `drawPatch`, and keeps
+/// them all for the cones when there are cones. Refuses, from the first chunk
+/// on, a drawing that would not fit in memory.
+WalkedPatches WalkPatches(const DrawingContext& at, const std::vector<char>& walk,
+  const std::vector<char>& drawPatch, const AskedCells& asked, std::size_t numberOfPoints,
+  bool exactOnly, FlowComplex& fc, const Progress& progress, const std::string& advice)
+{
   std::vector<Id> facets;
-  for (Id i = 0; i < nFacets; ++i)
+  for (Id i = 0; i < at.NumberOfFacets; ++i)
   {
     if (walk[i])
     {
       facets.push_back(i);
     }
   }
-  std::vector<Id> patchBegin(static_cast<std::size_t>(nFacets) + 1, -1), patchEnd(patchBegin);
-  // Triangles of every walked patch, kept for the cones only (without cones
-  // they would copy fc.Triangles: 24 B per drawn triangle).
-  std::vector<std::array<Id, 3>> walked;
+  const bool keep = !asked.Cones.empty();
+  WalkedPatches walked;
+  walked.Begin.assign(static_cast<std::size_t>(at.NumberOfFacets) + 1, -1);
+  walked.End = walked.Begin;
   Id walkedCount = 0;
   // A small first chunk: the guard below predicts from it before much is drawn.
   std::size_t chunk = 512;
@@ -299,56 +368,23 @@ void DrawStableManifolds(const std::vector<Point3>& points, const BuildOptions& 
       [&](const tbb::blocked_range<std::size_t>& r) {
         for (std::size_t k = r.begin(); k != r.end(); ++k)
         {
-          batch[k - begin] = ComputeStableManifold(
-            tri, cs, static_cast<std::size_t>(facets[k]), true, batchFallbacks[k - begin],
-            options.ExactOnly);
+          batch[k - begin] = ComputeStableManifold(at.Tri, at.Cs,
+            static_cast<std::size_t>(facets[k]), true, batchFallbacks[k - begin], exactOnly);
         }
       });
     for (std::size_t k = begin; k < last; ++k)
     {
-      const Id f = facets[k];
-      const Id node = base2 + f;
-      const Id v[3] = { cs.Facets[f].Vertices[0], cs.Facets[f].Vertices[1], cs.Facets[f].Vertices[2] };
-      if (!sameSimplex(node, v, 3))
-      {
-        throw InputError(mismatch);
-      }
-      Patch& patch = batch[k - begin];
       fallbacks += batchFallbacks[k - begin];
-      const Id offset = static_cast<Id>(fc.Points.size());
-      for (const Point3& p : patch.Constructed)
-      {
-        fc.Points.push_back(backScaled(p));
-      }
-      fc.NodePoint[node] = offset; // Constructed[0] is the critical point
-      patchBegin[f] = static_cast<Id>(walked.size());
-      walkedCount += static_cast<Id>(patch.Triangles.size());
-      for (const auto& t : patch.Triangles)
-      {
-        std::array<Id, 3> w;
-        for (int j = 0; j < 3; ++j)
-        {
-          w[j] = t[j] >= 0 ? in.InputId[t[j]] : offset + (-1 - t[j]);
-        }
-        if (!cones.empty())
-        {
-          walked.push_back(w);
-        }
-        if (drawPatch[f])
-        {
-          fc.Triangles.push_back(w);
-          fc.TriangleNode.push_back(node);
-        }
-      }
-      patchEnd[f] = static_cast<Id>(walked.size());
-      patch = Patch();
+      walkedCount += static_cast<Id>(batch[k - begin].Triangles.size());
+      AddPatch(at, facets[k], batch[k - begin], drawPatch[facets[k]] != 0, keep, fc, walked);
     }
     // The drawing so far predicts the rest: refuse before it no longer fits.
     const double perFacet = static_cast<double>(walkedCount) / static_cast<double>(last);
     RequireMemory(BytesPerCell * perFacet * static_cast<double>(facets.size() - last) *
-        (cones.empty() ? 1.0 : 2.0),
-      "drawing the stable manifolds of " + std::to_string(patches.size() + cones.size()) +
-        " nodes of a " + std::to_string(points.size()) + "-point cloud",
+        (keep ? 2.0 : 1.0),
+      "drawing the stable manifolds of " +
+        std::to_string(asked.Patches.size() + asked.Cones.size()) + " nodes of a " +
+        std::to_string(numberOfPoints) + "-point cloud",
       advice);
     if (begin == 0 && last < facets.size())
     {
@@ -359,41 +395,95 @@ void DrawStableManifolds(const std::vector<Point3>& points, const BuildOptions& 
       auto room = [&](auto& v, std::size_t fixed) {
         v.reserve(fixed + static_cast<std::size_t>(scale * static_cast<double>(v.size() - fixed)));
       };
-      room(fc.Points, points.size());
+      room(fc.Points, numberOfPoints);
       room(fc.Triangles, 0);
       room(fc.TriangleNode, 0);
-      room(walked, 0);
+      room(walked.Triangles, 0);
     }
   }
   fc.Report.ExactFallbacks += fallbacks;
+  return walked;
+}
 
-  progress(0.95, "index-3 cones");
+/// The tetrahedra of each cone: from its maximum over its boundary patches,
+/// each turned to face into the cell (fins two-sided).
+void AppendCones(const DrawingContext& at, const std::vector<Id>& cones,
+  const ConeBoundaries& boundaries, const WalkedPatches& walked, FlowComplex& fc)
+{
   ConeBoundary coneBoundary;
   for (std::size_t k = 0; k < cones.size(); ++k)
   {
-    const Id node = base3 + cones[k];
-    const Id v[4] = { cs.Cells[cones[k]].Vertices[0], cs.Cells[cones[k]].Vertices[1],
-      cs.Cells[cones[k]].Vertices[2], cs.Cells[cones[k]].Vertices[3] };
-    if (!sameSimplex(node, v, 4))
+    const Id node = at.Base3 + cones[k];
+    const Id v[4] = { at.Cs.Cells[cones[k]].Vertices[0], at.Cs.Cells[cones[k]].Vertices[1],
+      at.Cs.Cells[cones[k]].Vertices[2], at.Cs.Cells[cones[k]].Vertices[3] };
+    if (!at.Re.SameSimplex(fc, node, v, 4))
     {
-      throw InputError(mismatch);
+      throw InputError(at.Mismatch);
     }
     const Id apex = static_cast<Id>(fc.Points.size());
     fc.NodePoint[node] = apex;
     fc.Points.push_back(fc.Nodes[node].Location);
     coneBoundary.Clear();
-    for (const Id f : boundary[k])
+    for (const Id f : boundaries.Facets[k])
     {
-      const bool fin = ends[f][0] == ends[f][1];
-      const int faces = PatchFacesSide(tri, cs, static_cast<std::size_t>(f));
-      coneBoundary.Add(walked.data() + patchBegin[f], walked.data() + patchEnd[f],
-        !fin && ends[f][faces] != node, fin);
+      const std::array<std::int32_t, 2>& ends = boundaries.Ends[f];
+      const bool fin = ends[0] == ends[1];
+      const int faces = PatchFacesSide(at.Tri, at.Cs, static_cast<std::size_t>(f));
+      coneBoundary.Add(walked.Triangles.data() + walked.Begin[f],
+        walked.Triangles.data() + walked.End[f], !fin && ends[faces] != node, fin);
     }
     fc.TetrahedronNode.insert(fc.TetrahedronNode.end(),
       static_cast<std::size_t>(AppendCone(
         apex, coneBoundary.Triangles, fc.Points, fc.Tetrahedra, &coneBoundary.TwoSided)),
       node);
   }
+}
+
+} // namespace
+
+void DrawStableManifolds(const std::vector<Point3>& points, const BuildOptions& options,
+  const std::vector<Id>& draw, FlowComplex& fc, const Progress& progress, const std::string& advice,
+  const std::vector<Arc>* unsimplifiedArcs, const Retriangulation* retriangulation)
+{
+  StartFromSamples(points, fc, Retriangulation::Mismatch());
+  const std::array<Id, 4> n = fc.CountByIndex();
+  const AskedCells asked = CellsAskedFor(draw, fc, n);
+  if (asked.Patches.empty() && asked.Cones.empty())
+  {
+    return;
+  }
+
+  std::optional<Retriangulation> own;
+  if (!retriangulation)
+  {
+    own.emplace(points, options, fc, progress, advice);
+    retriangulation = &*own;
+  }
+  const DrawingContext at(*retriangulation);
+  if (at.Re.Options().Seed != options.Seed || at.Re.Options().ExactOnly != options.ExactOnly)
+  {
+    throw InputError("drawing: the triangulation was made with other options");
+  }
+  if (at.Base3 + at.NumberOfCells != fc.InfinityNode || n[2] != at.NumberOfFacets ||
+    n[3] != at.NumberOfCells)
+  {
+    throw InputError(at.Mismatch);
+  }
+
+  // The patches asked for, and those the cones' boundaries need.
+  std::vector<char> drawPatch(static_cast<std::size_t>(at.NumberOfFacets), 0);
+  for (const Id f : asked.Patches)
+  {
+    drawPatch[f] = 1;
+  }
+  std::vector<char> walk(drawPatch);
+  const ConeBoundaries boundaries = FindConeBoundaries(
+    at, fc, asked.Cones, unsimplifiedArcs, options.ExactOnly, progress, walk);
+  const WalkedPatches walked = WalkPatches(
+    at, walk, drawPatch, asked, points.size(), options.ExactOnly, fc, progress, advice);
+
+  progress(0.95, "index-3 cones");
+  AppendCones(at, asked.Cones, boundaries, walked, fc);
   progress(1.0, "stable manifolds");
 }
 
