@@ -137,16 +137,80 @@ std::vector<std::size_t> SheetsAroundEdge(const std::vector<Point3>& points,
   return first;
 }
 
-Id AppendCone(Id apex, const std::vector<std::array<Id, 3>>& boundary,
-  std::vector<Point3>& points, std::vector<std::array<Id, 4>>& tetrahedra,
-  const std::vector<char>* twoSided)
+namespace
 {
-  const std::size_t first = tetrahedra.size();
-  for (const auto& t : boundary)
-  {
-    tetrahedra.push_back({ { apex, t[0], t[1], t[2] } });
-  }
 
+/// A boundary point whose link in the boundary has several components: the
+/// triangles (positions in the boundary) of each of its sheets.
+struct Pinch
+{
+  Id P;
+  std::vector<std::vector<std::size_t>> Sheets;
+};
+
+/// Joins in `sheet` the triangles at p (corners[begin, end), all at p) through
+/// their edges (p, x); where more than two triangles share an edge (p, x), only
+/// those of one sheet around it (SheetsAroundEdge). Returns the number of
+/// sheets. `around` and `shared` are scratch space.
+std::size_t JoinSheetsAt(const std::vector<Point3>& points,
+  const std::vector<std::array<Id, 3>>& boundary, const std::vector<char>* twoSided,
+  const std::vector<std::pair<Id, Id>>& corners, std::size_t begin, std::size_t end,
+  ElderUnionFind& sheet, std::vector<std::pair<Id, Id>>& around, std::vector<std::size_t>& shared)
+{
+  const Id p = corners[begin].first;
+  around.clear(); // (x, local triangle) for each edge (p, x)
+  for (std::size_t k = begin; k < end; ++k)
+  {
+    for (const Id x : boundary[corners[k].second])
+    {
+      if (x != p)
+      {
+        around.emplace_back(x, static_cast<Id>(k - begin));
+      }
+    }
+  }
+  std::sort(around.begin(), around.end());
+  std::size_t components = end - begin;
+  for (std::size_t i = 0; i < around.size();)
+  {
+    std::size_t j = i + 1;
+    while (j < around.size() && around[j].first == around[i].first)
+    {
+      ++j;
+    }
+    std::vector<std::size_t> firstOfSheet;
+    if (j - i > 2)
+    {
+      shared.clear();
+      for (std::size_t k = i; k < j; ++k)
+      {
+        shared.push_back(static_cast<std::size_t>(corners[begin + around[k].second].second));
+      }
+      firstOfSheet = SheetsAroundEdge(points, boundary, twoSided, p, around[i].first, shared);
+    }
+    for (std::size_t k = i + 1; k < j; ++k)
+    {
+      const std::size_t other = firstOfSheet.empty() ? i : i + firstOfSheet[k - i];
+      const auto a = static_cast<std::int32_t>(around[k].second);
+      const auto b = static_cast<std::int32_t>(around[other].second);
+      if (sheet.Merge(a, b) >= 0)
+      {
+        --components;
+      }
+    }
+    i = j;
+  }
+  return components;
+}
+
+/// The points of the boundary with several sheets, each with its sheets: its
+/// triangles joined through their edges (p, x), that is the components of p's
+/// link. The sheets of one point do not depend on the splits at others, so
+/// these points are all found first and split afterwards in an order of the
+/// geometry.
+std::vector<Pinch> FindPinches(const std::vector<Point3>& points,
+  const std::vector<std::array<Id, 3>>& boundary, const std::vector<char>* twoSided)
+{
   // Corners (vertex, triangle) sorted by vertex id: the star of each boundary point.
   std::vector<std::pair<Id, Id>> corners;
   corners.reserve(3 * boundary.size());
@@ -159,18 +223,8 @@ Id AppendCone(Id apex, const std::vector<std::array<Id, 3>>& boundary,
   }
   std::sort(corners.begin(), corners.end());
 
-  // The sheets at p: its triangles joined through their edges (p, x), that is
-  // the components of p's link; where more than two triangles share an edge
-  // (p, x), only those of one sheet around it are joined. The sheets of one
-  // point do not depend on the splits at others, so the points with several
-  // sheets are found first and split afterwards in an order of the geometry.
-  struct Pinch
-  {
-    Id P;
-    std::vector<std::vector<std::size_t>> Sheets;
-  };
   std::vector<Pinch> pinches;
-  std::vector<std::pair<Id, Id>> around; // (x, local triangle) for each edge (p, x)
+  std::vector<std::pair<Id, Id>> around;
   std::vector<std::size_t> shared;
   std::vector<Id> sheetOfRoot;
   for (std::size_t begin = 0; begin < corners.size();)
@@ -181,50 +235,8 @@ Id AppendCone(Id apex, const std::vector<std::array<Id, 3>>& boundary,
     {
       ++end;
     }
-    around.clear();
-    for (std::size_t k = begin; k < end; ++k)
-    {
-      for (const Id x : boundary[corners[k].second])
-      {
-        if (x != p)
-        {
-          around.emplace_back(x, static_cast<Id>(k - begin));
-        }
-      }
-    }
-    std::sort(around.begin(), around.end());
     ElderUnionFind sheet(end - begin);
-    std::size_t components = end - begin;
-    for (std::size_t i = 0; i < around.size();)
-    {
-      std::size_t j = i + 1;
-      while (j < around.size() && around[j].first == around[i].first)
-      {
-        ++j;
-      }
-      std::vector<std::size_t> firstOfSheet;
-      if (j - i > 2)
-      {
-        shared.clear();
-        for (std::size_t k = i; k < j; ++k)
-        {
-          shared.push_back(static_cast<std::size_t>(corners[begin + around[k].second].second));
-        }
-        firstOfSheet = SheetsAroundEdge(points, boundary, twoSided, p, around[i].first, shared);
-      }
-      for (std::size_t k = i + 1; k < j; ++k)
-      {
-        const std::size_t other = firstOfSheet.empty() ? i : i + firstOfSheet[k - i];
-        const auto a = static_cast<std::int32_t>(around[k].second);
-        const auto b = static_cast<std::int32_t>(around[other].second);
-        if (sheet.Merge(a, b) >= 0)
-        {
-          --components;
-        }
-      }
-      i = j;
-    }
-    if (components > 1)
+    if (JoinSheetsAt(points, boundary, twoSided, corners, begin, end, sheet, around, shared) > 1)
     {
       Pinch pinch{ p, {} };
       sheetOfRoot.assign(end - begin, -1);
@@ -242,6 +254,114 @@ Id AppendCone(Id apex, const std::vector<std::array<Id, 3>>& boundary,
     }
     begin = end;
   }
+  return pinches;
+}
+
+/// The least triangle of a sheet by sorted corner coordinates: an order of the
+/// geometry, not of the triangles, which follows the numbering of the input.
+std::array<Point3, 3> LeastTriangle(const std::vector<Point3>& points,
+  const std::vector<std::array<Id, 3>>& boundary, const std::vector<std::size_t>& sheetTriangles)
+{
+  std::array<Point3, 3> least;
+  bool firstTriangle = true;
+  for (const std::size_t t : sheetTriangles)
+  {
+    std::array<Point3, 3> c{ { points[boundary[t][0]], points[boundary[t][1]],
+      points[boundary[t][2]] } };
+    std::sort(c.begin(), c.end());
+    if (firstTriangle || c < least)
+    {
+      least = c;
+      firstTriangle = false;
+    }
+  }
+  return least;
+}
+
+/// Splits the cone at a pinched point p: the sheet that keeps the apex is the
+/// least by geometry; each other sheet gets a point m of its own on the segment
+/// from the apex towards it, and its tetrahedra holding the edge (apex, p) are
+/// subdivided there. `tetsOfTriangle`: the tetrahedra of each boundary triangle.
+void SplitAtPinch(const std::vector<std::array<Id, 3>>& boundary, Id apex, Pinch& pinch,
+  std::vector<Point3>& points, std::vector<std::array<Id, 4>>& tetrahedra,
+  std::vector<std::vector<std::size_t>>& tetsOfTriangle)
+{
+  const Id p = pinch.P;
+  std::vector<std::vector<std::size_t>>& sheets = pinch.Sheets;
+  for (std::vector<std::size_t>& sheetTriangles : sheets)
+  {
+    // Sums over a sheet (its middle) in an order of the geometry too.
+    std::sort(sheetTriangles.begin(), sheetTriangles.end(), [&](std::size_t a, std::size_t b) {
+      return LeastTriangle(points, boundary, { a }) < LeastTriangle(points, boundary, { b });
+    });
+  }
+  std::vector<std::pair<std::array<Point3, 3>, std::size_t>> order;
+  for (std::size_t s = 0; s < sheets.size(); ++s)
+  {
+    order.emplace_back(LeastTriangle(points, boundary, sheets[s]), s);
+  }
+  std::sort(order.begin(), order.end());
+  for (std::size_t o = 1; o < order.size(); ++o)
+  {
+    const std::vector<std::size_t>& sheetTriangles = sheets[order[o].second];
+    // The new point: halfway from the apex to the sheet's middle near p, so
+    // that it is inside this sheet's part of the cone.
+    Point3 middle = points[p];
+    Id near = 1;
+    for (const std::size_t t : sheetTriangles)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        if (boundary[t][c] != p)
+        {
+          for (int j = 0; j < 3; ++j)
+            middle[j] += points[boundary[t][c]][j];
+          ++near;
+        }
+      }
+    }
+    const Id m = static_cast<Id>(points.size());
+    Point3 q;
+    for (int j = 0; j < 3; ++j)
+    {
+      q[j] = 0.5 * points[apex][j] + 0.5 * (0.5 * points[p][j] + 0.5 * middle[j] / static_cast<double>(near));
+    }
+    points.push_back(q);
+    // Every tetrahedron of these triangles that holds the edge (apex, p)
+    // becomes two: (m, p, x, y) and (apex, m, x, y). Tetrahedra keep the apex
+    // first, so later splits at another corner find it.
+    for (const std::size_t t : sheetTriangles)
+    {
+      const std::size_t count = tetsOfTriangle[t].size();
+      for (std::size_t i = 0; i < count; ++i)
+      {
+        const std::size_t k = tetsOfTriangle[t][i];
+        std::array<Id, 4> tet = tetrahedra[k];
+        if (tet[0] != apex || std::find(tet.begin() + 1, tet.end(), p) == tet.end())
+        {
+          continue;
+        }
+        tetrahedra[k][0] = m;
+        std::replace(tet.begin() + 1, tet.end(), p, m);
+        tetsOfTriangle[t].push_back(tetrahedra.size());
+        tetrahedra.push_back(tet);
+      }
+    }
+  }
+}
+
+} // namespace
+
+Id AppendCone(Id apex, const std::vector<std::array<Id, 3>>& boundary,
+  std::vector<Point3>& points, std::vector<std::array<Id, 4>>& tetrahedra,
+  const std::vector<char>* twoSided)
+{
+  const std::size_t first = tetrahedra.size();
+  for (const auto& t : boundary)
+  {
+    tetrahedra.push_back({ { apex, t[0], t[1], t[2] } });
+  }
+  std::vector<Pinch> pinches = FindPinches(points, boundary, twoSided);
   if (pinches.empty())
   {
     return static_cast<Id>(boundary.size());
@@ -253,25 +373,6 @@ Id AppendCone(Id apex, const std::vector<std::array<Id, 3>>& boundary,
   std::sort(pinches.begin(), pinches.end(), [&points](const Pinch& a, const Pinch& b) {
     return points[a.P] != points[b.P] ? points[a.P] < points[b.P] : a.P < b.P;
   });
-  // The sheet that keeps the apex, and the order of the others, by their
-  // geometry (the least triangle by sorted corner coordinates), not by the
-  // order of the triangles, which follows the numbering of the input.
-  const auto key = [&](const std::vector<std::size_t>& sheetTriangles) {
-    std::array<Point3, 3> least;
-    bool firstTriangle = true;
-    for (const std::size_t t : sheetTriangles)
-    {
-      std::array<Point3, 3> c{ { points[boundary[t][0]], points[boundary[t][1]],
-        points[boundary[t][2]] } };
-      std::sort(c.begin(), c.end());
-      if (firstTriangle || c < least)
-      {
-        least = c;
-        firstTriangle = false;
-      }
-    }
-    return least;
-  };
   std::vector<std::vector<std::size_t>> tetsOfTriangle(boundary.size());
   for (std::size_t t = 0; t < boundary.size(); ++t)
   {
@@ -279,67 +380,7 @@ Id AppendCone(Id apex, const std::vector<std::array<Id, 3>>& boundary,
   }
   for (Pinch& pinch : pinches)
   {
-    const Id p = pinch.P;
-    std::vector<std::vector<std::size_t>>& sheets = pinch.Sheets;
-    for (std::vector<std::size_t>& sheetTriangles : sheets)
-    {
-      // Sums over a sheet (its middle) in an order of the geometry too.
-      std::sort(sheetTriangles.begin(), sheetTriangles.end(),
-        [&](std::size_t a, std::size_t b) { return key({ a }) < key({ b }); });
-    }
-    std::vector<std::pair<std::array<Point3, 3>, std::size_t>> order;
-    for (std::size_t s = 0; s < sheets.size(); ++s)
-    {
-      order.emplace_back(key(sheets[s]), s);
-    }
-    std::sort(order.begin(), order.end());
-    for (std::size_t o = 1; o < order.size(); ++o)
-    {
-      const std::vector<std::size_t>& sheetTriangles = sheets[order[o].second];
-      // The new point: halfway from the apex to the sheet's middle near p, so
-      // that it is inside this sheet's part of the cone.
-      Point3 middle = points[p];
-      Id near = 1;
-      for (const std::size_t t : sheetTriangles)
-      {
-        for (int c = 0; c < 3; ++c)
-        {
-          if (boundary[t][c] != p)
-          {
-            for (int j = 0; j < 3; ++j)
-              middle[j] += points[boundary[t][c]][j];
-            ++near;
-          }
-        }
-      }
-      const Id m = static_cast<Id>(points.size());
-      Point3 q;
-      for (int j = 0; j < 3; ++j)
-      {
-        q[j] = 0.5 * points[apex][j] + 0.5 * (0.5 * points[p][j] + 0.5 * middle[j] / static_cast<double>(near));
-      }
-      points.push_back(q);
-      // Every tetrahedron of these triangles that holds the edge (apex, p)
-      // becomes two: (m, p, x, y) and (apex, m, x, y). Tetrahedra keep the apex
-      // first, so later splits at another corner find it.
-      for (const std::size_t t : sheetTriangles)
-      {
-        const std::size_t count = tetsOfTriangle[t].size();
-        for (std::size_t i = 0; i < count; ++i)
-        {
-          const std::size_t k = tetsOfTriangle[t][i];
-          std::array<Id, 4> tet = tetrahedra[k];
-          if (tet[0] != apex || std::find(tet.begin() + 1, tet.end(), p) == tet.end())
-          {
-            continue;
-          }
-          tetrahedra[k][0] = m;
-          std::replace(tet.begin() + 1, tet.end(), p, m);
-          tetsOfTriangle[t].push_back(tetrahedra.size());
-          tetrahedra.push_back(tet);
-        }
-      }
-    }
+    SplitAtPinch(boundary, apex, pinch, points, tetrahedra, tetsOfTriangle);
   }
   return static_cast<Id>(tetrahedra.size() - first);
 }
