@@ -90,6 +90,18 @@ void AddThresholds(const InputPersistence& tp, double tr, const flowrecon::Thres
   flowrecon::ThresholdWarningsToVTK(lines, grid);
 }
 
+/// What every early return leaves: every output empty.
+void EmptyOutputs(vtkInformationVector* outputVector)
+{
+  for (int port = 0; port < outputVector->GetNumberOfInformationObjects(); ++port)
+  {
+    if (vtkDataObject* output = vtkDataObject::GetData(outputVector, port))
+    {
+      output->Initialize();
+    }
+  }
+}
+
 } // namespace
 
 /// The t_r = infinity run of one input and what the outputs need from it.
@@ -125,6 +137,13 @@ struct vtkFlowReconstruction::Cache
   vtkSmartPointer<vtkTable> Profile;
 };
 
+/// The t_r shown, and the automatic choice that gave it (when Chosen).
+struct vtkFlowReconstruction::Selection
+{
+  double Threshold = 0;
+  bool Chosen = false;
+  flowrecon::ThresholdChoice Choice;
+};
 
 vtkStandardNewMacro(vtkFlowReconstruction);
 
@@ -162,102 +181,30 @@ int vtkFlowReconstruction::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkMultiBlockDataSet* input = vtkMultiBlockDataSet::GetData(inputVector[0], 0);
-  auto* grid = vtkUnstructuredGrid::GetData(outputVector, RECONSTRUCTION);
-  auto* profile = vtkTable::GetData(outputVector, PROFILE);
-  auto* arrows = vtkPolyData::GetData(outputVector, SPONSOR_ARROWS);
-  auto* topology = vtkTable::GetData(outputVector, TOPOLOGY_PROFILE);
-  auto* undersampling = vtkPolyData::GetData(outputVector, UNDER_SAMPLING);
-  if (!input || !grid || !profile || !arrows || !topology || !undersampling)
+  if (!input || !vtkUnstructuredGrid::GetData(outputVector, RECONSTRUCTION) ||
+    !vtkTable::GetData(outputVector, PROFILE) || !vtkPolyData::GetData(outputVector, SPONSOR_ARROWS) ||
+    !vtkTable::GetData(outputVector, TOPOLOGY_PROFILE) ||
+    !vtkPolyData::GetData(outputVector, UNDER_SAMPLING))
   {
     vtkErrorMacro("Missing input or output.");
     return 0;
   }
-
-  // What every early return leaves: empty outputs, all five.
-  auto emptyOutputs = [&]() {
-    grid->Initialize();
-    profile->Initialize();
-    arrows->Initialize();
-    topology->Initialize();
-    undersampling->Initialize();
-  };
   if (input->GetNumberOfBlocks() == 0)
   {
     // Empty in, empty out: what the other ranks of a parallel run receive
     // (vtkFlowComplex computes on rank 0 only).
-    emptyOutputs();
+    EmptyOutputs(outputVector);
     return 1;
   }
   // The queue runs only for a new input; a new threshold only re-selects.
   if (!this->Cached || this->Cached->InputTime != input->GetMTime())
   {
-    this->Cached.reset();
-    auto cache = std::unique_ptr<Cache>(new Cache);
-    cache->InputTime = input->GetMTime();
-    flowrecon::SimplificationResult s;
-    std::string error;
-    if (!flowrecon::FromMultiBlock(input, cache->FC, error))
+    bool aborted = false;
+    if (!this->RunQueue(input, aborted))
     {
-      vtkErrorMacro(<< error);
-      return 0;
+      EmptyOutputs(outputVector);
+      return aborted ? 1 : 0; // an abort is no error (nothing cached)
     }
-    cache->Simplified = flowrecon::SimplificationFromMultiBlock(
-      input, static_cast<Id>(cache->FC.Nodes.size()), s, error);
-    if (!error.empty())
-    {
-      vtkErrorMacro(<< error);
-      return 0;
-    }
-    const auto& nodes = cache->FC.Nodes;
-    flowrecon::FlowComplex& fc = cache->FC;
-    const bool deferred = !fc.DeferredPatches.empty();
-    if (deferred && cache->Simplified && !s.HasLowers)
-    {
-      vtkErrorMacro(<< "the input's simplification lacks what its deferred patches need "
-                       "(PairLowers, PairOwners): simplify it again with this version");
-      return 0;
-    }
-    // The queue is 30% of the work, drawing 60%, the selection the rest.
-    const flowrecon::Progress progress = flowrecon::AlgorithmProgress(this, 0.3);
-    bool finished = false;
-    const int ok = flowrecon::CallCore(
-      this, "reconstruction",
-      [&]() {
-        const std::vector<Id> init = flowrecon::InitializationEdges(
-          nodes, flowrecon::NearestNeighboursFromDiagram(nodes, fc.Arcs));
-        ++this->NumberOfQueueRuns;
-        if (!deferred)
-        {
-          cache->Run = flowrecon::Reconstruct(nodes, fc.Arcs, s.Survives, init, HUGE_VAL, progress);
-          cache->Carrier = flowrecon::CellCarriers(cache->Run, &s);
-          finished = true;
-          return;
-        }
-        // The run up to the deferral ratio, exact for every T_max below it: the
-        // deferred patches it needs are walked on the recomputed triangulation.
-        cache->Re = flowrecon::Retriangulation::OfStoredComplex(fc, progress.Range(0, 0.5),
-          "lower Defer Patches Above in Flow Complex, or the cloud's size");
-        try
-        {
-          flowrecon::DeferredReconstruction late = flowrecon::ReconstructDeferred(fc,
-            cache->Simplified ? &s : nullptr, *cache->Re, init, fc.DeferralRatio,
-            progress.Range(0.5, 1));
-          cache->Run = std::move(late.Run);
-          cache->Carrier = std::move(late.Carriers);
-        }
-        catch (const flowrecon::Degenerate&)
-        {
-          throw flowrecon::InputError("a deferred patch met a tie the flow complex did not "
-                                      "see: set Defer Patches Above to 0 in Flow Complex");
-        }
-        finished = true;
-      },
-      [&]() { emptyOutputs(); }); // an abort too leaves all five ports empty
-    if (!finished)
-    {
-      return ok; // failed (0) or aborted (1, nothing cached)
-    }
-    this->Cached = std::move(cache);
   }
   const double tmax = this->MaximumThreshold >= VTK_DOUBLE_MAX ? HUGE_VAL : this->MaximumThreshold;
   if (!(tmax <= this->Cached->FC.DeferralRatio))
@@ -266,12 +213,12 @@ int vtkFlowReconstruction::RequestData(
     vtkErrorMacro(<< "Maximum Threshold (T_max) " << tmax << " is above the input's Defer "
                   << "Patches Above (" << this->Cached->FC.DeferralRatio
                   << "): lower T_max, or raise Defer Patches Above in Flow Complex");
-    emptyOutputs();
+    EmptyOutputs(outputVector);
     return 0;
   }
   if (this->Cached->GeometryThreshold != tmax && !this->DrawGeometry(tmax))
   {
-    emptyOutputs();
+    EmptyOutputs(outputVector);
     return this->GetAbortExecute() ? 1 : 0;
   }
   // Once per drawing and cell limit, when asked for (also when turned on later).
@@ -280,28 +227,115 @@ int vtkFlowReconstruction::RequestData(
   {
     this->ComputeBettiNumbers(tmax);
   }
+  Selection selection;
+  if (!this->SelectThreshold(tmax, selection))
+  {
+    EmptyOutputs(outputVector);
+    return 0;
+  }
+  this->UsedReconstructionThreshold = selection.Threshold;
+  this->SetProgressText("output");
+  this->UpdateProgress(0.9);
+  this->FillOutputs(input, tmax, selection, outputVector);
+  this->SetProgressText(nullptr);
+  this->UpdateProgress(1.0);
+  return 1;
+}
 
+//------------------------------------------------------------------------------
+bool vtkFlowReconstruction::RunQueue(vtkMultiBlockDataSet* input, bool& aborted)
+{
+  this->Cached.reset();
+  auto cache = std::unique_ptr<Cache>(new Cache);
+  cache->InputTime = input->GetMTime();
+  flowrecon::SimplificationResult s;
+  std::string error;
+  if (!flowrecon::FromMultiBlock(input, cache->FC, error))
+  {
+    vtkErrorMacro(<< error);
+    return false;
+  }
+  cache->Simplified = flowrecon::SimplificationFromMultiBlock(
+    input, static_cast<Id>(cache->FC.Nodes.size()), s, error);
+  if (!error.empty())
+  {
+    vtkErrorMacro(<< error);
+    return false;
+  }
+  const auto& nodes = cache->FC.Nodes;
+  flowrecon::FlowComplex& fc = cache->FC;
+  const bool deferred = !fc.DeferredPatches.empty();
+  if (deferred && cache->Simplified && !s.HasLowers)
+  {
+    vtkErrorMacro(<< "the input's simplification lacks what its deferred patches need "
+                     "(PairLowers, PairOwners): simplify it again with this version");
+    return false;
+  }
+  // The queue is 30% of the work, drawing 60%, the selection the rest.
+  const flowrecon::Progress progress = flowrecon::AlgorithmProgress(this, 0.3);
+  bool finished = false;
+  flowrecon::CallCore(
+    this, "reconstruction",
+    [&]() {
+      const std::vector<Id> init = flowrecon::InitializationEdges(
+        nodes, flowrecon::NearestNeighboursFromDiagram(nodes, fc.Arcs));
+      ++this->NumberOfQueueRuns;
+      if (!deferred)
+      {
+        cache->Run = flowrecon::Reconstruct(nodes, fc.Arcs, s.Survives, init, HUGE_VAL, progress);
+        cache->Carrier = flowrecon::CellCarriers(cache->Run, &s);
+        finished = true;
+        return;
+      }
+      // The run up to the deferral ratio, exact for every T_max below it: the
+      // deferred patches it needs are walked on the recomputed triangulation.
+      cache->Re = flowrecon::Retriangulation::OfStoredComplex(fc, progress.Range(0, 0.5),
+        "lower Defer Patches Above in Flow Complex, or the cloud's size");
+      try
+      {
+        flowrecon::DeferredReconstruction late = flowrecon::ReconstructDeferred(fc,
+          cache->Simplified ? &s : nullptr, *cache->Re, init, fc.DeferralRatio,
+          progress.Range(0.5, 1));
+        cache->Run = std::move(late.Run);
+        cache->Carrier = std::move(late.Carriers);
+      }
+      catch (const flowrecon::Degenerate&)
+      {
+        throw flowrecon::InputError("a deferred patch met a tie the flow complex did not "
+                                    "see: set Defer Patches Above to 0 in Flow Complex");
+      }
+      finished = true;
+    },
+    [&]() { aborted = true; });
+  if (finished)
+  {
+    this->Cached = std::move(cache);
+  }
+  return finished;
+}
+
+//------------------------------------------------------------------------------
+bool vtkFlowReconstruction::SelectThreshold(double tmax, Selection& selection)
+{
   const Cache& c = *this->Cached;
   const flowrecon::FlowComplex& fc = c.FC;
-  double t =
-    this->ReconstructionThreshold >= VTK_DOUBLE_MAX ? HUGE_VAL : this->ReconstructionThreshold;
+  double& t = selection.Threshold;
+  flowrecon::ThresholdChoice& choice = selection.Choice;
+  t = this->ReconstructionThreshold >= VTK_DOUBLE_MAX ? HUGE_VAL : this->ReconstructionThreshold;
   // The automatic t_r: the most stable topology of the family below T_max.
-  flowrecon::ThresholdChoice choice;
-  bool chosen = false;
   if (this->AutomaticReconstructionThreshold && !this->EveryStep)
   {
     if (!this->ComputeTopology)
     {
       vtkErrorMacro(<< "Automatic Reconstruction Threshold needs Compute Topology: turn "
                        "Compute Topology on, or set t_r yourself");
-      emptyOutputs();
-      return 0;
+      return false;
     }
     if (c.TopologyError.empty() && tmax > choice.Rule.Lowest)
     {
       choice = flowrecon::ChooseThresholds({ flowrecon::TopologyProfile(c.Bars, 1, tmax) }, tmax);
       t = choice.ReconstructionThreshold;
-      chosen = true;
+      selection.Chosen = true;
       flowrecon::CheckFilled(choice,
         std::vector<flowrecon::Point3>(fc.Points.begin(), fc.Points.begin() + fc.NumberOfInputPoints),
         flowrecon::MaximaBelow(fc.Nodes, c.Carrier, c.Run, t));
@@ -326,10 +360,22 @@ int vtkFlowReconstruction::RequestData(
                     << "; raise Maximum Threshold to see more");
     t = tmax;
   }
-  this->UsedReconstructionThreshold = t;
-  this->SetProgressText("output");
-  this->UpdateProgress(0.9);
+  return true;
+}
 
+//------------------------------------------------------------------------------
+void vtkFlowReconstruction::FillOutputs(vtkMultiBlockDataSet* input, double tmax,
+  const Selection& selection, vtkInformationVector* outputVector)
+{
+  const double t = selection.Threshold;
+  const flowrecon::ThresholdChoice* choice = selection.Chosen ? &selection.Choice : nullptr;
+  auto* grid = vtkUnstructuredGrid::GetData(outputVector, RECONSTRUCTION);
+  auto* profile = vtkTable::GetData(outputVector, PROFILE);
+  auto* arrows = vtkPolyData::GetData(outputVector, SPONSOR_ARROWS);
+  auto* topology = vtkTable::GetData(outputVector, TOPOLOGY_PROFILE);
+  auto* undersampling = vtkPolyData::GetData(outputVector, UNDER_SAMPLING);
+  const Cache& c = *this->Cached;
+  const flowrecon::FlowComplex& fc = c.FC;
   flowrecon::ReconstructionToVTK(fc, c.Carrier, c.Run, t, c.TriangleGroups, c.TetraGroups,
     nullptr, nullptr, arrows);
   profile->ShallowCopy(c.Profile);
@@ -348,13 +394,13 @@ int vtkFlowReconstruction::RequestData(
     // Changes beyond T_max are not known: the window stops there. A short
     // stable window: its end is where the topology changes next.
     double window = std::min(this->UnderSamplingWindow, tmax / t);
-    if (chosen && choice.Short() && choice.Window.To > t)
+    if (choice && choice->Short() && choice->Window.To > t)
     {
-      window = std::max(window, choice.Window.To / t * (1 + 1e-9));
+      window = std::max(window, choice->Window.To / t * (1 + 1e-9));
     }
     flowrecon::UnderSamplingToVTK(
       flowrecon::TopologyChangesAbove(c.Bars, t, std::max(1.0, window)), c.CellNodes, fc, undersampling);
-    AddThresholds(PersistenceOf(input), t, chosen ? &choice : nullptr, grid);
+    AddThresholds(PersistenceOf(input), t, choice, grid);
   }
   else
   {
@@ -367,10 +413,6 @@ int vtkFlowReconstruction::RequestData(
   // the under-sampling points by nothing, so that the view has one colour legend.
   grid->GetCellData()->SetActiveScalars(flowrecon::names::Index);
   undersampling->GetPointData()->SetActiveScalars(nullptr);
-
-  this->SetProgressText(nullptr);
-  this->UpdateProgress(1.0);
-  return 1;
 }
 
 //------------------------------------------------------------------------------

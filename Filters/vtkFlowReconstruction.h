@@ -66,6 +66,8 @@
 
 #include <memory> // for std::unique_ptr
 
+class vtkMultiBlockDataSet;
+
 class FLOWRECONFILTERS_EXPORT vtkFlowReconstruction : public vtkUnstructuredGridAlgorithm
 {
 public:
@@ -211,11 +213,21 @@ private:
 
   struct Cache;
   std::unique_ptr<Cache> Cached; // the t_r = infinity run of the last input
+  struct Selection;
+  /// Runs the priority queue (t_r = infinity) on a new input into the cache
+  /// (false: failed, an error reported, or aborted, `aborted` set).
+  bool RunQueue(vtkMultiBlockDataSet* input, bool& aborted);
   /// Draws the cells of the nodes below `tmax` into the cache (false: failed or aborted).
   bool DrawGeometry(double tmax);
   /// The Betti numbers of the drawn family into the cache (an error there is
   /// kept as its TopologyError: the reconstruction is still shown).
   void ComputeBettiNumbers(double tmax);
+  /// The t_r shown below `tmax`, chosen automatically or given (false: it
+  /// cannot be chosen, an error reported).
+  bool SelectThreshold(double tmax, Selection& selection);
+  /// The five outputs at the selected t_r, from the cache.
+  void FillOutputs(vtkMultiBlockDataSet* input, double tmax, const Selection& selection,
+    vtkInformationVector* outputVector);
 };
 
 #endif

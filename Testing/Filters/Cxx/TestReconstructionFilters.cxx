@@ -15,6 +15,7 @@
 #include "vtkCellType.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
+#include "vtkDataSet.h"
 #include "vtkFieldData.h"
 #include "vtkIdList.h"
 #include "vtkCell.h"
@@ -59,6 +60,44 @@ Cloud FibonacciSphere(int n)
     c.push_back({ { r * std::cos(a) + u(g), r * std::sin(a) + u(g), z + u(g) } });
   }
   return c;
+}
+
+/// Whether an output holds nothing: no points, cells, columns or field data.
+bool Empty(vtkDataObject* o)
+{
+  if (!o || o->GetFieldData()->GetNumberOfArrays() > 0)
+  {
+    return false;
+  }
+  if (auto* table = vtkTable::SafeDownCast(o))
+  {
+    return table->GetNumberOfColumns() == 0;
+  }
+  auto* data = vtkDataSet::SafeDownCast(o);
+  return data && data->GetNumberOfPoints() == 0 && data->GetNumberOfCells() == 0;
+}
+
+/// A progress observer that aborts the algorithm once its progress passes
+/// *clientData.
+void AbortPast(vtkObject* caller, unsigned long, void* clientData, void*)
+{
+  auto* algorithm = vtkAlgorithm::SafeDownCast(caller);
+  if (algorithm->GetProgress() > *static_cast<const double*>(clientData))
+  {
+    algorithm->SetAbortExecute(1);
+  }
+}
+
+bool AllOutputsEmpty(vtkAlgorithm* a)
+{
+  for (int port = 0; port < a->GetNumberOfOutputPorts(); ++port)
+  {
+    if (!Empty(a->GetOutputDataObject(port)))
+    {
+      return false;
+    }
+  }
+  return true;
 }
 
 /// Torus R = 1, r = 0.35 sampled on a staggered nu x nv angle grid, jittered by 1e-3.
@@ -548,22 +587,54 @@ void TestQueueCache(const Cloud& cloud)
   }
   CHECK(ok);
 
-  // An abort leaves empty outputs and caches nothing: the next update reruns.
+  // An abort leaves every output empty and caches nothing: the next update reruns.
+  CHECK(!Empty(r->GetOutputDataObject(vtkFlowReconstruction::TOPOLOGY_PROFILE)));
+  double past = -1; // at the first progress event
   vtkNew<vtkCallbackCommand> abort;
-  abort->SetCallback([](vtkObject* caller, unsigned long, void*, void*) {
-    vtkAlgorithm::SafeDownCast(caller)->SetAbortExecute(1);
-  });
+  abort->SetCallback(AbortPast);
+  abort->SetClientData(&past);
   const unsigned long tag = r->AddObserver(vtkCommand::ProgressEvent, abort);
   s->SetPersistenceThreshold(1.1);
   r->Update();
   CHECK(r->GetNumberOfQueueRuns() == 3);
-  CHECK(r->GetOutput()->GetNumberOfCells() == 0);
+  CHECK(AllOutputsEmpty(r));
   r->RemoveObserver(tag);
   r->SetAbortExecute(0);
   r->Modified();
   r->Update();
   CHECK(r->GetNumberOfQueueRuns() == 4);
   CHECK(r->GetOutput()->GetNumberOfCells() == cells2);
+}
+
+/// An abort while the stable manifolds are drawn leaves every output empty;
+/// the queue's run stays cached, and the next update only draws.
+void TestDrawingAbort(const Cloud& cloud)
+{
+  std::cout << "-- abort while drawing\n";
+  vtkNew<vtkFlowComplexSimplification> s;
+  s->SetInputData(FlowComplexOf(cloud, -2)); // no stable manifolds: drawn on demand
+  s->AutomaticPersistenceThresholdOff();
+  vtkNew<vtkFlowReconstruction> r;
+  r->SetInputConnection(s->GetOutputPort());
+  r->SetReconstructionThreshold(2.0);
+  r->AutomaticReconstructionThresholdOff();
+  double past = 0.3; // the queue's 30 %: drawing
+  vtkNew<vtkCallbackCommand> abort;
+  abort->SetCallback(AbortPast);
+  abort->SetClientData(&past);
+  const unsigned long tag = r->AddObserver(vtkCommand::ProgressEvent, abort);
+  vtkObject::GlobalWarningDisplayOff(); // the abort's warning
+  r->Update();
+  vtkObject::GlobalWarningDisplayOn();
+  CHECK(r->GetAbortExecute() == 1);
+  CHECK(r->GetNumberOfQueueRuns() == 1);
+  CHECK(AllOutputsEmpty(r));
+  r->RemoveObserver(tag);
+  r->SetAbortExecute(0);
+  r->Modified();
+  r->Update();
+  CHECK(r->GetNumberOfQueueRuns() == 1);
+  CHECK(r->GetOutput()->GetNumberOfCells() > 0);
 }
 
 void TestErrors()
@@ -672,6 +743,7 @@ int main(int argc, char* argv[])
   TestCorruptFlowLines();
   TestSeedTravels(dir);
   TestQueueCache(FibonacciSphere(300));
+  TestDrawingAbort(FibonacciSphere(300));
   TestShape("sphere", FibonacciSphere(800), { { 1, 0, 1, 0 } }, dir);
   TestShape("torus", GridTorus(40, 14), { { 1, 2, 1, 0 } }, dir);
   return check::Finish("TestReconstructionFilters");
