@@ -88,6 +88,26 @@ void AbortPast(vtkObject* caller, unsigned long, void* clientData, void*)
   }
 }
 
+/// Updates `a` with an observer that aborts it once its progress passes
+/// `past`; AbortExecute stays set.
+void UpdateAborting(vtkAlgorithm* a, double past)
+{
+  vtkNew<vtkCallbackCommand> abort;
+  abort->SetCallback(AbortPast);
+  abort->SetClientData(&past);
+  const unsigned long tag = a->AddObserver(vtkCommand::ProgressEvent, abort);
+  a->Update();
+  a->RemoveObserver(tag);
+}
+
+/// Clears the abort and updates again.
+void UpdateAgain(vtkAlgorithm* a)
+{
+  a->SetAbortExecute(0);
+  a->Modified();
+  a->Update();
+}
+
 bool AllOutputsEmpty(vtkAlgorithm* a)
 {
   for (int port = 0; port < a->GetNumberOfOutputPorts(); ++port)
@@ -589,19 +609,11 @@ void TestQueueCache(const Cloud& cloud)
 
   // An abort leaves every output empty and caches nothing: the next update reruns.
   CHECK(!Empty(r->GetOutputDataObject(vtkFlowReconstruction::TOPOLOGY_PROFILE)));
-  double past = -1; // at the first progress event
-  vtkNew<vtkCallbackCommand> abort;
-  abort->SetCallback(AbortPast);
-  abort->SetClientData(&past);
-  const unsigned long tag = r->AddObserver(vtkCommand::ProgressEvent, abort);
   s->SetPersistenceThreshold(1.1);
-  r->Update();
+  UpdateAborting(r, -1); // at the first progress event
   CHECK(r->GetNumberOfQueueRuns() == 3);
   CHECK(AllOutputsEmpty(r));
-  r->RemoveObserver(tag);
-  r->SetAbortExecute(0);
-  r->Modified();
-  r->Update();
+  UpdateAgain(r);
   CHECK(r->GetNumberOfQueueRuns() == 4);
   CHECK(r->GetOutput()->GetNumberOfCells() == cells2);
 }
@@ -618,21 +630,13 @@ void TestDrawingAbort(const Cloud& cloud)
   r->SetInputConnection(s->GetOutputPort());
   r->SetReconstructionThreshold(2.0);
   r->AutomaticReconstructionThresholdOff();
-  double past = 0.3; // the queue's 30 %: drawing
-  vtkNew<vtkCallbackCommand> abort;
-  abort->SetCallback(AbortPast);
-  abort->SetClientData(&past);
-  const unsigned long tag = r->AddObserver(vtkCommand::ProgressEvent, abort);
   vtkObject::GlobalWarningDisplayOff(); // the abort's warning
-  r->Update();
+  UpdateAborting(r, 0.3); // past the queue's 30 %: while drawing
   vtkObject::GlobalWarningDisplayOn();
   CHECK(r->GetAbortExecute() == 1);
   CHECK(r->GetNumberOfQueueRuns() == 1);
   CHECK(AllOutputsEmpty(r));
-  r->RemoveObserver(tag);
-  r->SetAbortExecute(0);
-  r->Modified();
-  r->Update();
+  UpdateAgain(r);
   CHECK(r->GetNumberOfQueueRuns() == 1);
   CHECK(r->GetOutput()->GetNumberOfCells() > 0);
 }
