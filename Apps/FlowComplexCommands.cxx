@@ -124,8 +124,7 @@ int RunInfo(const Arguments& args)
       << "perturbed:             "
       << (attempts == "1" ? std::string("no")
                           : "yes (" + attempts + " attempts, magnitude " +
-               Field(fd, "PerturbationMagnitude") + "; critical values from the input, " +
-               Field(fd, "PerturbedValueCount") + " left perturbed)")
+               Field(fd, "PerturbationMagnitude") + ")")
       << "\n"
       << "nodes by index:        " << Field(fd, counts, 0) << " " << Field(fd, counts, 1) << " "
       << Field(fd, counts, 2) << " " << Field(fd, counts, 3)
