@@ -124,7 +124,8 @@ int RunInfo(const Arguments& args)
       << "perturbed:             "
       << (attempts == "1" ? std::string("no")
                           : "yes (" + attempts + " attempts, magnitude " +
-               Field(fd, "PerturbationMagnitude") + ")")
+               Field(fd, "PerturbationMagnitude") + "; critical values from the input, " +
+               Field(fd, "PerturbedValueCount") + " left perturbed)")
       << "\n"
       << "nodes by index:        " << Field(fd, counts, 0) << " " << Field(fd, counts, 1) << " "
       << Field(fd, counts, 2) << " " << Field(fd, counts, 3)

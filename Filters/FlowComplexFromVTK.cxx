@@ -50,6 +50,7 @@ void ReadReport(vtkFieldData* fd, FlowComplex& fc)
   r.ExactFallbacks = static_cast<Id>(get("ExactFallbackCount", 0, 0));
   r.Attempts = static_cast<int>(get("PerturbationAttempts", 0, 1));
   r.PerturbationMagnitude = get("PerturbationMagnitude", 0, 0);
+  r.PerturbedValues = static_cast<Id>(get("PerturbedValueCount", 0, 0));
   r.Seed = static_cast<std::uint64_t>(static_cast<vtkIdType>(get("PerturbationSeed", 0, 1)));
   double* t[6] = { &fc.Time.Delaunay, &fc.Time.CriticalPoints, &fc.Time.StableManifolds,
     &fc.Time.UnstableManifolds, &fc.Time.Assembly, &fc.Time.Total };

@@ -328,6 +328,7 @@ void AddReport(const FlowComplex& fc, vtkFieldData* fd)
   fd->AddArray(attempts);
   // With the attempts, what a later stage needs to redo the triangulation.
   scalar("PerturbationSeed", static_cast<vtkIdType>(fc.Report.Seed));
+  scalar("PerturbedValueCount", fc.Report.PerturbedValues);
   auto magnitude = NamedArray<vtkDoubleArray>("PerturbationMagnitude");
   magnitude->InsertNextValue(fc.Report.PerturbationMagnitude);
   fd->AddArray(magnitude);

@@ -133,7 +133,7 @@ void Builder::DeferFarPatches()
       [&](const tbb::blocked_range<Id>& r, double v) {
         for (Id i = r.begin(); i != r.end(); ++i)
         {
-          v = std::max(v, this->MakeNode(1, this->Cs.Edges.Values[i].data(), this->Coords()).Value);
+          v = std::max(v, this->MakeNode(1, this->Cs.Edges.Values[i].data(), this->Coords(), false).Value);
         }
         return v;
       },
@@ -146,7 +146,7 @@ void Builder::DeferFarPatches()
         {
           // V/L >= ratio in doubles implies V/V(a) >= ratio for every edge a
           // (V(a) <= L, and rounding is monotone).
-          const double v = this->MakeNode(2, Widen(this->Cs.Facets[i].Vertices).data(), this->Coords()).Value;
+          const double v = this->MakeNode(2, Widen(this->Cs.Facets[i].Vertices).data(), this->Coords(), false).Value;
           this->Deferred[i] = v / largest >= ratio ? 1 : 0;
         }
       });

@@ -14,6 +14,7 @@
 #include "Triangulation.h"
 
 #include <array>
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <memory>
@@ -63,6 +64,14 @@ public:
   void Run(const std::vector<Point3>& coords, bool first);
 
   int ScaleExponent = 0;
+  /// A perturbed attempt: critical values and points come from the input's
+  /// coordinates (In.Unique), each of which the perturbation moved by at most
+  /// Displacement (scaled units).
+  bool Perturbed = false;
+  double Displacement = 0;
+  /// Critical points of a perturbed attempt left at the perturbed points (no
+  /// limit on the input: ExactCriticalPointOf); counted by MakeNode.
+  mutable std::atomic<Id> PerturbedValues{ 0 };
   /// When set, Run leaves its triangulation and critical simplices here.
   bool Keep = false;
   std::unique_ptr<const Triangulation> KeptTriangulation;
@@ -79,7 +88,11 @@ private:
   void BuildStableCones();       ///< BuildStableCones.cpp: index 3
 
   void ScaleBack();
-  Node MakeNode(int index, const Id* simplex, const std::vector<Point3>& coords) const;
+  void LowerPendingBounds();
+  /// The node of a critical simplex (ids into coords): from coords, or in a
+  /// perturbed attempt from the input's coordinates; `count` adds the fallbacks
+  /// to PerturbedValues (once per node).
+  Node MakeNode(int index, const Id* simplex, const std::vector<Point3>& coords, bool count = true) const;
   const std::vector<Point3>& Coords() const { return *this->CoordsOfAttempt; }
   std::string Cloud() const { return std::to_string(this->Coords().size()) + " points"; }
 

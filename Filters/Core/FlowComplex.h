@@ -79,6 +79,10 @@ struct DegeneracyReport
   int Attempts = 1;           ///< 1 = no perturbation was needed
   std::uint64_t Seed = 1;     ///< seed of the perturbation (with Attempts, enough to redo it)
   double PerturbationMagnitude = 0; ///< max displacement applied to each coordinate
+  /// Critical points of a perturbed run whose simplex has no critical point on
+  /// the input (docs/algorithm.md §2.3): left at their perturbed value. Others
+  /// are evaluated exactly on the input points.
+  Id PerturbedValues = 0;
   Id ExactFallbacks = 0;      ///< walks whose interval filter failed and were redone exactly
   bool Perturbed() const { return Attempts > 1; }
 };

@@ -1,6 +1,7 @@
 #include "FlowComplexBuilder.h"
 
 #include "BuildPhases.h"
+#include "ExactCriticalPoint.h"
 #include "Retriangulation.h"
 #include "StableManifoldGeometry.h"
 
@@ -38,7 +39,7 @@ std::array<double, 4> CentreAndSquaredRadius(const KPoint* p, std::size_t n)
 const char* const TooClose = "points too close together for the size of the cloud (a critical "
                              "value underflows in double precision); rescale or separate the clusters";
 
-Node Builder::MakeNode(int index, const Id* simplex, const std::vector<Point3>& coords) const
+Node Builder::MakeNode(int index, const Id* simplex, const std::vector<Point3>& coords, bool count) const
 {
   Node node;
   node.Index = index;
@@ -57,6 +58,26 @@ Node Builder::MakeNode(int index, const Id* simplex, const std::vector<Point3>& 
   }
   else
   {
+    if (this->Perturbed)
+    {
+      // The perturbation chose the simplex; its value is the input's.
+      Point3 input[4];
+      for (int i = 0; i <= index; ++i)
+      {
+        input[i] = this->In.Unique[simplex[i]];
+      }
+      ExactCriticalPoint e;
+      if (ExactCriticalPointOf(input, index + 1, e))
+      {
+        node.Location = e.Location;
+        node.Value = std::sqrt(e.SquaredRadius);
+        return node;
+      }
+      if (count)
+      {
+        this->PerturbedValues.fetch_add(1, std::memory_order_relaxed);
+      }
+    }
     const std::array<double, 4> cr = CentreAndSquaredRadius(pts, static_cast<std::size_t>(index + 1));
     node.Location = { { cr[0], cr[1], cr[2] } };
     node.Value = std::sqrt(cr[3]);
@@ -69,6 +90,7 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
   FlowComplex& fc = this->FC;
   this->CoordsOfAttempt = &coords;
   this->First = first;
+  this->PerturbedValues = 0;
   // The triangulation refers to this attempt's coordinates: whatever happens,
   // it and the critical simplices go with the attempt (the retry makes new ones).
   struct Release
@@ -92,6 +114,7 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
   fc.Time.StableManifolds = Seconds(t);
   t = Clock::now();
   this->TraceUnstableManifolds();
+  this->LowerPendingBounds();
   fc.Time.UnstableManifolds = Seconds(t);
   t = Clock::now();
   this->AssembleHasseDiagram();
@@ -101,6 +124,27 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
   {
     this->KeptTriangulation = std::move(this->Tri);
     this->KeptCritical = std::move(this->Cs);
+  }
+}
+
+void Builder::LowerPendingBounds()
+{
+  if (!this->Perturbed)
+  {
+    return;
+  }
+  // A pending line's Bound is below the perturbed value r' of the maximum it
+  // reaches, which is the radius of the smallest ball enclosing that cell's
+  // perturbed vertices (the cell contains its circumcentre). Each vertex moved
+  // by at most sqrt(3) Displacement (plus a rounding of under 1/64 of it), so
+  // the input's vertices fit in that ball widened by eps = 1.8 Displacement:
+  // the input value, the radius of a sphere through them, is at least r' - eps
+  // (also for the circle of a flat cell). The value's own truncation: 4 ulps.
+  const double eps = 1.8 * this->Displacement;
+  for (PendingFlowLine& line : this->FC.PendingFlowLines)
+  {
+    const double b = (static_cast<double>(line.Bound) - eps) * (1 - 4 * std::numeric_limits<double>::epsilon());
+    line.Bound = RoundedDown(std::max(0.0, b));
   }
 }
 
@@ -211,11 +255,14 @@ FlowComplex BuildFlowComplex(const std::vector<Point3>& points, const BuildOptio
     try
     {
       builder.KeptTriangulation.reset(); // refers to the coordinates below
+      builder.Perturbed = attempt > 1;
+      builder.Displacement = magnitude;
       coords = std::make_unique<const std::vector<Point3>>(AttemptCoordinates(in, attempt, options.Seed));
       builder.Run(*coords, attempt == 1);
       fc.Report.Attempts = attempt;
       fc.Report.Seed = options.Seed;
       fc.Report.PerturbationMagnitude = std::ldexp(magnitude, builder.ScaleExponent);
+      fc.Report.PerturbedValues = builder.PerturbedValues.load();
       break;
     }
     catch (const Degenerate& e)

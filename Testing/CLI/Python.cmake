@@ -79,3 +79,8 @@ endif ()
 # The automatic t_r and t_p give the true Betti numbers on the study's
 # generators (surfaces, lattices, a solid, a non-manifold union, a curve).
 flowrecon_add_cli_python_test(py.reconstruction.automatic_thresholds test_automatic_thresholds.py automatic_thresholds)
+
+# Critical values of perturbed (degenerate) clouds come from the unperturbed
+# points: exact on grids and cospherical sets, equal to GUDHI's exact alpha
+# persistence within 1e-12 relative, lazy reconstruction equal to eager.
+flowrecon_add_cli_python_test(py.exact_perturbed_values test_exact_perturbed_values.py exact_perturbed_values)
