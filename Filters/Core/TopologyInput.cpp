@@ -66,9 +66,15 @@ void EndInRegions(CappedReconstruction& r, TopologyInput& t, std::size_t cones,
     }
   }
   // Values are rounded from exact quantities: a relative margin keeps above.
-  // The triangulation's units are the values' times 2^-ScaleExponent.
+  // The triangulation's units are the values' times 2^-ScaleExponent. A
+  // perturbed run draws on the perturbed points while its values are the
+  // input's: a node's perturbed value is at most its value plus the reach of
+  // the perturbation (FlowComplexBuilder.cpp, LowerPendingBounds), so the
+  // drawn reconstructions stay within r* plus that reach.
   const Retriangulation& re = *r.Triangulation;
-  const double level = std::ldexp(reached * (1 + 1e-9), -re.Prepared().ScaleExponent) + 1e-300;
+  const int e = re.Prepared().ScaleExponent;
+  const double reach = 1.8 * std::ldexp(fc.Report.PerturbationMagnitude, -e);
+  const double level = (std::ldexp(reached, -e) + reach) * (1 + 1e-9) + 1e-300;
   if (!regions || regions->Of() != re.Tri().Serial() || !(regions->Level() >= level * level))
   {
     regions.reset();
