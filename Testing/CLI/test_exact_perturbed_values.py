@@ -20,7 +20,7 @@ that circle). Checked, for each cloud:
     `reconstruct` of the stored complex, cell for cell.
 
 Run: /usr/bin/python3 test_exact_perturbed_values.py <path to flowrecon> <work dir>
-     [--large N]  (also an N^3 grid; 30 checks the largest grid of the issue by hand)
+     [--large N]  (also an N^3 grid, checked by hand: 30 takes minutes)
 """
 
 import itertools
