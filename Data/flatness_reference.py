@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The volume references of the local flatness test (Filters/Core/LocalFlatness.h,
+"""The volume references of the local flatness test (Filters/Base/Reconstruction/LocalFlatness.h,
 FlatnessScales): the median of lambda_min / lambda_mid over the k nearest samples
 (the probe included) of a uniform i.i.d. volume sample, for the neighbourhood sizes
 the test uses. Probes are kept away from the cube's faces, so that the figure is a

@@ -77,7 +77,7 @@ tree                    5       (1, 0, 0)    a random branching tree (depth 5, 2
                                              curves, contractible; size = depth
 =======================  =====  ===========  ============================================
 
-Shapes added for the t_r / t_p study (``Data/tr_study.py``, issue #9 item 3).
+Shapes added for the t_r / t_p study (``Data/tr_study.py``).
 ``_qu``: farthest points of 30x i.i.d. candidates as above; ``_pd``: a Poisson-disk
 (dart-throwing) subsample of 20x i.i.d. candidates (at most 10^7), quasi-uniform like
 ``_qu`` but linear in the candidates, for 10^5-10^6 points (``poisson_disk``); ``_dv``:
@@ -544,7 +544,7 @@ def tree(depth, rng, step=0.02):
 
 
 # --------------------------------------------------------------------------- study shapes
-# Shapes added for the t_r / t_p study (Data/tr_study.py, issue #9 item 3): thin parts,
+# Shapes added for the t_r / t_p study (Data/tr_study.py): thin parts,
 # a genus-4 surface, density-varying samples, Poisson-disk quasi-uniform samples (for
 # large n, where farthest_points is too slow) and regular lattices.
 
@@ -917,7 +917,7 @@ SHAPES = {
     "vase_qu": (vase_qu, 3000, 209, (1, 2, 0)),
     "plate3_qu": (plate3_qu, 8000, 210, (1, 6, 1)),
     "tree": (tree, 5, 211, (1, 0, 0)),
-    # added for Data/tr_study.py (issue #9 item 3; see the third table above)
+    # added for Data/tr_study.py (see the third table above)
     "thin_tube": (thin_tube, 4000, 301, (1, 2, 1)),
     "thin_tube_qu": (thin_tube_qu, 4000, 302, (1, 2, 1)),
     "thin_plate": (thin_plate, 2000, 303, (1, 0, 1)),

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The pictures of the topology profile in docs/concepts.md (issue #9): the
+"""The pictures of the topology profile in docs/concepts.md: the
 Betti numbers against t_r for a clean torus (2 000 quasi-uniform points) and
 for a sphere (3 000 quasi-uniform points) whose polar cap z > 0.7 lost half of
 its points, and that sphere with the places `flowrecon reconstruct` warns about.

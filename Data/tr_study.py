@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Where the right topology lies in t_r, and how that moves with the number of
-points (issue #9, item 3): for shapes of known Betti numbers sampled i.i.d. and
+points: for shapes of known Betti numbers sampled i.i.d. and
 quasi-uniformly (generate_clouds.py) at several sizes, the t_r window in which
 `flowrecon reconstruct` (t_p 1.1) has the true Betti numbers, from one topology
 profile up to 3. Prints a Markdown table: the first window (from, to], or none.

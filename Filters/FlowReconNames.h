@@ -66,7 +66,7 @@ constexpr const char* Persistence = "Persistence";
 constexpr const char* PairIdentifier = "PairIdentifier";
 constexpr const char* IsFinite = "IsFinite";
 
-// Topology (issue #9).
+// Topology.
 constexpr const char* BettiNumbers = "BettiNumbers";
 // The thresholds a reconstruction used (field data of port 0): each a one-value array, the window two values (From, To]
 // and the flags (t_r chosen, t_p chosen) 1 when chosen from the data.

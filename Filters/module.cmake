@@ -10,44 +10,49 @@ vtk_module_add_module(FlowRecon::Filters
     ${_flowrecon_filters_dir}/vtkPointCloudReader
   PRIVATE_HEADERS
     ${_flowrecon_filters_dir}/CloudReconstruction.h
-    ${_flowrecon_filters_dir}/ContractArrays.h
-    ${_flowrecon_filters_dir}/CoreCall.h
-    ${_flowrecon_filters_dir}/FlowComplexConversion.h
-    ${_flowrecon_filters_dir}/FlowComplexFromVTK.h
-    ${_flowrecon_filters_dir}/FlowComplexToVTK.h
+    ${_flowrecon_filters_dir}/Conversion/ContractArrays.h
+    ${_flowrecon_filters_dir}/Conversion/CoreCall.h
+    ${_flowrecon_filters_dir}/Conversion/FlowComplexConversion.h
+    ${_flowrecon_filters_dir}/Conversion/FlowComplexFromVTK.h
+    ${_flowrecon_filters_dir}/Conversion/FlowComplexToVTK.h
     ${_flowrecon_filters_dir}/FlowReconNames.h
-    ${_flowrecon_filters_dir}/LegacyVtkGuard.h
-    ${_flowrecon_filters_dir}/PersistenceDiagramConversion.h
-    ${_flowrecon_filters_dir}/PlyPoints.h
-    ${_flowrecon_filters_dir}/PointCloudParsing.h
-    ${_flowrecon_filters_dir}/PointCloudTextFormats.h
-    ${_flowrecon_filters_dir}/ReconstructionConversion.h
+    ${_flowrecon_filters_dir}/IO/LegacyVtkGuard.h
+    ${_flowrecon_filters_dir}/Conversion/PersistenceDiagramConversion.h
+    ${_flowrecon_filters_dir}/IO/PlyPoints.h
+    ${_flowrecon_filters_dir}/IO/PointCloudParsing.h
+    ${_flowrecon_filters_dir}/IO/PointCloudTextFormats.h
+    ${_flowrecon_filters_dir}/Conversion/ReconstructionConversion.h
     ${_flowrecon_filters_dir}/ReconstructionReport.h
-    ${_flowrecon_filters_dir}/SamplesFromVTK.h
-    ${_flowrecon_filters_dir}/SimplificationConversion.h
-    ${_flowrecon_filters_dir}/TopologyConversion.h
-    ${_flowrecon_filters_dir}/VtkFilePoints.h
-    ${_flowrecon_filters_dir}/VtkMessageCapture.h
-    ${_flowrecon_filters_dir}/XmlBlockHeaders.h
-    ${_flowrecon_filters_dir}/XmlVtkGuard.h
+    ${_flowrecon_filters_dir}/Conversion/SamplesFromVTK.h
+    ${_flowrecon_filters_dir}/Conversion/SimplificationConversion.h
+    ${_flowrecon_filters_dir}/Conversion/TopologyConversion.h
+    ${_flowrecon_filters_dir}/IO/VtkFilePoints.h
+    ${_flowrecon_filters_dir}/IO/VtkMessageCapture.h
+    ${_flowrecon_filters_dir}/IO/XmlBlockHeaders.h
+    ${_flowrecon_filters_dir}/IO/XmlVtkGuard.h
   SOURCES
     ${_flowrecon_filters_dir}/CloudReconstruction.cxx
-    ${_flowrecon_filters_dir}/ContractArrays.cxx
-    ${_flowrecon_filters_dir}/FlowComplexFromVTK.cxx
-    ${_flowrecon_filters_dir}/FlowComplexToVTK.cxx
-    ${_flowrecon_filters_dir}/LegacyVtkGuard.cxx
-    ${_flowrecon_filters_dir}/PersistenceDiagramConversion.cxx
-    ${_flowrecon_filters_dir}/PlyPoints.cxx
-    ${_flowrecon_filters_dir}/PointCloudParsing.cxx
-    ${_flowrecon_filters_dir}/PointCloudTextFormats.cxx
-    ${_flowrecon_filters_dir}/ReconstructionConversion.cxx
+    ${_flowrecon_filters_dir}/Conversion/ContractArrays.cxx
+    ${_flowrecon_filters_dir}/Conversion/FlowComplexFromVTK.cxx
+    ${_flowrecon_filters_dir}/Conversion/FlowComplexToVTK.cxx
+    ${_flowrecon_filters_dir}/IO/LegacyVtkGuard.cxx
+    ${_flowrecon_filters_dir}/Conversion/PersistenceDiagramConversion.cxx
+    ${_flowrecon_filters_dir}/IO/PlyPoints.cxx
+    ${_flowrecon_filters_dir}/IO/PointCloudParsing.cxx
+    ${_flowrecon_filters_dir}/IO/PointCloudTextFormats.cxx
+    ${_flowrecon_filters_dir}/Conversion/ReconstructionConversion.cxx
     ${_flowrecon_filters_dir}/ReconstructionReport.cxx
-    ${_flowrecon_filters_dir}/SamplesFromVTK.cxx
-    ${_flowrecon_filters_dir}/SimplificationConversion.cxx
-    ${_flowrecon_filters_dir}/TopologyConversion.cxx
-    ${_flowrecon_filters_dir}/VtkFilePoints.cxx
-    ${_flowrecon_filters_dir}/VtkMessageCapture.cxx
-    ${_flowrecon_filters_dir}/XmlBlockHeaders.cxx
-    ${_flowrecon_filters_dir}/XmlVtkGuard.cxx)
-vtk_module_include(FlowRecon::Filters PUBLIC "$<BUILD_INTERFACE:${_flowrecon_filters_dir}>")
+    ${_flowrecon_filters_dir}/Conversion/SamplesFromVTK.cxx
+    ${_flowrecon_filters_dir}/Conversion/SimplificationConversion.cxx
+    ${_flowrecon_filters_dir}/Conversion/TopologyConversion.cxx
+    ${_flowrecon_filters_dir}/IO/VtkFilePoints.cxx
+    ${_flowrecon_filters_dir}/IO/VtkMessageCapture.cxx
+    ${_flowrecon_filters_dir}/IO/XmlBlockHeaders.cxx
+    ${_flowrecon_filters_dir}/IO/XmlVtkGuard.cxx)
+# The filters (here), the readers' parsers and guards (IO) and the core <-> VTK
+# conversions (Conversion); headers are included by name.
+vtk_module_include(FlowRecon::Filters PUBLIC
+  "$<BUILD_INTERFACE:${_flowrecon_filters_dir}>"
+  "$<BUILD_INTERFACE:${_flowrecon_filters_dir}/IO>"
+  "$<BUILD_INTERFACE:${_flowrecon_filters_dir}/Conversion>")
 vtk_module_link(FlowRecon::Filters PRIVATE "$<BUILD_INTERFACE:FlowReconCore>")

@@ -31,18 +31,18 @@ endif ()
 # (docs/design.md, "Cost follows the output").
 flowrecon_add_cli_python_test(py.reconstruction.lazy_equals_eager test_lazy_equals_eager.py lazy_equals_eager)
 
-# Betti numbers of reconstructions (issue #9): the printed line, the field data
+# Betti numbers of reconstructions: the printed line, the field data
 # and the topology profile equal GUDHI's persistence over the written cells
 # filtered by Threshold, from a cloud and from a saved flow complex.
 flowrecon_add_cli_python_test(py.reconstruction.topology_profile test_topology_profile.py topology_profile)
 
-# Under-sampling warnings (issue #9): none on clean quasi-uniform samples, and
+# Under-sampling warnings: none on clean quasi-uniform samples, and
 # inside the thinned region of thinned ones.
 flowrecon_add_cli_python_test(py.reconstruction.undersampling test_undersampling.py undersampling)
 
 # The reconstruction does not depend on the order of the input lines (cube,
 # sphere, torus, exact grid, duplicates; t_p 1.1 and 0), and 10^6 lines holding
-# 5 distinct points give a .vtu of a handful of points (issue #12).
+# 5 distinct points give a .vtu of a handful of points.
 if (TARGET flowrecon)
   add_test(NAME py.reconstruction.permutation
     COMMAND "${FLOWRECON_TEST_PYTHON}" "${CMAKE_CURRENT_SOURCE_DIR}/test_permutation.py"

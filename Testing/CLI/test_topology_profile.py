@@ -1,4 +1,4 @@
-"""Betti numbers of reconstructions (issue #9) against GUDHI.
+"""Betti numbers of reconstructions against GUDHI.
 
 For each cloud, `flowrecon reconstruct CLOUD --tr 2 --tr-max 4 --topology-profile
 P.csv` writes the nested family below 4, prints 'Betti numbers: b0 b1 b2' at

@@ -1,4 +1,4 @@
-// Betti numbers of filtered cells (issue #9): known answers (spheres, a torus,
+// Betti numbers of filtered cells: known answers (spheres, a torus,
 // the projective plane over Z/2) and, on random complexes, Betti numbers from
 // the ranks of the boundary matrices (an independent computation) at many t.
 #include "CellHomology.h"

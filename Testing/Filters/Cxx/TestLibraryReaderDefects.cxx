@@ -1,4 +1,4 @@
-// Why vtkPointCloudReader keeps its own point parsers (issue #11): each case
+// Why vtkPointCloudReader keeps its own point parsers: each case
 // runs a point reader this machine's libraries provide (CGAL 5.5's; VTK 9.2's
 // PLY, OBJ, simple-points, PTS and delimited-text readers) on a bad file that
 // vtkPointCloudReader refuses or reads right (see TestPointCloudReader's

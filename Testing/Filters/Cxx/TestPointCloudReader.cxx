@@ -320,7 +320,7 @@ void TestBadInput()
     1, "not a legacy VTK file");
 }
 
-// What the libraries' readers get wrong (#11): each case below is misread by
+// What the libraries' readers get wrong: each case below is misread by
 // VTK 9.2's or CGAL 5.5's reader of its format (measured), which is why those
 // formats keep hand-written parsers; a swap for one of those readers fails here.
 void TestWhatLibraryReadersMisread()

@@ -1,7 +1,7 @@
 #include "Persistence.h"
 
 #include "PersistenceInput.h"
-#include "PersistenceUnionFind.h"
+#include "UnionFind.h"
 #include "Z2ColumnReduction.h"
 
 #include <tbb/blocked_range.h>
@@ -187,7 +187,7 @@ std::vector<std::uint8_t> PairComponents(const TwoEnds& edgeEnds, const Ranking&
   const std::array<std::size_t, 4>& n, FoundPairs& paired)
 {
   std::vector<std::uint8_t> killsH0(n[1], 0);
-  ElderUnionFind components(n[0] + 1);
+  UnionFind components(n[0] + 1);
   for (std::size_t e = 0; e < n[1]; ++e)
   {
     const Int ends = edgeEnds.Size(static_cast<Int>(e));
@@ -216,7 +216,7 @@ std::vector<std::uint8_t> PairVoids(const TwoEnds& faceEnds, const Ranking& rank
 {
   const Int n3 = static_cast<Int>(n[3]);
   std::vector<std::uint8_t> createsH2(n[2], 0);
-  ElderUnionFind regions(n[3] + 1);
+  UnionFind regions(n[3] + 1);
   for (std::size_t f = n[2]; f-- > 0;)
   {
     const Int ends = faceEnds.Size(static_cast<Int>(f));

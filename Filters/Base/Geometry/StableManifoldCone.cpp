@@ -1,6 +1,6 @@
 #include "StableManifoldCone.h"
 
-#include "PersistenceUnionFind.h"
+#include "UnionFind.h"
 
 #include <algorithm>
 #include <cmath>
@@ -110,7 +110,7 @@ std::vector<std::size_t> SheetsAroundEdge(const std::vector<Point3>& points,
   std::sort(sides.begin(), sides.end(), [](const Side& a, const Side& b) {
     return a.Angle < b.Angle || (a.Angle == b.Angle && a.Position < b.Position);
   });
-  ElderUnionFind sheet(r);
+  UnionFind sheet(r);
   for (std::size_t i = 0; i < r; ++i)
   {
     const Side& a = sides[i];
@@ -155,7 +155,7 @@ struct Pinch
 std::size_t JoinSheetsAt(const std::vector<Point3>& points,
   const std::vector<std::array<Id, 3>>& boundary, const std::vector<char>* twoSided,
   const std::vector<std::pair<Id, Id>>& corners, std::size_t begin, std::size_t end,
-  ElderUnionFind& sheet, std::vector<std::pair<Id, Id>>& around, std::vector<std::size_t>& shared)
+  UnionFind& sheet, std::vector<std::pair<Id, Id>>& around, std::vector<std::size_t>& shared)
 {
   const Id p = corners[begin].first;
   around.clear(); // (x, local triangle) for each edge (p, x)
@@ -235,7 +235,7 @@ std::vector<Pinch> FindPinches(const std::vector<Point3>& points,
     {
       ++end;
     }
-    ElderUnionFind sheet(end - begin);
+    UnionFind sheet(end - begin);
     if (JoinSheetsAt(points, boundary, twoSided, corners, begin, end, sheet, around, shared) > 1)
     {
       Pinch pinch{ p, {} };

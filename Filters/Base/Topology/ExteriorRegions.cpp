@@ -2,6 +2,7 @@
 
 #include "FastPredicates.h"
 #include "HugePages.h"
+#include "UnionFind.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -11,71 +12,6 @@
 
 namespace flowrecon
 {
-
-namespace
-{
-
-/// Union-find for concurrent unions: a root is the smallest element of its
-/// component whatever the order of the unions, so the result is deterministic.
-class ConcurrentUnionFind
-{
-public:
-  explicit ConcurrentUnionFind(std::size_t n)
-  {
-    ReserveHugePopulated(this->Parent, n);
-    this->Parent.resize(n);
-    tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) { this->Parent[i] = static_cast<std::int32_t>(i); });
-  }
-
-  std::int32_t Find(std::int32_t x)
-  {
-    while (true)
-    {
-      std::int32_t p = __atomic_load_n(&this->Parent[x], __ATOMIC_RELAXED);
-      if (p == x)
-      {
-        return x;
-      }
-      const std::int32_t g = __atomic_load_n(&this->Parent[p], __ATOMIC_RELAXED);
-      if (g != p)
-      {
-        // Halving; losing the race only leaves a longer path.
-        __atomic_compare_exchange_n(&this->Parent[x], &p, g, true, __ATOMIC_RELAXED, __ATOMIC_RELAXED);
-      }
-      x = p;
-    }
-  }
-
-  void Union(std::int32_t a, std::int32_t b)
-  {
-    while (true)
-    {
-      a = this->Find(a);
-      b = this->Find(b);
-      if (a == b)
-      {
-        return;
-      }
-      if (a < b)
-      {
-        std::swap(a, b);
-      }
-      // Link the larger root under the smaller, if it is still a root.
-      std::int32_t expected = a;
-      if (__atomic_compare_exchange_n(&this->Parent[a], &expected, b, false, __ATOMIC_RELAXED, __ATOMIC_RELAXED))
-      {
-        return;
-      }
-    }
-  }
-
-private:
-  // Plain integers under GCC's atomic built-ins: a vector of std::atomic
-  // cannot be sized after a reserve (for huge pages).
-  std::vector<std::int32_t> Parent;
-};
-
-} // namespace
 
 ExteriorRegions::ExteriorRegions(const Triangulation& tri, double levelSq)
   : LevelSq(levelSq)
@@ -142,7 +78,7 @@ ExteriorRegions::ExteriorRegions(const Triangulation& tri, double levelSq)
     return false;
   };
   // Element n: infinity, joined to every cell whose Voronoi ray lies in U_r.
-  ConcurrentUnionFind components(n + 1);
+  UnionFind components(n + 1);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n), [&](const tbb::blocked_range<std::size_t>& r) {
     for (std::size_t c = r.begin(); c != r.end(); ++c)
     {
@@ -165,10 +101,10 @@ ExteriorRegions::ExteriorRegions(const Triangulation& tri, double levelSq)
         const std::size_t other = d < 0 ? n : static_cast<std::size_t>(d);
         // Cells already joined need no predicate (most facets inside a region).
         if ((d < 0 || (other > c && above[other])) &&
-          components.Find(static_cast<std::int32_t>(c)) != components.Find(static_cast<std::int32_t>(other)) &&
+          components.FindConcurrent(static_cast<std::int32_t>(c)) != components.FindConcurrent(static_cast<std::int32_t>(other)) &&
           edgeAbove(h, i))
         {
-          components.Union(static_cast<std::int32_t>(c), static_cast<std::int32_t>(other));
+          components.UnionConcurrent(static_cast<std::int32_t>(c), static_cast<std::int32_t>(other));
         }
       }
     }
@@ -185,7 +121,7 @@ ExteriorRegions::ExteriorRegions(const Triangulation& tri, double levelSq)
     {
       if (above[c])
       {
-        region[c] = components.Find(static_cast<std::int32_t>(c));
+        region[c] = components.FindConcurrent(static_cast<std::int32_t>(c));
       }
     }
   });
@@ -201,7 +137,7 @@ ExteriorRegions::ExteriorRegions(const Triangulation& tri, double levelSq)
       ++this->Above;
     }
   }
-  const std::int32_t infinity = components.Find(static_cast<std::int32_t>(n));
+  const std::int32_t infinity = components.FindConcurrent(static_cast<std::int32_t>(n));
   this->Infinite = infinity == static_cast<std::int32_t>(n) ? this->Count_++ : -2 - region[infinity];
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n), [&](const tbb::blocked_range<std::size_t>& r) {
     for (std::size_t c = r.begin(); c != r.end(); ++c)

@@ -1,6 +1,6 @@
 // Betti numbers of a reconstruction and of its whole nested family: persistent
 // homology over Z/2 of the simplicial complex the drawn cells span, filtered by
-// the cells' Threshold (issue #9). The complex is the one a mesh tool sees in
+// the cells' Threshold. The complex is the one a mesh tool sees in
 // the written file: cells glued where they share point ids, every face of a
 // cell present with it.
 #ifndef flowrecon_CellHomology_h

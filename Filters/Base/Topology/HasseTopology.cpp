@@ -1,6 +1,6 @@
 #include "HasseTopology.h"
 
-#include "PersistenceUnionFind.h"
+#include "UnionFind.h"
 
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_sort.h>
@@ -173,7 +173,7 @@ std::vector<Bar> HasseBarcode(const std::vector<Node>& nodes, const std::vector<
       nodeOf.push_back(order[p]);
     }
   }
-  ElderUnionFind outside(nodeOf.size());
+  UnionFind outside(nodeOf.size());
   for (const auto& [a, b] : joined)
   {
     if (a < 0 || b < 0 || a >= static_cast<Id>(n) || b >= static_cast<Id>(n) ||
@@ -245,7 +245,7 @@ std::vector<Bar> HasseBarcode(const std::vector<Node>& nodes, const std::vector<
   // Forwards: components by union-find over the edges' ends, loops as they
   // close, and the 2-cells that do not separate fill a loop each.
   const std::vector<Int> ends = PairsOf(index, arcs, pos, 0, order.size());
-  ElderUnionFind inside(order.size());
+  UnionFind inside(order.size());
   std::vector<Int> loops; // edges of the open loops, latest last
   for (std::size_t p = 0; p < order.size(); ++p)
   {
