@@ -178,6 +178,33 @@ void ThresholdWarningsToVTK(const std::vector<std::string>& lines, vtkUnstructur
   grid->GetFieldData()->AddArray(warnings);
 }
 
+void TopologyTextToVTK(const std::string& line, vtkUnstructuredGrid* grid, vtkTable* text)
+{
+  auto field = NamedArray<vtkStringArray>(flowrecon::names::Topology);
+  field->InsertNextValue(line);
+  grid->GetFieldData()->AddArray(field);
+  if (!text)
+  {
+    return;
+  }
+  // Short lines for a corner of a view: the Betti numbers, the thresholds, the
+  // range, the warnings.
+  std::string lines = line;
+  for (std::size_t at = lines.find("; "); at != std::string::npos; at = lines.find("; ", at))
+  {
+    lines.replace(at, 2, "\n");
+  }
+  const std::size_t at = lines.find(" at t_r ");
+  if (lines.compare(0, 13, "Betti numbers") == 0 && at != std::string::npos)
+  {
+    lines[at] = '\n';
+  }
+  auto column = NamedArray<vtkStringArray>(flowrecon::names::Topology);
+  column->InsertNextValue(lines);
+  text->Initialize();
+  text->AddColumn(column);
+}
+
 void ThresholdsToVTK(double tp, double tr, bool tpChosen, bool trChosen,
   const StableWindow* window, vtkUnstructuredGrid* grid)
 {

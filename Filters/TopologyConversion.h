@@ -56,6 +56,13 @@ void ThresholdsToVTK(double tp, double tr, bool tpChosen, bool trChosen,
 /// string array ThresholdWarnings in the field data of `grid`.
 void ThresholdWarningsToVTK(const std::vector<std::string>& lines, vtkUnstructuredGrid* grid);
 
+/// The line saying what the reconstruction is (TopologyLine): the string array
+/// Topology of one value in the field data of `grid`, and, when `text` is
+/// given, a one-row table of a string column Topology holding the line cut
+/// into short lines (what a render view draws in a corner): after the Betti
+/// numbers, and at each "; ".
+void TopologyTextToVTK(const std::string& line, vtkUnstructuredGrid* grid, vtkTable* text);
+
 } // namespace flowrecon
 
 #endif
