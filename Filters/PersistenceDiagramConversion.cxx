@@ -230,6 +230,28 @@ void PersistenceCurveToVTK(
     table->AddColumn(a);
   }
   table->AddColumn(marker);
+  // The same curves for a chart with logarithmic axes, which draws no zero:
+  // zero counts are NaN there (a gap), and the mark starts at 1.
+  for (vtkDataArray* column : std::initializer_list<vtkDataArray*>{
+         ratio, all, byDimension[0], byDimension[1], byDimension[2], marker })
+  {
+    auto series = NamedArray<vtkDoubleArray>(column->GetName());
+    series->SetNumberOfTuples(rows);
+    for (vtkIdType row = 0; row < rows; ++row)
+    {
+      double v = column->GetComponent(row, 0);
+      if (column == marker && v == 0)
+      {
+        v = 1;
+      }
+      else if (column != ratio && column != marker && v == 0)
+      {
+        v = std::numeric_limits<double>::quiet_NaN();
+      }
+      series->SetValue(row, v);
+    }
+    table->GetFieldData()->AddArray(series);
+  }
   auto tp = NamedArray<vtkDoubleArray>("PersistenceThreshold");
   tp->InsertNextValue(threshold);
   table->GetFieldData()->AddArray(tp);

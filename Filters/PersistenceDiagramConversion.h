@@ -44,7 +44,8 @@ void AddThresholdLine(double threshold, vtkUnstructuredGrid* grid);
 /// number of pairs of finite ratio (not born at 0) in one dimension, NaN
 /// elsewhere: a line chart draws them as a vertical mark as high as the
 /// highest of those curves.
-/// Field data `PersistenceThreshold`.
+/// Field data `PersistenceThreshold`, and the same six columns for a chart
+/// with logarithmic axes: doubles, a zero count NaN, the mark from 1 up.
 void PersistenceCurveToVTK(
   const std::vector<PersistencePair>& pairs, double threshold, vtkTable* table);
 

@@ -40,7 +40,9 @@ void UnderSamplingToVTK(const std::vector<TopologyChange>& changes,
 /// points per row (the start and the end of its interval; a `limit` >= 1e308,
 /// every step, ends the last at t or at its start) and two at x = `t` (none
 /// for t >= 1e308), where `t_r` (NaN elsewhere) draws a vertical mark from 0
-/// to the largest Betti number.
+/// to the largest Betti number drawn. With a mark the steps start at t / 1.25
+/// (the rows before are left out, the one across it starts there), so that
+/// the chart's height is that of the Betti numbers around t.
 void TopologyToVTK(const std::vector<Bar>& bars, double t, double limit,
   vtkUnstructuredGrid* grid, vtkTable* table);
 

@@ -264,7 +264,7 @@ def main():
     check(colouring(shown[0]) == ("CELLS", "Index"),
           "Flow Reconstruction is coloured by %s" % (colouring(shown[0]),))
     check(legends(view) == ["Index"], "Flow Reconstruction: legends %s" % legends(view))
-    for view_type, port in (("FlowReconLogChartView", 1), ("XYChartView", 3)):
+    for view_type, port in (("FlowReconLogChartView", 1), ("FlowReconTopologyChartView", 3)):
         check((view_type, port) in where,
               "Flow Reconstruction: output %d is not in a %s (%s)" % (port, view_type, where))
     log_axis = [v.LeftAxisLogScale for v in GetViews() if v.GetXMLName() == "FlowReconLogChartView"]

@@ -127,6 +127,21 @@ def check_curve(name, pairs, table, tp):
     fd = table.GetFieldData().GetArray("PersistenceThreshold")
     CHK.check(fd is not None and fd.GetValue(0) == tp,
               "%s: curve field data PersistenceThreshold is not %g" % (name, tp))
+    # The chart's copy for log axes: the same curves, zeros as gaps, the mark from 1.
+    field = table.GetFieldData()
+    for c in ("Ratio", "Pairs", "PairsH0", "PairsH1", "PairsH2", "t_p"):
+        a = field.GetArray(c)
+        if not CHK.check(a is not None and a.GetNumberOfTuples() == len(x),
+                         "%s: the curve's field data has no series %s of %d values" % (name, c, len(x))):
+            continue
+        got = np.array([a.GetValue(k) for k in range(len(x))])
+        want = col[c].astype(float)
+        if c == "t_p":
+            want = np.where(want == 0, 1.0, want)
+        elif c != "Ratio":
+            want = np.where(want == 0, np.nan, want)
+        CHK.check(np.array_equal(got, want, equal_nan=True) and not np.any(got[~np.isnan(got)] <= 0),
+                  "%s: the field data series %s is not the column with its zeros as gaps" % (name, c))
 
 
 def check_diagram(name, points, pairs, cli_grid, grid, tp):
@@ -202,7 +217,7 @@ def check_views():
     pd = PersistenceDiagram(Input=FlowComplex(Input=src))  # noqa: F821
     controller = vtkSMParaViewPipelineControllerWithRendering()
     views = [controller.GetPreferredViewType(pd.SMProxy, port) for port in (0, 1)]
-    CHK.check(views == ["RenderView", "XYChartView"],
+    CHK.check(views == ["RenderView", "FlowReconPersistenceChartView"],
               "preferred views of ports 0 and 1 are %s" % views)
     names = [pd.SMProxy.GetOutputPortName(k) for k in range(pd.SMProxy.GetNumberOfOutputPorts())]
     CHK.check(names == ["Diagram", "Persistence Curve"], "output ports are %s" % names)
