@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """The views the Persistence Diagram filter opens (issue #10), as ParaView's Apply
-does it (ShowInPreferredView): port 0 in a render view, in 2D, drawing the pairs,
-the diagonal and the t_p line; port 1 in a line chart with logarithmic, titled
+does it (ShowInPreferredView): port 0 in a chart of its own
+(FlowReconDiagramChartView, birth and death axes) with the pairs as dots in the
+colours of their dimension and the diagonal, and in a render view, in 2D, drawing
+the pairs, the diagonal and the t_p line; port 1 in a line chart with logarithmic, titled
 axes (FlowReconPersistenceChartView) plotted against Ratio from the curve's field
 data, with the curves and the t_p mark. Both are rendered to PNG files, and the
 pictures must show the data: the diagram's pixels in the colours of its PairType
@@ -41,6 +43,37 @@ def picture(view, path):
     return rgb
 
 
+def check_diagram_chart(pd, view):
+    """The diagram's chart: titled axes, the dots of each dimension in their
+    colours (at least a few pixels each for H1 and H2, whose pairs exist on a
+    torus), the grey diagonal along y = x."""
+    rep = simple.GetDisplayProperties(pd, view)
+    settings = (rep.GetXMLName(), rep.AttributeType, rep.XArrayName,
+                sorted(rep.SeriesVisibility), view.BottomAxisTitle, view.LeftAxisTitle)
+    print("diagram chart:", settings, flush=True)
+    check(settings == ("PersistenceDiagramChartRepresentation", "Field Data", "Birth",
+                       ["Diagonal", "H0", "H1", "H2", "t_p"], "birth", "death"),
+          "the diagram's chart is %s" % (settings,))
+    colours = list(rep.SeriesColor)
+    h, w = 600, 800
+    rgb = picture(view, os.path.join(WORK, "diagram_chart.png")).reshape(h, w, 3)[::-1]
+    counts = {}
+    for name in ("H1", "H2", "Diagonal"):
+        k = colours.index(name)
+        c = np.array([float(v) * 255 for v in colours[k + 1:k + 4]])
+        counts[name] = int((np.linalg.norm(rgb - c, axis=2) < 40).sum())
+    print("diagram chart pixels by series colour:", counts, flush=True)
+    check(counts["H1"] >= 20 and counts["H2"] >= 20 and counts["Diagonal"] >= 300,
+          "the diagram's chart draws %s pixels of the H1, H2 and diagonal colours" % counts)
+    # The diagonal goes up to the right: its pixels' rows fall as columns grow.
+    k = colours.index("Diagonal")
+    c = np.array([float(v) * 255 for v in colours[k + 1:k + 4]])
+    rows, cols = np.nonzero(np.linalg.norm(rgb - c, axis=2) < 40)
+    if len(cols) > 10:
+        slope = np.polyfit(cols, rows, 1)[0]
+        check(slope < -0.3, "the diagonal's pixels slope by %.2f (rows per column)" % slope)
+
+
 def main():
     os.makedirs(WORK, exist_ok=True)
     simple.LoadPlugin(PLUGIN, remote=False, ns=globals())
@@ -58,10 +91,14 @@ def main():
     curve_view = controller.ShowInPreferredView(pd.SMProxy, 1, None)
     names = [v.GetXMLName() if v else None for v in (diagram_view, curve_view)]
     print("views:", names, flush=True)
-    if not check(names == ["RenderView", "FlowReconPersistenceChartView"],
-                 "ports 0 and 1 open in %s, expected RenderView, FlowReconPersistenceChartView"
-                 % names):
+    if not check(names == ["FlowReconDiagramChartView", "FlowReconPersistenceChartView"],
+                 "ports 0 and 1 open in %s, expected FlowReconDiagramChartView, "
+                 "FlowReconPersistenceChartView" % names):
         return
+    check_diagram_chart(pd, simple.servermanager._getPyProxy(diagram_view))
+    # The grid in a render view, as before: each pair a segment.
+    diagram_view = simple.CreateView("RenderView").SMProxy
+    controller.Show(pd.SMProxy, 0, diagram_view)
     # Port 1 in an existing render view still opens its own chart.
     check(controller.ShowInPreferredView(pd.SMProxy, 1, diagram_view).GetXMLName()
           == "FlowReconPersistenceChartView",
