@@ -46,6 +46,7 @@ struct Reconstruction
   std::vector<Node> Nodes; // for --jumps
   std::string Work;        // what the cloud's path did, for --timings
   double Tr = 0;           // the t_r used
+  double Limit = 0;        // where the topology profile's last row ends
   std::vector<double> Tps; // the t_p candidates (NaN: the stored file's)
   bool Automatic = false;  // Choice is set
   ThresholdChoice Choice;
@@ -76,6 +77,7 @@ Reconstruction FromCloud(const std::string& input,
   r.Nodes = std::move(report.Nodes);
   r.Work = std::move(report.Work);
   r.Tr = report.ReconstructionThreshold;
+  r.Limit = settings.Cap;
   r.Tps = settings.AutomaticPersistence ? settings.PersistenceCandidates
                                         : std::vector<double>{ settings.PersistenceThreshold };
   r.Automatic = report.Automatic;
@@ -176,6 +178,7 @@ Reconstruction FromComplex(const Arguments& args, vtkMultiBlockDataSet* complex,
   r.Grid = vtkUnstructuredGrid::SafeDownCast(reconstruction->GetOutputDataObject(0));
   r.Profile = vtkTable::SafeDownCast(reconstruction->GetOutputDataObject(1));
   r.Topology = vtkTable::SafeDownCast(reconstruction->GetOutputDataObject(3));
+  r.Limit = reconstruction->GetMaximumThreshold();
   clock("flow complex file, simplification, reconstruction");
   for (const std::string& w : VtkWarnings())
   {
@@ -307,6 +310,11 @@ int RunReconstruct(const Arguments& args)
   {
     ThresholdWarningsToVTK(choiceWarnings, r.Grid); // in the file, as in the filter's output
   }
+  // The filter's line, if any, is at the file's threshold (--tr-max): this one
+  // says what is printed, at t_r.
+  TopologyTextToVTK(TopologyLine(r.Grid, r.Topology, r.UnderSampling, r.Tr, r.Limit,
+                      settings.Topology ? "" : " (--no-betti)"),
+    r.Grid, nullptr);
   vtkNew<vtkXMLUnstructuredGridWriter> writer;
   WriteXML(writer, r.Grid, output);
   clock("writing");

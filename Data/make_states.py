@@ -92,6 +92,9 @@ def make(name, spec, plugin):
                 "Viridis (matplotlib)", True)
             display.RescaleTransferFunctionToDataRange(True, False)
             display.SetScalarBarVisibility(view, True)
+            # the answer in words (Topology Text) and the under-sampled places
+            simple.Show(simple.OutputPort(source, 5), view)
+            simple.Show(simple.OutputPort(source, 4), view)
         else:
             simple.Hide(source, view)
     if spec["view"] is None:  # the camera of the original demo state

@@ -78,6 +78,10 @@ constexpr const char* ThresholdsChosen = "ThresholdsChosen";
 // the field data of Flow Complex Simplification's output and of the
 // reconstruction's port 0).
 constexpr const char* ThresholdWarnings = "ThresholdWarnings";
+// What the reconstruction's topology is, in one line for people (a string
+// array of one value in the field data of port 0, and the column of the
+// one-row table of the topology text port, which a render view draws).
+constexpr const char* Topology = "Topology";
 // The t_p candidates an automatic t_p chose among, in order of preference.
 constexpr const char* PersistenceCandidates = "PersistenceCandidates";
 constexpr const char* Dimension = "Dimension";

@@ -4,9 +4,12 @@
 #include "Progress.h" // core: InputError
 
 #include "vtkDataArray.h"
+#include "vtkFieldData.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkStringArray.h"
 #include "vtkTable.h"
+#include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
 #include <cmath>
@@ -193,6 +196,76 @@ std::vector<std::string> ChoiceWarnings(const ThresholdChoice& choice,
     }
   }
   return lines;
+}
+
+std::string TopologyLine(vtkUnstructuredGrid* grid, vtkTable* topology,
+  vtkPolyData* undersampling, double t, double limit, const std::string& why)
+{
+  vtkFieldData* field = grid->GetFieldData();
+  // At t from the profile (a file's cells may go above t_r), else the grid's.
+  std::array<long long, 3> betti;
+  if (!BettiNumbersAt(topology, t, betti))
+  {
+    vtkDataArray* b = field->GetArray(names::BettiNumbers);
+    if (!b || b->GetNumberOfTuples() < 3)
+    {
+      return "t_r " + Number(t, 3) + ": no Betti numbers" + why;
+    }
+    for (vtkIdType d = 0; d < 3; ++d)
+    {
+      betti[d] = static_cast<long long>(b->GetComponent(d, 0));
+    }
+  }
+  auto value = [field](const char* name, vtkIdType k, double otherwise) {
+    vtkDataArray* a = field->GetArray(name);
+    return a && a->GetNumberOfTuples() > k ? a->GetComponent(k, 0) : otherwise;
+  };
+  std::string line = "Betti numbers";
+  for (const long long b : betti)
+  {
+    line += " " + std::to_string(b);
+  }
+  line += " at t_r " + Number(t, 3) +
+    (value(names::ThresholdsChosen, 0, 0) != 0 ? " (auto)" : "");
+  if (field->GetArray(names::UsedPersistenceThreshold))
+  {
+    line += ", t_p " + Short(value(names::UsedPersistenceThreshold, 0, 0)) +
+      (value(names::ThresholdsChosen, 1, 0) != 0 ? " (auto)" : "");
+  }
+  // Where these Betti numbers hold: the chosen window, or the profile's.
+  StableWindow around;
+  if (vtkDataArray* w = field->GetArray(names::StableWindow))
+  {
+    if (w->GetNumberOfTuples() == 2 && w->GetComponent(0, 0) < t && t <= w->GetComponent(1, 0))
+    {
+      around.From = w->GetComponent(0, 0);
+      around.To = w->GetComponent(1, 0);
+    }
+  }
+  if (around.Length() == 0)
+  {
+    for (const StableWindow& w : StableWindows(TopologyRows(topology), 1, limit))
+    {
+      if (w.From < t && t <= w.To)
+      {
+        around = w;
+      }
+    }
+  }
+  if (around.Length() > 0)
+  {
+    // Nothing is known above the limit (Maximum Threshold). No brackets:
+    // ParaView 5.11's text display draws "]" as ")".
+    line += "; unchanged for " + Number(around.From, 2) + " < t_r" +
+      (around.To >= 1e308 ? std::string("") : " <= " + Number(around.To, 2)) +
+      (around.To >= limit && limit < 1e308 ? " (as far as computed)" : "");
+  }
+  std::size_t warnings = UnderSampledPlaces(undersampling).size();
+  if (auto* lines = vtkStringArray::SafeDownCast(field->GetAbstractArray(names::ThresholdWarnings)))
+  {
+    warnings += static_cast<std::size_t>(lines->GetNumberOfValues());
+  }
+  return line + "; " + std::to_string(warnings) + (warnings == 1 ? " warning" : " warnings");
 }
 
 long long StepsBelow(vtkTable* profile, double t)

@@ -16,6 +16,7 @@
 
 class vtkPolyData;
 class vtkTable;
+class vtkUnstructuredGrid;
 
 namespace flowrecon
 {
@@ -46,6 +47,19 @@ std::vector<std::string> ChoiceWarnings(const ThresholdChoice& choice,
 std::vector<std::string> ReconstructionChoiceWarnings(const ThresholdChoice& choice);
 std::vector<std::string> PersistenceChoiceWarnings(
   const ThresholdChoice& choice, const std::vector<double>& tps, bool trChosen);
+
+/// One line for people saying what the reconstruction at t_r = `t` is, read
+/// back from the outputs as written: "Betti numbers 1 2 1 at t_r 3.100 (auto),
+/// t_p 1.1 (auto); unchanged for 3.00 < t_r <= 4.00; 2 warnings". The Betti
+/// numbers at `t` from the rows of `topology` (the last holds up to `limit`),
+/// else the field data BettiNumbers of `grid`; from the field data of `grid`
+/// PersistenceThreshold, ThresholdsChosen, StableWindow (else the range is the
+/// profile's) and ThresholdWarnings; the warnings are counted as the command
+/// line prints them, the lines of ThresholdWarnings and one per place of
+/// `undersampling`. Without Betti numbers: "t_r 2.000: no Betti numbers"
+/// followed by `why`.
+std::string TopologyLine(vtkUnstructuredGrid* grid, vtkTable* topology,
+  vtkPolyData* undersampling, double t, double limit, const std::string& why);
 
 /// The number of steps of `profile` (ReconstructionToVTK's table) with
 /// Threshold < t: the steps of the reconstruction at t_r = t.

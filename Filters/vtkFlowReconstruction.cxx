@@ -150,7 +150,7 @@ vtkStandardNewMacro(vtkFlowReconstruction);
 //------------------------------------------------------------------------------
 vtkFlowReconstruction::vtkFlowReconstruction()
 {
-  this->SetNumberOfOutputPorts(5);
+  this->SetNumberOfOutputPorts(6);
 }
 
 //------------------------------------------------------------------------------
@@ -166,9 +166,9 @@ int vtkFlowReconstruction::FillInputPortInformation(int, vtkInformation* info)
 //------------------------------------------------------------------------------
 int vtkFlowReconstruction::FillOutputPortInformation(int port, vtkInformation* info)
 {
-  const char* types[5] = { "vtkUnstructuredGrid", "vtkTable", "vtkPolyData", "vtkTable",
-    "vtkPolyData" };
-  if (port < 0 || port > 4)
+  const char* types[6] = { "vtkUnstructuredGrid", "vtkTable", "vtkPolyData", "vtkTable",
+    "vtkPolyData", "vtkTable" };
+  if (port < 0 || port > 5)
   {
     return 0;
   }
@@ -184,7 +184,8 @@ int vtkFlowReconstruction::RequestData(
   if (!input || !vtkUnstructuredGrid::GetData(outputVector, RECONSTRUCTION) ||
     !vtkTable::GetData(outputVector, PROFILE) || !vtkPolyData::GetData(outputVector, SPONSOR_ARROWS) ||
     !vtkTable::GetData(outputVector, TOPOLOGY_PROFILE) ||
-    !vtkPolyData::GetData(outputVector, UNDER_SAMPLING))
+    !vtkPolyData::GetData(outputVector, UNDER_SAMPLING) ||
+    !vtkTable::GetData(outputVector, TOPOLOGY_TEXT))
   {
     vtkErrorMacro("Missing input or output.");
     return 0;
@@ -374,6 +375,7 @@ void vtkFlowReconstruction::FillOutputs(vtkMultiBlockDataSet* input, double tmax
   auto* arrows = vtkPolyData::GetData(outputVector, SPONSOR_ARROWS);
   auto* topology = vtkTable::GetData(outputVector, TOPOLOGY_PROFILE);
   auto* undersampling = vtkPolyData::GetData(outputVector, UNDER_SAMPLING);
+  auto* text = vtkTable::GetData(outputVector, TOPOLOGY_TEXT);
   const Cache& c = *this->Cached;
   const flowrecon::FlowComplex& fc = c.FC;
   flowrecon::ReconstructionToVTK(fc, c.Carrier, c.Run, t, c.TriangleGroups, c.TetraGroups,
@@ -383,10 +385,12 @@ void vtkFlowReconstruction::FillOutputs(vtkMultiBlockDataSet* input, double tmax
   flowrecon::ProfileJumpsToVTK(fc, c.Run, static_cast<std::size_t>(this->NumberOfJumps), profile);
   flowrecon::GridBelow(c.Full, t, flowrecon::EdgeMultiplicities(fc.Nodes, fc.Arcs, c.Run, t), grid);
   flowrecon::ReleaseFreedMemory(); // the previous output's arrays, replaced just now
+  std::string why; // no Betti numbers
   if (!this->ComputeTopology)
   {
     topology->Initialize();
     undersampling->Initialize();
+    why = " (Compute Topology is off)";
   }
   else if (c.TopologyError.empty())
   {
@@ -407,7 +411,10 @@ void vtkFlowReconstruction::FillOutputs(vtkMultiBlockDataSet* input, double tmax
     topology->Initialize();
     undersampling->Initialize();
     vtkWarningMacro(<< "no Betti numbers: " << c.TopologyError);
+    why = ": " + c.TopologyError;
   }
+  flowrecon::TopologyTextToVTK(
+    flowrecon::TopologyLine(grid, topology, undersampling, t, tmax, why), grid, text);
   // What ParaView colours by in a render view: the reconstruction by Index (the
   // array Flow Complex's critical points and stable manifolds are coloured by),
   // the under-sampling points by nothing, so that the view has one colour legend.

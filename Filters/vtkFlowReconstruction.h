@@ -57,6 +57,12 @@
  * the Betti numbers for t_r in [t_r, UnderSamplingWindow x t_r), at the
  * critical point of the node bringing it, point data `Threshold`, `Dimension`,
  * `Change` (+1 / -1), `Spacing` (diameter of the empty ball there), `NodeId`.
+ *
+ * Output port 5 (vtkTable): the topology text, one row of a string column
+ * `Topology`: what the reconstruction is, in words (its Betti numbers, the
+ * thresholds and whether they were chosen, the range of t_r over which the
+ * Betti numbers hold, how many warnings), one clause per line; port 0 has the
+ * same as a one-line field data string `Topology` (flowrecon::TopologyLine).
  */
 #ifndef vtkFlowReconstruction_h
 #define vtkFlowReconstruction_h
@@ -185,7 +191,8 @@ public:
     PROFILE = 1,
     SPONSOR_ARROWS = 2,
     TOPOLOGY_PROFILE = 3,
-    UNDER_SAMPLING = 4
+    UNDER_SAMPLING = 4,
+    TOPOLOGY_TEXT = 5
   };
 
 protected:

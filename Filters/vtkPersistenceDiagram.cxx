@@ -124,6 +124,7 @@ int vtkPersistenceDiagram::RequestData(
   this->UpdateProgress(0.8);
   flowrecon::DiagramToVTK(pairs, diagram);
   flowrecon::AddThresholdLine(this->PersistenceThreshold, diagram);
+  flowrecon::DiagramChartToVTK(pairs, this->PersistenceThreshold, diagram);
   flowrecon::PersistenceCurveToVTK(pairs, this->PersistenceThreshold, curve);
   this->SetProgressText(nullptr);
   this->UpdateProgress(1.0);

@@ -10,6 +10,7 @@
 #include "vtkSMProxy.h"
 #include "vtkSMSettings.h"
 
+#include <cstdlib>
 #include <cstring>
 #include <iterator>
 #include <limits>
@@ -110,6 +111,72 @@ void vtkFlowReconDisplayInitializationHelper::PostInitializeProxy(
       p->Modified();
     }
     changed = true;
+  }
+
+  // Spheres sized by a point array: Point Gaussian, radius = factor x value.
+  const char* scaleArray = xml->GetAttribute("sphere_radius_array");
+  if (scaleArray && IsFree(repr, representation, "Representation", ts))
+  {
+    double factor = 1;
+    xml->GetScalarAttribute("sphere_radius_factor", &factor);
+    vtkSMPropertyHelper(representation).Set("Point Gaussian");
+    const struct
+    {
+      const char* Name;
+      int Value;
+    } settings[] = { { "ShaderPreset", 1 /* Sphere */ }, { "ScaleByArray", 1 },
+      { "UseScaleFunction", 0 } };
+    for (const auto& setting : settings)
+    {
+      if (vtkSMProperty* p = repr->GetProperty(setting.Name))
+      {
+        vtkSMPropertyHelper(p).Set(setting.Value);
+      }
+    }
+    if (vtkSMProperty* p = repr->GetProperty("SetScaleArray"))
+    {
+      vtkSMPropertyHelper(p).SetInputArrayToProcess(vtkDataObject::FIELD_ASSOCIATION_POINTS, scaleArray);
+    }
+    if (vtkSMProperty* p = repr->GetProperty("GaussianRadius"))
+    {
+      vtkSMPropertyHelper(p).Set(factor);
+      p->Modified(); // not replaced by the bounds domain's default
+    }
+    double opacity = 1;
+    vtkSMProperty* p = repr->GetProperty("Opacity");
+    if (xml->GetScalarAttribute("opacity", &opacity) && p)
+    {
+      vtkSMPropertyHelper(p).Set(opacity);
+    }
+    changed = true;
+  }
+
+  // Text lines justified (0 left, 1 centred, 2 right).
+  int justification = 0;
+  vtkSMProperty* justify = repr->GetProperty("Justification");
+  if (xml->GetScalarAttribute("text_justification", &justification) &&
+    IsFree(repr, justify, "Justification", ts))
+  {
+    vtkSMPropertyHelper(justify).Set(justification);
+    changed = true;
+  }
+
+  // One colour (no array, no legend), replacing the palette's.
+  const char* rgb = xml->GetAttribute("solid_color");
+  if (rgb)
+  {
+    std::istringstream words(rgb);
+    double c[3] = { 1, 1, 1 };
+    words >> c[0] >> c[1] >> c[2];
+    for (const char* name : { "AmbientColor", "DiffuseColor" })
+    {
+      vtkSMProperty* p = repr->GetProperty(name);
+      if (p && IsFree(repr, p, name, ts))
+      {
+        vtkSMPropertyHelper(p).Set(c, 3);
+        changed = true;
+      }
+    }
   }
 
   if (changed)

@@ -24,6 +24,12 @@
  * selectors. `glyph_vectors="Direction"` (FlowReconArrowsRepresentation, the
  * sponsor arrows of Flow Reconstruction) shows the data as 3D Glyphs, arrows
  * oriented by that point vector and scaled by its magnitude times 1.
+ * `sphere_radius_array="Spacing"` (FlowReconUnderSamplingRepresentation)
+ * shows the points as Point Gaussian spheres of radius `sphere_radius_factor`
+ * times that point array, with `opacity`; `solid_color="1 0 1"` colours the
+ * display with that RGB (ambient and diffuse colours);
+ * `text_justification="0"` (FlowReconTopologyTextRepresentation) left-justifies
+ * a text display's lines (1 centred, 2 right).
  *
  * Not Python- or ClientServer-wrapped: FlowReconDisplayDefaults() registers the
  * class with the ClientServer interpreter, which is how ParaView creates it.

@@ -138,6 +138,60 @@ void AddThresholdLine(double threshold, vtkUnstructuredGrid* grid)
   cells.Append(origin, to, -2, -2, 0, 0, 0);
 }
 
+void DiagramChartToVTK(
+  const std::vector<PersistencePair>& pairs, double threshold, vtkUnstructuredGrid* grid)
+{
+  struct Row
+  {
+    double X;
+    int Dimension; // -1: a row of the lines only
+    double Death;
+  };
+  double top = 0;
+  for (const auto& p : pairs)
+  {
+    top = std::max(top, std::isinf(p.DeathValue) ? p.BirthValue : p.DeathValue);
+  }
+  const bool line = threshold >= 1 && !std::isinf(threshold);
+  std::vector<Row> rows;
+  rows.reserve(pairs.size() + 3);
+  rows.push_back({ 0, -1, 0 });
+  for (const auto& p : pairs)
+  {
+    rows.push_back({ p.BirthValue, p.Dimension, std::isinf(p.DeathValue) ? top : p.DeathValue });
+  }
+  rows.push_back({ top, -1, 0 });
+  if (line)
+  {
+    rows.push_back({ top / threshold, -1, 0 });
+  }
+  std::stable_sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) { return a.X < b.X; });
+  const char* names[6] = { flowrecon::names::Birth, "H0", "H1", "H2", "Diagonal", "t_p" };
+  vtkSmartPointer<vtkDoubleArray> series[6];
+  const auto n = static_cast<vtkIdType>(rows.size());
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (int k = 0; k < 6; ++k)
+  {
+    series[k] = NamedArray<vtkDoubleArray>(names[k]);
+    series[k]->SetNumberOfTuples(n);
+  }
+  for (vtkIdType r = 0; r < n; ++r)
+  {
+    const Row& row = rows[r];
+    series[0]->SetValue(r, row.X);
+    for (int d = 0; d < 3; ++d)
+    {
+      series[1 + d]->SetValue(r, row.Dimension == d ? row.Death : nan);
+    }
+    series[4]->SetValue(r, row.X);
+    series[5]->SetValue(r, line && row.X * threshold <= top * (1 + 1e-12) ? row.X * threshold : nan);
+  }
+  for (auto& a : series)
+  {
+    grid->GetFieldData()->AddArray(a);
+  }
+}
+
 void PersistenceCurveToVTK(
   const std::vector<PersistencePair>& pairs, double threshold, vtkTable* table)
 {
@@ -230,6 +284,28 @@ void PersistenceCurveToVTK(
     table->AddColumn(a);
   }
   table->AddColumn(marker);
+  // The same curves for a chart with logarithmic axes, which draws no zero:
+  // zero counts are NaN there (a gap), and the mark starts at 1.
+  for (vtkDataArray* column : std::initializer_list<vtkDataArray*>{
+         ratio, all, byDimension[0], byDimension[1], byDimension[2], marker })
+  {
+    auto series = NamedArray<vtkDoubleArray>(column->GetName());
+    series->SetNumberOfTuples(rows);
+    for (vtkIdType row = 0; row < rows; ++row)
+    {
+      double v = column->GetComponent(row, 0);
+      if (column == marker && v == 0)
+      {
+        v = 1;
+      }
+      else if (column != ratio && column != marker && v == 0)
+      {
+        v = std::numeric_limits<double>::quiet_NaN();
+      }
+      series->SetValue(row, v);
+    }
+    table->GetFieldData()->AddArray(series);
+  }
   auto tp = NamedArray<vtkDoubleArray>("PersistenceThreshold");
   tp->InsertNextValue(threshold);
   table->GetFieldData()->AddArray(tp);

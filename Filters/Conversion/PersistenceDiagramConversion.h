@@ -35,6 +35,16 @@ void DiagramToVTK(const std::vector<PersistencePair>& pairs, vtkUnstructuredGrid
 /// `PersistenceThreshold` either way.
 void AddThresholdLine(double threshold, vtkUnstructuredGrid* grid);
 
+/// The diagram as the series of a line chart against `Birth`, in the field
+/// data of `grid` (doubles, one row per pair in order of birth, a row at 0 and
+/// one at the top of the range, and one where the t_p line reaches it): `Birth`,
+/// `H0`, `H1`, `H2` (the death of the row's pair in its dimension, NaN in the
+/// others and on the added rows; essential classes at the top), `Diagonal`
+/// (= Birth) and `t_p` (threshold x Birth up to the top, NaN above or for a
+/// threshold below 1).
+void DiagramChartToVTK(
+  const std::vector<PersistencePair>& pairs, double threshold, vtkUnstructuredGrid* grid);
+
 /// The persistence curve in `table`: the number of finite pairs whose ratio
 /// death / birth is at least x, one row per x in 1 and the distinct finite
 /// ratios above 1, increasing. Columns `Ratio` (x), `Pairs` (all dimensions),
@@ -44,7 +54,8 @@ void AddThresholdLine(double threshold, vtkUnstructuredGrid* grid);
 /// number of pairs of finite ratio (not born at 0) in one dimension, NaN
 /// elsewhere: a line chart draws them as a vertical mark as high as the
 /// highest of those curves.
-/// Field data `PersistenceThreshold`.
+/// Field data `PersistenceThreshold`, and the same six columns for a chart
+/// with logarithmic axes: doubles, a zero count NaN, the mark from 1 up.
 void PersistenceCurveToVTK(
   const std::vector<PersistencePair>& pairs, double threshold, vtkTable* table);
 

@@ -17,6 +17,7 @@
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
+#include <utility>
 #include <initializer_list>
 #include <limits>
 
@@ -30,7 +31,12 @@ namespace
 /// rows with slopes, and the rows (one per change) are what the command line
 /// writes, so the steps go to the table's field data. Two points per row, at
 /// the start and the end of its interval, and two at x = t for a vertical mark
-/// (`t_r`, NaN elsewhere) from 0 to the largest Betti number.
+/// (`t_r`, NaN elsewhere) from 0 to the largest Betti number drawn. With a
+/// mark, the steps start at t / ChartSpan: the chart's height is then that of
+/// the Betti numbers around t_r, not of the hundreds of components near
+/// t_r = 1 (the rows keep the whole profile).
+constexpr double ChartSpan = 1.25;
+
 void AddStaircase(const std::vector<TopologyStep>& profile, double t, double limit,
   vtkFieldData* field)
 {
@@ -46,12 +52,27 @@ void AddStaircase(const std::vector<TopologyStep>& profile, double t, double lim
   }
   steps[4] = NamedArray<vtkDoubleArray>("t_r");
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  double height = 1;
-  for (const TopologyStep& step : profile)
-  {
-    for (int d = 0; d < 3; ++d)
+  const bool mark = t < Unbounded;
+  const double from = mark ? std::max(1.0, t / ChartSpan) : 0;
+  // The interval of row k: (start, end], clipped to the chart's span.
+  auto interval = [&](std::size_t k) {
+    double end = k + 1 < profile.size() ? profile[k + 1].Threshold : limit;
+    if (end >= Unbounded)
     {
-      height = std::max(height, static_cast<double>(step.Betti[d]));
+      end = mark ? std::max(profile[k].Threshold, t) : profile[k].Threshold;
+    }
+    return std::make_pair(std::max(profile[k].Threshold, from), end);
+  };
+  auto drawn = [&](std::size_t k) {
+    const auto span = interval(k);
+    return span.second > from || (k + 1 == profile.size() && span.second >= span.first);
+  };
+  double height = 1;
+  for (std::size_t k = 0; k < profile.size(); ++k)
+  {
+    for (int d = 0; d < 3 && drawn(k); ++d)
+    {
+      height = std::max(height, static_cast<double>(profile[k].Betti[d]));
     }
   }
   // A point of the curves (of `step`, NaN without) and of the mark.
@@ -63,7 +84,6 @@ void AddStaircase(const std::vector<TopologyStep>& profile, double t, double lim
     }
     steps[4]->InsertNextValue(m);
   };
-  const bool mark = t < Unbounded;
   if (mark && t <= profile.front().Threshold)
   {
     point(t, nullptr, 0); // before the first interval: the mark alone
@@ -71,15 +91,13 @@ void AddStaircase(const std::vector<TopologyStep>& profile, double t, double lim
   }
   for (std::size_t k = 0; k < profile.size(); ++k)
   {
-    const double start = profile[k].Threshold;
-    // The last interval ends at the limit; with none, at t or where it starts.
-    double end = k + 1 < profile.size() ? profile[k + 1].Threshold : limit;
-    if (end >= Unbounded)
+    if (!drawn(k))
     {
-      end = mark ? std::max(start, t) : start;
+      continue;
     }
+    const auto [start, end] = interval(k);
     point(start, &profile[k], nan);
-    if (mark && start < t && t <= end)
+    if (mark && profile[k].Threshold < t && t <= end)
     {
       point(t, &profile[k], 0);
       point(t, &profile[k], height);
@@ -176,6 +194,33 @@ void ThresholdWarningsToVTK(const std::vector<std::string>& lines, vtkUnstructur
     warnings->InsertNextValue(line);
   }
   grid->GetFieldData()->AddArray(warnings);
+}
+
+void TopologyTextToVTK(const std::string& line, vtkUnstructuredGrid* grid, vtkTable* text)
+{
+  auto field = NamedArray<vtkStringArray>(flowrecon::names::Topology);
+  field->InsertNextValue(line);
+  grid->GetFieldData()->AddArray(field);
+  if (!text)
+  {
+    return;
+  }
+  // Short lines for a corner of a view: the Betti numbers, the thresholds, the
+  // range, the warnings.
+  std::string lines = line;
+  for (std::size_t at = lines.find("; "); at != std::string::npos; at = lines.find("; ", at))
+  {
+    lines.replace(at, 2, "\n");
+  }
+  const std::size_t at = lines.find(" at t_r ");
+  if (lines.compare(0, 13, "Betti numbers") == 0 && at != std::string::npos)
+  {
+    lines[at] = '\n';
+  }
+  auto column = NamedArray<vtkStringArray>(flowrecon::names::Topology);
+  column->InsertNextValue(lines);
+  text->Initialize();
+  text->AddColumn(column);
 }
 
 void ThresholdsToVTK(double tp, double tr, bool tpChosen, bool trChosen,

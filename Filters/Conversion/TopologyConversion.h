@@ -40,7 +40,9 @@ void UnderSamplingToVTK(const std::vector<TopologyChange>& changes,
 /// points per row (the start and the end of its interval; a `limit` >= 1e308,
 /// every step, ends the last at t or at its start) and two at x = `t` (none
 /// for t >= 1e308), where `t_r` (NaN elsewhere) draws a vertical mark from 0
-/// to the largest Betti number.
+/// to the largest Betti number drawn. With a mark the steps start at t / 1.25
+/// (the rows before are left out, the one across it starts there), so that
+/// the chart's height is that of the Betti numbers around t.
 void TopologyToVTK(const std::vector<Bar>& bars, double t, double limit,
   vtkUnstructuredGrid* grid, vtkTable* table);
 
@@ -55,6 +57,13 @@ void ThresholdsToVTK(double tp, double tr, bool tpChosen, bool trChosen,
 /// What the choice of the thresholds warns about, one line per value: the
 /// string array ThresholdWarnings in the field data of `grid`.
 void ThresholdWarningsToVTK(const std::vector<std::string>& lines, vtkUnstructuredGrid* grid);
+
+/// The line saying what the reconstruction is (TopologyLine): the string array
+/// Topology of one value in the field data of `grid`, and, when `text` is
+/// given, a one-row table of a string column Topology holding the line cut
+/// into short lines (what a render view draws in a corner): after the Betti
+/// numbers, and at each "; ".
+void TopologyTextToVTK(const std::string& line, vtkUnstructuredGrid* grid, vtkTable* text);
 
 } // namespace flowrecon
 

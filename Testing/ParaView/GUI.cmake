@@ -41,6 +41,21 @@ if (FLOWRECON_BUILD_PARAVIEW_PLUGIN AND TARGET FlowRecon)
       # another test's window opened on the same X server can cover.
       RESOURCE_LOCK flowrecon_x_screen
       TIMEOUT 240)
+    # No warning (no Output Messages window) on Apply of each filter from the menu
+    # and on loading each example state: e.g. a view hint whose type has no
+    # Pipeline Browser icon in 5.11.
+    add_test(NAME gui.no_messages
+      COMMAND sh "${_need_x}" "${FLOWRECON_TEST_PYTHON}"
+              "${CMAKE_CURRENT_LIST_DIR}/test_quiet_gui.py" "${FLOWRECON_PARAVIEW_GUI}"
+              "$<TARGET_FILE:FlowRecon>" "${PROJECT_SOURCE_DIR}"
+              "${CMAKE_CURRENT_BINARY_DIR}/quiet_gui")
+    set_tests_properties(gui.no_messages PROPERTIES
+      PASS_REGULAR_EXPRESSION "PASS"
+      FAIL_REGULAR_EXPRESSION "FAIL"
+      SKIP_RETURN_CODE 77
+      LABELS "paraview;gui"
+      RESOURCE_LOCK flowrecon_x_screen
+      TIMEOUT 600)
   endif ()
   if (FLOWRECON_PVBATCH)
     # the demo script of .ci/demo on the hemispheres: pipeline, .vtu, pictures, profile

@@ -16,4 +16,12 @@ if (FLOWRECON_BUILD_PARAVIEW_PLUGIN AND TARGET FlowRecon AND TARGET flowrecon AN
   # The pipeline at its defaults chooses t_p and t_r as the command line does,
   # and gets a 10^5-point i.i.d. torus right (1 2 1).
   flowrecon_add_pipeline_vs_cli_test(automatic_pipeline test_automatic_pipeline.py 600)
+  # The answer in words (field data Topology, the Topology Text port) agrees with
+  # the other outputs and with what the command line prints and writes.
+  add_test(NAME pv.reconstruction.topology_text
+    COMMAND "${FLOWRECON_PVPYTHON}" "${CMAKE_CURRENT_SOURCE_DIR}/test_topology_text.py"
+            "$<TARGET_FILE:FlowRecon>" "$<TARGET_FILE:flowrecon>" "${PROJECT_SOURCE_DIR}/Data"
+            "${CMAKE_CURRENT_BINARY_DIR}/topology_text")
+  set_tests_properties(pv.reconstruction.topology_text PROPERTIES LABELS "paraview"
+    ENVIRONMENT "DISPLAY=" TIMEOUT 300 PASS_REGULAR_EXPRESSION "PASS" FAIL_REGULAR_EXPRESSION "FAIL")
 endif ()

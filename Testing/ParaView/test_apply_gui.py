@@ -14,13 +14,18 @@ through Python's Show(); this is the GUI's own path:
   * Flow Complex and Flow Complex Simplification: shown in the render view with the
     blocks CriticalPoints and GabrielEdges, coloured by the cell array Index, one
     legend (Index);
-  * Flow Reconstruction: outputs 0 (coloured by Index) and 4 in the render view, one
-    legend; 2 (sponsor arrows) not shown; 1 and 3 (the profiles) in line charts, the
-    reconstruction profile's with a logarithmic left axis.
+  * Flow Reconstruction: outputs 0 (coloured by Index), 4 and 5 in the render view,
+    one legend; 2 (sponsor arrows) not shown; 1 and 3 (the profiles) in line charts,
+    the reconstruction profile's with a logarithmic left axis. In the picture of the
+    render view, output 5 (the topology text) draws in the upper left corner and
+    nowhere else (the pixels that change when it is hidden), and output 4 (the
+    under-sampling places, two on this torus) draws magenta spheres (at least 300
+    pixels change from magenta when it is hidden, most of those that change).
 Then the sponsor arrows are shown (the eye: Show() in the render view): 3D Glyphs
 oriented and scaled by Direction, and the picture must have clearly more drawn pixels
 than the same lines drawn as a wireframe (the arrows have heads and a width).
-Saves <prefix>_layout.png (the GUI's layout after Apply) and <prefix>_arrows.png.
+Saves <prefix>_layout.png (the GUI's layout after Apply), <prefix>_render.png (the
+render view after Apply) and <prefix>_arrows.png.
 Prints "test_apply_gui: PASS"/"FAIL" with os.write and os._exit()s.
 """
 
@@ -102,6 +107,71 @@ def drawn_mask(view, path):
     w, h, _ = r.GetOutput().GetDimensions()
     rgb = vtk_to_numpy(r.GetOutput().GetPointData().GetScalars())[:, :3].reshape(h, w, 3)
     return ~(rgb == rgb[0, 0]).all(axis=2)
+
+
+def picture(view, path):
+    """The render view at its size in the GUI as an (h, w, 3) int array, row 0 at
+    the top (a larger picture would scale the text)."""
+    SaveScreenshot(path, view, ImageResolution=list(view.ViewSize))
+    from vtkmodules.vtkIOImage import vtkPNGReader
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    r = vtkPNGReader()
+    r.SetFileName(path)
+    r.Update()
+    w, h, _ = r.GetOutput().GetDimensions()
+    rgb = vtk_to_numpy(r.GetOutput().GetPointData().GetScalars())[:, :3].reshape(h, w, 3)
+    return rgb[::-1].astype(int)
+
+
+def changed_when_hidden(view, display, path):
+    """Pixels that differ clearly between the picture with `display` and without."""
+    shown = picture(view, path)
+    display.Visibility = 0
+    hidden = picture(view, path.replace(".png", "_hidden.png"))
+    display.Visibility = 1
+    picture(view, path)
+    # beyond rounding: translucent geometry nudges other pixels by a few levels
+    return shown, (np.abs(shown - hidden) > 24).any(axis=2)
+
+
+def check_text_and_spheres(view, recon, shown, out):
+    text, spheres = shown[5], shown[4]
+    say("test_apply_gui: output 4 as %s (radius %s x %s, opacity %s, colour %s); output 5 as %s "
+        "at %s" % (spheres.Representation, spheres.GaussianRadius, spheres.SetScaleArray[1],
+                   spheres.Opacity, list(spheres.DiffuseColor), text.GetXMLName(),
+                   text.WindowLocation))
+    check(spheres.Representation == "Point Gaussian" and spheres.SetScaleArray[1] == "Spacing",
+          "output 4 is shown as %s scaled by %s" % (spheres.Representation, spheres.SetScaleArray))
+    check(text.WindowLocation == "Upper Left Corner", "the text is at %s" % text.WindowLocation)
+    # The text: changed pixels, all in the upper left quarter, a few rows from the top.
+    rgb, diff = changed_when_hidden(view, text, out + "_render.png")
+    rows, cols = np.nonzero(diff)
+    say("test_apply_gui: the topology text changes %d pixels, rows %s-%s, columns %s-%s" % (
+        len(rows), rows.min() if len(rows) else None, rows.max() if len(rows) else None,
+        cols.min() if len(cols) else None, cols.max() if len(cols) else None))
+    h, w = diff.shape
+    check(len(rows) > 500, "the topology text draws %d pixels" % len(rows))
+    check(len(rows) == 0 or (rows.max() < h / 3 and cols.min() < w / 10 and cols.max() < 0.8 * w),
+          "the topology text draws outside the upper left corner of the %d x %d view" % (w, h))
+    # The spheres: a few hundred magenta pixels at least (red and blue above
+    # green; part of them is behind the torus), most of what they change, where
+    # the same pixels without them are not (the torus, the background).
+    rgb, diff = changed_when_hidden(view, spheres, out + "_spheres.png")
+    spheres.Visibility = 0
+    hidden = picture(view, out + "_spheres_hidden.png")
+    spheres.Visibility = 1
+
+    def magenta(pixels):
+        return int(((pixels[:, 0] > pixels[:, 1] + 20) & (pixels[:, 2] > pixels[:, 1] + 20)).sum())
+
+    with_spheres, without = magenta(rgb[diff]), magenta(hidden[diff])
+    say("test_apply_gui: the spheres change %d pixels, %d magenta (without them: %d)" % (
+        int(diff.sum()), with_spheres, without))
+    check(with_spheres >= 300, "the spheres draw %d magenta pixels" % with_spheres)
+    # the rest is their shading, dark towards their outline
+    check(with_spheres >= 0.5 * diff.sum() and without <= 0.1 * diff.sum(),
+          "the spheres are not magenta: %d of %d pixels (%d without them)"
+          % (with_spheres, diff.sum(), without))
 
 
 def look_along_longest_arrow(view, recon):
@@ -189,12 +259,12 @@ def main():
     say("test_apply_gui: Flow Reconstruction after Apply: render view ports %s, colouring %s, "
         "legends %s, views %s" % (sorted(shown), colouring(shown[0]) if 0 in shown else None,
                                   legends(view), where))
-    check(sorted(shown) == [0, 4], "Flow Reconstruction: render view ports %s, expected 0 and 4"
-          % sorted(shown))
+    check(sorted(shown) == [0, 4, 5],
+          "Flow Reconstruction: render view ports %s, expected 0, 4 and 5" % sorted(shown))
     check(colouring(shown[0]) == ("CELLS", "Index"),
           "Flow Reconstruction is coloured by %s" % (colouring(shown[0]),))
     check(legends(view) == ["Index"], "Flow Reconstruction: legends %s" % legends(view))
-    for view_type, port in (("FlowReconLogChartView", 1), ("XYChartView", 3)):
+    for view_type, port in (("FlowReconLogChartView", 1), ("FlowReconTopologyChartView", 3)):
         check((view_type, port) in where,
               "Flow Reconstruction: output %d is not in a %s (%s)" % (port, view_type, where))
     log_axis = [v.LeftAxisLogScale for v in GetViews() if v.GetXMLName() == "FlowReconLogChartView"]
@@ -202,6 +272,7 @@ def main():
     check(all(p != 2 for _, p in where), "the sponsor arrows are shown on Apply (%s)" % where)
     layout = GetLayout(view)
     SaveScreenshot(out + "_layout.png", layout, ImageResolution=[1200, 700])
+    check_text_and_spheres(view, recon, shown, out)
 
     # The sponsor arrows, one click away, alone in the render view.
     for d in displays_in(view, recon).values():

@@ -6,8 +6,9 @@ scalar-coloured display), then the colouring array and its association, the
 colour legends, the blocks shown and the camera after Reset Camera.
 
 - Flow Reconstruction: output 0 coloured by the cell array Index, output 2
-  (sponsor arrows) not shown, output 4 (under-sampling points) not coloured:
-  one colour legend in the view.
+  (sponsor arrows) not shown, output 4 (under-sampling points) not coloured,
+  Point Gaussian spheres of radius Spacing: one colour legend in the view;
+  output 5 (the topology text) left-justified in the upper left corner.
 - Flow Complex and Flow Complex Simplification (the plugin's display
   FlowReconMultiBlockRepresentation and its initialization helper): only the
   block CriticalPoints shown, coloured by the point array Index, whose colour map
@@ -75,6 +76,9 @@ def legends(view):
 
 
 def colouring(display):
+    """(association, array) of a display; a text display has none."""
+    if display.GetProperty("ColorArrayName") is None:
+        return ("", "")
     return tuple(display.ColorArrayName)
 
 
@@ -272,8 +276,8 @@ def reconstruction(work):
     shown = apply(recon, view, reader)
     print("Flow Reconstruction: ports in the render view %s, colourings %s, legends %s" % (
         sorted(shown), {p: colouring(d) for p, d in shown.items()}, legends(view)), flush=True)
-    check(sorted(shown) == [0, 4],
-          "Flow Reconstruction: ports shown in the render view %s, expected 0 and 4 "
+    check(sorted(shown) == [0, 4, 5],
+          "Flow Reconstruction: ports shown in the render view %s, expected 0, 4 and 5 "
           "(2, the sponsor arrows, only on request)" % sorted(shown))
     check(view.SMProxy.FindRepresentation(recon.SMProxy, 2) is None,
           "Flow Reconstruction: the sponsor arrows (output 2) are shown on Apply")
@@ -287,6 +291,17 @@ def reconstruction(work):
               "Flow Reconstruction: the under-sampling points are coloured by %s (a second "
               "legend)" % (colouring(shown[4]),))
         check(shown[4].Visibility == 1, "Flow Reconstruction: output 4 hidden")
+        spheres = (shown[4].Representation, shown[4].ShaderPreset, shown[4].SetScaleArray[1],
+                   shown[4].ScaleByArray, shown[4].UseScaleFunction, shown[4].GaussianRadius)
+        check(spheres == ("Point Gaussian", "Sphere", "Spacing", 1, 0, 1.0),
+              "Flow Reconstruction: the under-sampling points are shown as %s, expected "
+              "spheres of radius 1 x Spacing" % (spheres,))
+    if 5 in shown:
+        check(shown[5].GetXMLName() == "FlowReconTopologyTextRepresentation"
+              and shown[5].WindowLocation == "Upper Left Corner"
+              and shown[5].Justification == "Left",
+              "Flow Reconstruction: the topology text is shown as %s at %s, %s" % (
+                  shown[5].GetXMLName(), shown[5].WindowLocation, shown[5].Justification))
     check(legends(view) == ["Index"],
           "Flow Reconstruction: colour legends %s, expected one, Index" % legends(view))
     lut = simple.GetColorTransferFunction("Index")

@@ -127,6 +127,52 @@ def check_curve(name, pairs, table, tp):
     fd = table.GetFieldData().GetArray("PersistenceThreshold")
     CHK.check(fd is not None and fd.GetValue(0) == tp,
               "%s: curve field data PersistenceThreshold is not %g" % (name, tp))
+    # The chart's copy for log axes: the same curves, zeros as gaps, the mark from 1.
+    field = table.GetFieldData()
+    for c in ("Ratio", "Pairs", "PairsH0", "PairsH1", "PairsH2", "t_p"):
+        a = field.GetArray(c)
+        if not CHK.check(a is not None and a.GetNumberOfTuples() == len(x),
+                         "%s: the curve's field data has no series %s of %d values" % (name, c, len(x))):
+            continue
+        got = np.array([a.GetValue(k) for k in range(len(x))])
+        want = col[c].astype(float)
+        if c == "t_p":
+            want = np.where(want == 0, 1.0, want)
+        elif c != "Ratio":
+            want = np.where(want == 0, np.nan, want)
+        CHK.check(np.array_equal(got, want, equal_nan=True) and not np.any(got[~np.isnan(got)] <= 0),
+                  "%s: the field data series %s is not the column with its zeros as gaps" % (name, c))
+
+
+def check_chart_series(name, pairs, grid, tp):
+    """The diagram's chart series (field data) against the CLI's pairs: every pair
+    a point (birth, death) of the series of its dimension, essential ones at the
+    top; the diagonal y = x; the t_p line y = t_p x up to the top."""
+    field = grid.GetFieldData()
+    series = {}
+    for c in ("Birth", "H0", "H1", "H2", "Diagonal", "t_p"):
+        a = field.GetArray(c)
+        if not CHK.check(a is not None, "%s: the diagram's field data has no series %s" % (name, c)):
+            return
+        series[c] = np.array([a.GetValue(k) for k in range(a.GetNumberOfTuples())])
+    x = series["Birth"]
+    top = max(b if math.isinf(e) else e for _, b, e in pairs)
+    CHK.check(np.all(np.diff(x) >= 0) and x[0] == 0 and x[-1] == top,
+              "%s: Birth does not increase from 0 to the top %g" % (name, top))
+    points = sorted((d, b, top if math.isinf(e) else e) for d, b, e in pairs)
+    drawn = sorted((d, x[k], series["H%d" % d][k]) for d in range(3)
+                   for k in np.nonzero(~np.isnan(series["H%d" % d]))[0])
+    CHK.check(drawn == points, "%s: the series H0-H2 hold %d points, the CLI %d pairs (or differ)"
+              % (name, len(drawn), len(points)))
+    CHK.check(np.array_equal(series["Diagonal"], x), "%s: Diagonal is not y = x" % name)
+    line = series["t_p"]
+    if tp >= 1:
+        on = ~np.isnan(line)
+        CHK.check(np.allclose(line[on], tp * x[on], rtol=1e-12) and
+                  abs(line[on].max() - top) <= 1e-12 * top and np.all(x[~on] * tp > top),
+                  "%s: t_p is not death = %g x birth up to the top" % (name, tp))
+    else:
+        CHK.check(np.all(np.isnan(line)), "%s: t_p %g < 1 still drew a line" % (name, tp))
 
 
 def check_diagram(name, points, pairs, cli_grid, grid, tp):
@@ -160,6 +206,7 @@ def check_diagram(name, points, pairs, cli_grid, grid, tp):
     fd = grid.GetFieldData().GetArray("PersistenceThreshold")
     CHK.check(fd is not None and fd.GetValue(0) == tp,
               "%s: diagram field data PersistenceThreshold is not %g" % (name, tp))
+    check_chart_series(name, pairs, grid, tp)
     # The independent oracle.
     mine = [(v[1], v[3], end[1] if v[4] else math.inf) for v, (_, end) in got if v[0] >= 0]
     diam = fio.diameter(points)
@@ -202,7 +249,7 @@ def check_views():
     pd = PersistenceDiagram(Input=FlowComplex(Input=src))  # noqa: F821
     controller = vtkSMParaViewPipelineControllerWithRendering()
     views = [controller.GetPreferredViewType(pd.SMProxy, port) for port in (0, 1)]
-    CHK.check(views == ["RenderView", "XYChartView"],
+    CHK.check(views == ["FlowReconDiagramChartView", "FlowReconPersistenceChartView"],
               "preferred views of ports 0 and 1 are %s" % views)
     names = [pd.SMProxy.GetOutputPortName(k) for k in range(pd.SMProxy.GetNumberOfOutputPorts())]
     CHK.check(names == ["Diagram", "Persistence Curve"], "output ports are %s" % names)

@@ -85,8 +85,9 @@ def main():
     views = {k: controller.ShowInPreferredView(recon.SMProxy, k, None) for k in (1, 3)}
     names = {k: v.GetXMLName() if v else None for k, v in views.items()}
     print("views:", names, flush=True)
-    if not check(names == {1: "FlowReconLogChartView", 3: "XYChartView"},
-                 "ports 1 and 3 open in %s, expected FlowReconLogChartView and XYChartView"
+    if not check(names == {1: "FlowReconLogChartView", 3: "FlowReconTopologyChartView"},
+                 "ports 1 and 3 open in %s, expected FlowReconLogChartView and "
+                 "FlowReconTopologyChartView"
                  % names):
         return
     pview, tview = (simple.servermanager._getPyProxy(views[k]) for k in (1, 3))
@@ -106,6 +107,10 @@ def main():
     check(priority[0] <= min(trs) and max(trs) <= priority[1],
           "the priorities %s do not span t_r %s" % (priority, trs))
 
+    # The topology steps start at t_r / 1.25, which moves the automatic range of
+    # the bottom axis with t_r: fix it to measure where the mark is.
+    tview.BottomAxisUseCustomRange = 1
+    tview.BottomAxisRangeMinimum, tview.BottomAxisRangeMaximum = 1.0, 4.0
     rows = {"linear": {}, "log": {}}
     columns = {}
     for tr in trs:

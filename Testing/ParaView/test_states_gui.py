@@ -49,10 +49,11 @@ def check(obj, prop, arguments):
 
 def torus_betti_checks():
     # the state's spreadsheet shows the field data of "Reconstruction (automatic t_r)":
-    # BettiNumbers one row per dimension, in column 6 of ParaView 5.11's model (after
-    # the chosen thresholds, their window and warnings; probed cell by cell)
+    # BettiNumbers one row per dimension, in column 7 of ParaView 5.11's model (after
+    # the chosen thresholds, their window, warnings and the Topology line; probed cell
+    # by cell)
     return [check(SPREADSHEET, "modelRowCount", "3")] + [
-        check(SPREADSHEET, "modelItemData", "%d.6,%d" % (row, value))
+        check(SPREADSHEET, "modelItemData", "%d.7,%d" % (row, value))
         for row, value in enumerate((1, 2, 1))]
 
 
