@@ -1,4 +1,4 @@
-// What FlowRecon's outputs look like by default in ParaView (issue #10); run when
+// What FlowRecon's outputs look like by default in ParaView; run when
 // the plugin is loaded (paraview_add_plugin's INITIALIZERS).
 #ifndef FlowReconDisplayDefaults_h
 #define FlowReconDisplayDefaults_h

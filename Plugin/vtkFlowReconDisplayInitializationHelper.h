@@ -1,4 +1,4 @@
-// The default look of a FlowRecon multiblock output in a render view (issue #10).
+// The default look of a FlowRecon multiblock output in a render view.
 #ifndef vtkFlowReconDisplayInitializationHelper_h
 #define vtkFlowReconDisplayInitializationHelper_h
 

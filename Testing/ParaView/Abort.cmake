@@ -1,4 +1,4 @@
-# Abort of a long Flow Complex run from ParaView's GUI (issue #10). Included from Testing/ParaView/CMakeLists.txt.
+# Abort of a long Flow Complex run from ParaView's GUI. Included from Testing/ParaView/CMakeLists.txt.
 #   pv.abort   SetAbortExecute(1) from a progress observer (the only way an abort reaches
 #              a filter in ParaView 5.11) at five points of a run on 5e4 random points:
 #              the run returns within 3 s, empty output, a warning; the flag stays set

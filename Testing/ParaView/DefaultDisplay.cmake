@@ -1,4 +1,4 @@
-# What Flow Complex and the other filters show by default in ParaView (issue #10):
+# What Flow Complex and the other filters show by default in ParaView:
 # Apply's displays in a render view, their colouring, colour legends, blocks and
 # camera, the plugin's categorical colour maps and that user settings beat them
 # (pv.default_display, no X server needed). Included from

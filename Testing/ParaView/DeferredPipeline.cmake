@@ -1,4 +1,4 @@
-# Deferred patches through the ParaView filters (issue #8): Flow Complex with
+# Deferred patches through the ParaView filters: Flow Complex with
 # Defer Patches Above against the eager pipeline, cell by cell, and the errors
 # of settings that do not fit (pv.deferred_pipeline, no X server needed).
 # Included from Testing/ParaView/CMakeLists.txt.

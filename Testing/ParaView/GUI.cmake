@@ -27,7 +27,7 @@ if (FLOWRECON_BUILD_PARAVIEW_PLUGIN AND TARGET FlowRecon)
       RESOURCE_LOCK flowrecon_x_screen
       TIMEOUT 180)
     # The defaults a user gets from the Filters menu and the Apply button, and the
-    # sponsor arrows drawn as arrows (issue #10).
+    # sponsor arrows drawn as arrows.
     add_test(NAME gui.apply_defaults
       COMMAND sh "${_need_x}" "${FLOWRECON_PARAVIEW_GUI}" --dr
               "--script=${CMAKE_CURRENT_LIST_DIR}/test_apply_gui.py")

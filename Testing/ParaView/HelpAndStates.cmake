@@ -1,4 +1,4 @@
-# ParaView help pages, example states and the preferred reader (issue #10). Included from Testing/ParaView/CMakeLists.txt.
+# ParaView help pages, example states and the preferred reader. Included from Testing/ParaView/CMakeLists.txt.
 #   pv.help              the .qch built into the plugin: a page per filter and reader at
 #                        the address of ParaView's "?" button, every output name explained,
 #                        pictures, embedded in the plugin library (no X server)

@@ -1,4 +1,4 @@
-# The Persistence Diagram filter (issue #10): equal to `flowrecon diagram` and to
+# The Persistence Diagram filter: equal to `flowrecon diagram` and to
 # GUDHI's alpha persistence, its persistence curve, bad input, the preferred views
 # (pv.persistence_diagram, no X server needed); and the views ParaView opens for
 # its ports, rendered (render.persistence_diagram, needs X: run ctest under

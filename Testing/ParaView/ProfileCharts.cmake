@@ -1,4 +1,4 @@
-# The charts Flow Reconstruction's profiles open in (issue #10): the preferred
+# The charts Flow Reconstruction's profiles open in: the preferred
 # views and chart settings of ports 1 and 3, their t_r marks and their contents
 # against `flowrecon reconstruct --profile/--topology-profile`
 # (pv.profile_charts, no X server needed); and both charts rendered

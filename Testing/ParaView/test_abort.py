@@ -1,7 +1,7 @@
 """Abort of a long Flow Complex run through vtkAlgorithm::SetAbortExecute, the only
 way an abort reaches a filter in ParaView 5.11 (its GUI's Abort button is never
-enabled and pqProgressManager::abort() has no receiver; see test_abort_gui.py and
-issue #10). Run with pvpython (no X server needed):
+enabled and pqProgressManager::abort() has no receiver; see test_abort_gui.py).
+Run with pvpython (no X server needed):
 
     pvpython test_abort.py PLUGIN_PATH [NPOINTS]
 

@@ -1,5 +1,5 @@
 """What the Abort button of ParaView's status bar does to a long Flow Complex run in
-the ParaView Qt GUI (built-in session), measured in the real GUI (issue #10):
+the ParaView Qt GUI (built-in session), measured in the real GUI:
 
     FLOWRECON_PLUGIN=<build>/lib/paraview-5.11/plugins/FlowRecon/FlowRecon.so \\
     xvfb-run -a -s "-screen 0 1280x1024x24" paraview --dr --script=test_abort_gui.py

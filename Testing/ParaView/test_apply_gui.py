@@ -1,5 +1,5 @@
 """The displays a user gets in the ParaView Qt GUI by choosing each FlowRecon filter
-in the Filters menu and pressing Apply (issue #10, "readable defaults"), measured in
+in the Filters menu and pressing Apply, measured in
 the real GUI:
 
     FLOWRECON_PLUGIN=<build>/lib/paraview-5.11/plugins/FlowRecon/FlowRecon.so \\

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """What a user sees when pressing Apply on each FlowRecon filter in a render view
-(issue #10, "readable defaults"), with no X server: every output port shown as
+(readable defaults), with no X server: every output port shown as
 Apply does it (ShowInPreferredView, the input hidden, a colour legend for each
 scalar-coloured display), then the colouring array and its association, the
 colour legends, the blocks shown and the camera after Reset Camera.

@@ -1,4 +1,4 @@
-"""Deferred patches through the ParaView filters (issue #8): Flow Complex with
+"""Deferred patches through the ParaView filters: Flow Complex with
 Defer Patches Above = T leaves out the 1-2 arcs of the index-2 saddles at least T
 times above the largest Gabriel edge (T = 4 in ParaView; 2 here, where
 these small clouds have many such patches); Flow Complex Simplification records what a

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The Persistence Diagram filter (issue #10) in pvpython.
+"""The Persistence Diagram filter in pvpython.
 
 For a few clouds, Flow Complex -> Persistence Diagram in ParaView must give
 - on port 0, the grid `flowrecon diagram -o PD.vtu` writes, cell by cell (points

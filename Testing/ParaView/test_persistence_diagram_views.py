@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The views the Persistence Diagram filter opens (issue #10), as ParaView's Apply
+"""The views the Persistence Diagram filter opens, as ParaView's Apply
 does it (ShowInPreferredView): port 0 in a chart of its own
 (FlowReconDiagramChartView, birth and death axes) with the pairs as dots in the
 colours of their dimension and the diagonal, and in a render view, in 2D, drawing

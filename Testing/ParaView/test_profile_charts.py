@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The charts Flow Reconstruction's profiles open in (issue #10), as ParaView's
+"""The charts Flow Reconstruction's profiles open in, as ParaView's
 Apply does it (ShowInPreferredView), with no X server: port 1 (Profile) and
 port 3 (Topology Profile) open in line charts (FlowReconLogChartView with a log
 left axis, FlowReconTopologyChartView), their axes titled (Step and Priority,

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The charts Flow Reconstruction's profiles open in (issue #10), rendered: port
+"""The charts Flow Reconstruction's profiles open in, rendered: port
 1 (Profile) and port 3 (Topology Profile) shown as Apply does it
 (ShowInPreferredView) and saved as PNG files. The pictures must show the data
 and the t_r marks where t_r is: in the profile, a horizontal line whose height

@@ -1,4 +1,4 @@
-"""ParaView shows what the CLI prints (issue #9): in pvpython, Flow Complex ->
+"""ParaView shows what the CLI prints: in pvpython, Flow Complex ->
 Simplification -> Reconstruction (defaults, Maximum Threshold 4) on a sphere
 sample with a thinned polar cap and on the clean sample. The filter's field
 data BettiNumbers equals the CLI's 'Betti numbers:' line, its Topology Profile
