@@ -220,20 +220,23 @@ void GroupArrays(vtkPointData* pointData, const std::vector<const char*>& names,
   }
 }
 
-} // namespace
-
-void ReadPly(
-  const std::string& file, std::string_view text, std::vector<double>& xyz, vtkPointData* pointData)
+struct PlyHeader
 {
-  Lines lines(file, text);
+  std::string Format;
+  std::vector<PlyElement> Elements;
+};
+
+// The header, up to end_header; `lines` is left at the data.
+PlyHeader ReadPlyHeader(const std::string& file, Lines& lines)
+{
   std::string_view line;
   std::vector<std::string_view> fields;
   if (!lines.Next(line) || Trim(line) != "ply")
   {
     Fail(file, 0, "not a PLY file (it does not start with 'ply')");
   }
-  std::string format;
-  std::vector<PlyElement> elements;
+  PlyHeader header;
+  std::vector<PlyElement>& elements = header.Elements;
   for (;;)
   {
     if (!lines.Next(line))
@@ -257,7 +260,7 @@ void ReadPly(
       (fields[1] == "ascii" || fields[1] == "binary_little_endian" ||
         fields[1] == "binary_big_endian"))
     {
-      format = fields[1];
+      header.Format = fields[1];
     }
     else if (fields[0] == "element" && fields.size() == 3)
     {
@@ -286,17 +289,18 @@ void ReadPly(
       Fail(file, lines.Number, "invalid PLY header line " + Quote(Trim(line)));
     }
   }
-  if (format.empty())
+  if (header.Format.empty())
   {
     Fail(file, 0, "the PLY header has no format line");
   }
-  const auto vertexElement = std::find_if(
-    elements.begin(), elements.end(), [](const PlyElement& e) { return e.Name == "vertex"; });
-  if (vertexElement == elements.end())
-  {
-    Fail(file, 0, "the PLY file has no vertex element");
-  }
-  const PlyElement& vertex = *vertexElement;
+  return header;
+}
+
+// Which vertex properties are x, y and z; refuses a count the data cannot hold,
+// so that nothing is allocated for it.
+std::array<int, 3> VertexAxes(
+  const std::string& file, const PlyHeader& header, const PlyElement& vertex, std::size_t dataBytes)
+{
   std::array<int, 3> axis{ { -1, -1, -1 } };
   std::size_t minimumBytes = 0; // bytes one vertex takes at least
   for (std::size_t i = 0; i < vertex.Properties.size(); ++i)
@@ -309,9 +313,10 @@ void ReadPly(
         axis[k] = static_cast<int>(i);
       }
     }
-    minimumBytes += format == "ascii" ? 2
-                                      : static_cast<std::size_t>(vtkAbstractArray::GetDataTypeSize(
-                                          property.CountType ? property.CountType : property.Type));
+    minimumBytes += header.Format == "ascii"
+      ? 2
+      : static_cast<std::size_t>(vtkAbstractArray::GetDataTypeSize(
+          property.CountType ? property.CountType : property.Type));
   }
   for (int k = 0; k < 3; ++k)
   {
@@ -320,16 +325,19 @@ void ReadPly(
       Fail(file, 0, std::string("the PLY vertex element has no '") + AxisName[k] + "' property");
     }
   }
-  // Never allocate for a count the file cannot hold.
-  const std::size_t dataBytes = text.size() - lines.Offset();
   if (vertex.Count > 0 && static_cast<unsigned long long>(vertex.Count) > dataBytes / minimumBytes)
   {
     Fail(file, 0,
       "the PLY header announces " + std::to_string(vertex.Count) + " vertices but only " +
         std::to_string(dataBytes) + " bytes of data follow (truncated?)");
   }
+  return axis;
+}
 
-  // One point data array per scalar property other than x, y, z.
+// One point data array per scalar vertex property other than x, y, z.
+std::vector<vtkSmartPointer<vtkDataArray>> VertexArrays(
+  const PlyElement& vertex, const std::array<int, 3>& axis)
+{
   std::vector<vtkSmartPointer<vtkDataArray>> arrays(vertex.Properties.size());
   for (std::size_t i = 0; i < vertex.Properties.size(); ++i)
   {
@@ -341,10 +349,18 @@ void ReadPly(
       arrays[i]->SetNumberOfTuples(vertex.Count);
     }
   }
+  return arrays;
+}
+
+// The elements' values up to the vertices' end: coordinates to xyz, the other
+// scalar properties to their arrays.
+void ReadVertices(const std::string& file, const PlyHeader& header, const PlyElement& vertex,
+  const std::array<int, 3>& axis, PlyCursor& cursor, std::vector<double>& xyz,
+  std::vector<vtkSmartPointer<vtkDataArray>>& arrays)
+{
   xyz.reserve(3 * static_cast<std::size_t>(vertex.Count));
   std::vector<double> values(vertex.Properties.size());
-  PlyCursor cursor(file, lines, text, format);
-  for (const PlyElement& element : elements)
+  for (const PlyElement& element : header.Elements)
   {
     const bool isVertex = &element == &vertex;
     for (long long n = 0; n < element.Count && !element.Properties.empty(); ++n)
@@ -389,6 +405,25 @@ void ReadPly(
       break; // the elements after the vertices are not needed
     }
   }
+}
+
+} // namespace
+
+void ReadPly(
+  const std::string& file, std::string_view text, std::vector<double>& xyz, vtkPointData* pointData)
+{
+  Lines lines(file, text);
+  const PlyHeader header = ReadPlyHeader(file, lines);
+  const auto vertex = std::find_if(header.Elements.begin(), header.Elements.end(),
+    [](const PlyElement& e) { return e.Name == "vertex"; });
+  if (vertex == header.Elements.end())
+  {
+    Fail(file, 0, "the PLY file has no vertex element");
+  }
+  const std::array<int, 3> axis = VertexAxes(file, header, *vertex, text.size() - lines.Offset());
+  std::vector<vtkSmartPointer<vtkDataArray>> arrays = VertexArrays(*vertex, axis);
+  PlyCursor cursor(file, lines, text, header.Format);
+  ReadVertices(file, header, *vertex, axis, cursor, xyz, arrays);
   for (const auto& array : arrays)
   {
     if (array)
@@ -400,7 +435,6 @@ void ReadPly(
   GroupArrays(pointData, { "red", "green", "blue", "alpha" }, "RGBA", false);
   GroupArrays(pointData, { "red", "green", "blue" }, "RGB", false);
 }
-
 
 } // namespace reader
 } // namespace flowrecon

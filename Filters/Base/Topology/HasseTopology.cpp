@@ -63,6 +63,237 @@ std::vector<std::int8_t> Indices(const std::vector<Node>& nodes)
   return index;
 }
 
+/// The barcode of the presence filtration, built in two passes over it (the
+/// steps of HasseBarcode).
+class Barcode
+{
+public:
+  std::vector<Bar> Bars;
+
+  Barcode(std::vector<std::int8_t> index, const std::vector<double>& presence)
+    : Index(std::move(index))
+    , Presence(presence)
+  {
+    this->SortFiltration();
+  }
+
+  /// Backwards, on the complement: maxima outside K_t joined by index-2 nodes
+  /// outside it; a join that merges two components closes a void (H2).
+  void Outside(const std::vector<Arc>& arcs, const std::vector<std::pair<Id, Id>>& joined)
+  {
+    UnionFind outside = this->OutsideAtInfinity(arcs, joined);
+    const std::vector<Int> sides = PairsOf(this->Index, arcs, this->Pos, 2, this->Order.size());
+    this->Separates.assign(this->Order.size(), 0);
+    for (std::size_t p = this->Order.size(); p-- > 0;)
+    {
+      const Int s = this->Order[p];
+      if (this->Index[s] != 2)
+      {
+        continue;
+      }
+      const Int a = sides[2 * p], b = sides[2 * p + 1];
+      if ((a >= 0) != (b >= 0))
+      {
+        NotClosed("index-2 node " + std::to_string(s) + " has one side");
+      }
+      if (a < 0)
+      {
+        continue; // both sides in one maximum: the arcs cancelled mod 2
+      }
+      if (this->Before(a, p) || this->Before(b, p))
+      {
+        NotClosed("a maximum is inserted before its boundary node " + std::to_string(s));
+      }
+      const Int dies = outside.Merge(this->ElementOf[a], this->ElementOf[b]);
+      if (dies >= 0)
+      {
+        this->Separates[p] = 1;
+        const Int m = this->NodeOf[dies];
+        this->Make(2, s, this->Pos[m] >= 0 ? m : -1);
+      }
+    }
+  }
+
+  /// Forwards: components by union-find over the edges' ends (H0), loops as
+  /// they close, and the 2-cells that do not separate fill a loop each (H1).
+  void Inside(const std::vector<Arc>& arcs)
+  {
+    const std::vector<Int> ends = PairsOf(this->Index, arcs, this->Pos, 0, this->Order.size());
+    UnionFind inside(this->Order.size());
+    std::vector<Int> loops; // edges of the open loops, latest last
+    for (std::size_t p = 0; p < this->Order.size(); ++p)
+    {
+      const Int v = this->Order[p];
+      const int dimension = this->Index[v];
+      if (dimension == 1)
+      {
+        const Int a = ends[2 * p], b = ends[2 * p + 1];
+        if ((a >= 0) != (b >= 0) ||
+          (a >= 0 && (this->Pos[a] < 0 || this->Pos[b] < 0 || this->After(a, p) || this->After(b, p))))
+        {
+          NotClosed("edge " + std::to_string(v) + " is inserted before its ends");
+        }
+        // A component is named by its oldest vertex: the younger one dies.
+        const Int dies = a >= 0 ? inside.Merge(this->Pos[a], this->Pos[b]) : -1;
+        if (dies >= 0)
+        {
+          this->Make(0, this->Order[dies], v);
+        }
+        else
+        {
+          loops.push_back(v);
+        }
+      }
+      else if (dimension == 2 && !this->Separates[p])
+      {
+        if (loops.empty())
+        {
+          NotClosed("2-cell " + std::to_string(v) + " fills no loop");
+        }
+        this->Make(1, loops.back(), v);
+        loops.pop_back();
+      }
+    }
+    for (std::size_t p = 0; p < this->Order.size(); ++p)
+    {
+      if (this->Index[this->Order[p]] == 0 && inside.Find(static_cast<Int>(p)) == static_cast<Int>(p))
+      {
+        this->Make(0, this->Order[p], -1);
+      }
+    }
+    for (const Int e : loops)
+    {
+      this->Make(1, e, -1);
+    }
+  }
+
+private:
+  const std::vector<std::int8_t> Index;
+  const std::vector<double>& Presence;
+  std::vector<Int> Order, Pos; ///< the inserted nodes in filtration order; a node's place in it or -1
+  std::vector<Int> ElementOf, NodeOf; ///< maxima as elements of the complement's union-find
+  std::vector<char> Separates; ///< by place: an index-2 node that joins two components outside
+
+  bool Before(Int v, std::size_t p) const { return this->Pos[v] >= 0 && this->Pos[v] < static_cast<Int>(p); }
+  bool After(Int v, std::size_t p) const { return this->Pos[v] > static_cast<Int>(p); }
+
+  /// The filtration: by presence, faces before cofaces, then by node id (keys
+  /// side by side: the sort is most of HasseBarcode's time at 10^6 points).
+  void SortFiltration()
+  {
+    struct Key
+    {
+      double Presence;
+      Int Index, Node;
+      bool operator<(const Key& o) const
+      {
+        return std::tie(this->Presence, this->Index, this->Node) < std::tie(o.Presence, o.Index, o.Node);
+      }
+    };
+    const std::size_t n = this->Index.size();
+    std::vector<Key> keys;
+    for (std::size_t v = 0; v < n; ++v)
+    {
+      if (this->Presence[v] < HUGE_VAL)
+      {
+        keys.push_back(Key{ this->Presence[v], this->Index[v], static_cast<Int>(v) });
+      }
+    }
+    tbb::parallel_sort(keys.begin(), keys.end());
+    this->Order.resize(keys.size());
+    for (std::size_t p = 0; p < keys.size(); ++p)
+    {
+      this->Order[p] = keys[p].Node;
+    }
+    std::vector<Key>().swap(keys);
+    this->Pos.assign(n, -1);
+    for (std::size_t p = 0; p < this->Order.size(); ++p)
+    {
+      this->Pos[this->Order[p]] = static_cast<Int>(p);
+    }
+  }
+
+  /// The complement at t_r = inf: its maxima as elements by age in the
+  /// backward direction (never inserted first, then by decreasing place),
+  /// merged where `joined` says so and across the index-2 nodes never present.
+  UnionFind OutsideAtInfinity(const std::vector<Arc>& arcs, const std::vector<std::pair<Id, Id>>& joined)
+  {
+    const std::size_t n = this->Index.size();
+    this->ElementOf.assign(n, -1);
+    for (std::size_t v = 0; v < n; ++v)
+    {
+      if (this->Index[v] == 3 && this->Pos[v] < 0)
+      {
+        this->ElementOf[v] = static_cast<Int>(this->NodeOf.size());
+        this->NodeOf.push_back(static_cast<Int>(v));
+      }
+    }
+    for (std::size_t p = this->Order.size(); p-- > 0;)
+    {
+      if (this->Index[this->Order[p]] == 3)
+      {
+        this->ElementOf[this->Order[p]] = static_cast<Int>(this->NodeOf.size());
+        this->NodeOf.push_back(this->Order[p]);
+      }
+    }
+    UnionFind outside(this->NodeOf.size());
+    for (const auto& [a, b] : joined)
+    {
+      if (a < 0 || b < 0 || a >= static_cast<Id>(n) || b >= static_cast<Id>(n) || this->Index[a] != 3 ||
+        this->Index[b] != 3 || this->Pos[a] >= 0 || this->Pos[b] >= 0)
+      {
+        NotClosed("joined nodes that are not maxima outside every reconstruction");
+      }
+      outside.Merge(this->ElementOf[a], this->ElementOf[b]);
+    }
+    for (std::size_t k = 0; k < arcs.size();)
+    {
+      const Id s = arcs[k].Lower;
+      Int sides[3] = { -1, -1, -1 };
+      int count = 0;
+      for (; k < arcs.size() && arcs[k].Lower == s; ++k)
+      {
+        if (this->Index[s] == 2 && arcs[k].Multiplicity % 2 != 0)
+        {
+          sides[std::min(count++, 2)] = arcs[k].Upper;
+        }
+      }
+      if (this->Index[s] != 2 || this->Pos[s] >= 0 || count == 0)
+      {
+        continue;
+      }
+      if (count != 2)
+      {
+        NotClosed("index-2 node " + std::to_string(s) + " has " + std::to_string(count) +
+          " sides (its 2-3 arcs are incomplete or not grouped by lower node)");
+      }
+      if (this->Pos[sides[0]] >= 0 || this->Pos[sides[1]] >= 0)
+      {
+        NotClosed("a maximum is inserted before its boundary node " + std::to_string(s));
+      }
+      outside.Merge(this->ElementOf[sides[0]], this->ElementOf[sides[1]]);
+    }
+    return outside;
+  }
+
+  /// Most classes die where they are born: only bars of positive length are made.
+  void Make(int dimension, Int birth, Int death)
+  {
+    const double born = this->Presence[birth];
+    const double dies = death >= 0 ? this->Presence[death] : HUGE_VAL;
+    if (born < dies)
+    {
+      Bar bar;
+      bar.Dimension = dimension;
+      bar.Birth = born;
+      bar.BirthCell = birth;
+      bar.Death = dies;
+      bar.DeathCell = death;
+      this->Bars.push_back(bar);
+    }
+  }
+};
+
 } // namespace
 
 std::vector<double> PresenceTimes(const std::vector<Node>& nodes, const std::vector<Arc>& rawArcs,
@@ -99,199 +330,14 @@ std::vector<double> PresenceTimes(const std::vector<Node>& nodes, const std::vec
 std::vector<Bar> HasseBarcode(const std::vector<Node>& nodes, const std::vector<Arc>& rawArcs,
   const std::vector<double>& presence, const std::vector<std::pair<Id, Id>>& joined)
 {
-  const std::vector<Arc>& arcs = rawArcs;
-  const std::size_t n = nodes.size();
-  const std::vector<std::int8_t> index = Indices(nodes);
-  if (presence.size() != n)
+  if (presence.size() != nodes.size())
   {
     NotClosed("the presence times and the diagram have different nodes");
   }
-  // The filtration: by presence, faces before cofaces, then by node id (keys
-  // side by side: the sort is most of this function's time at 10^6 points).
-  struct Key
-  {
-    double Presence;
-    Int Index, Node;
-    bool operator<(const Key& o) const
-    {
-      return std::tie(this->Presence, this->Index, this->Node) < std::tie(o.Presence, o.Index, o.Node);
-    }
-  };
-  std::vector<Key> keys;
-  for (std::size_t v = 0; v < n; ++v)
-  {
-    if (presence[v] < HUGE_VAL)
-    {
-      keys.push_back(Key{ presence[v], index[v], static_cast<Int>(v) });
-    }
-  }
-  tbb::parallel_sort(keys.begin(), keys.end());
-  std::vector<Int> order(keys.size());
-  for (std::size_t p = 0; p < keys.size(); ++p)
-  {
-    order[p] = keys[p].Node;
-  }
-  std::vector<Key>().swap(keys);
-  std::vector<Int> pos(n, -1);
-  for (std::size_t p = 0; p < order.size(); ++p)
-  {
-    pos[order[p]] = static_cast<Int>(p);
-  }
-  auto tau = [&](Int v) { return presence[v]; };
-  std::vector<Bar> bars;
-  // Most classes die where they are born: only bars of positive length are made.
-  auto make = [&](int dimension, Int birth, Int death) {
-    if (tau(birth) < (death >= 0 ? tau(death) : HUGE_VAL))
-    {
-      Bar bar;
-      bar.Dimension = dimension;
-      bar.Birth = tau(birth);
-      bar.BirthCell = birth;
-      bar.Death = death >= 0 ? tau(death) : HUGE_VAL;
-      bar.DeathCell = death;
-      bars.push_back(bar);
-    }
-  };
-
-  // Backwards, on the complement: maxima outside K_t joined by index-2 nodes
-  // outside it. Elements are maxima by age in that direction: never inserted
-  // first, then by decreasing position.
-  std::vector<Int> elementOf(n, -1), nodeOf;
-  for (std::size_t v = 0; v < n; ++v)
-  {
-    if (index[v] == 3 && pos[v] < 0)
-    {
-      elementOf[v] = static_cast<Int>(nodeOf.size());
-      nodeOf.push_back(static_cast<Int>(v));
-    }
-  }
-  for (std::size_t p = order.size(); p-- > 0;)
-  {
-    if (index[order[p]] == 3)
-    {
-      elementOf[order[p]] = static_cast<Int>(nodeOf.size());
-      nodeOf.push_back(order[p]);
-    }
-  }
-  UnionFind outside(nodeOf.size());
-  for (const auto& [a, b] : joined)
-  {
-    if (a < 0 || b < 0 || a >= static_cast<Id>(n) || b >= static_cast<Id>(n) ||
-      index[a] != 3 || index[b] != 3 || pos[a] >= 0 || pos[b] >= 0)
-    {
-      NotClosed("joined nodes that are not maxima outside every reconstruction");
-    }
-    outside.Merge(elementOf[a], elementOf[b]);
-  }
-  // Index-2 nodes never present: outside at every threshold.
-  for (std::size_t k = 0; k < arcs.size();)
-  {
-    const Id s = arcs[k].Lower;
-    Int sides[3] = { -1, -1, -1 };
-    int count = 0;
-    for (; k < arcs.size() && arcs[k].Lower == s; ++k)
-    {
-      if (index[s] == 2 && arcs[k].Multiplicity % 2 != 0)
-      {
-        sides[std::min(count++, 2)] = arcs[k].Upper;
-      }
-    }
-    if (index[s] != 2 || pos[s] >= 0 || count == 0)
-    {
-      continue;
-    }
-    if (count != 2)
-    {
-      NotClosed("index-2 node " + std::to_string(s) + " has " + std::to_string(count) +
-        " sides (its 2-3 arcs are incomplete or not grouped by lower node)");
-    }
-    if (pos[sides[0]] >= 0 || pos[sides[1]] >= 0)
-    {
-      NotClosed("a maximum is inserted before its boundary node " + std::to_string(s));
-    }
-    outside.Merge(elementOf[sides[0]], elementOf[sides[1]]);
-  }
-  const std::vector<Int> sides = PairsOf(index, arcs, pos, 2, order.size());
-  std::vector<char> separates(order.size(), 0);
-  for (std::size_t p = order.size(); p-- > 0;)
-  {
-    const Int s = order[p];
-    if (index[s] != 2)
-    {
-      continue;
-    }
-    const Int a = sides[2 * p], b = sides[2 * p + 1];
-    if ((a >= 0) != (b >= 0))
-    {
-      NotClosed("index-2 node " + std::to_string(s) + " has one side");
-    }
-    if (a < 0)
-    {
-      continue; // both sides in one maximum: the arcs cancelled mod 2
-    }
-    if ((pos[a] >= 0 && pos[a] < static_cast<Int>(p)) || (pos[b] >= 0 && pos[b] < static_cast<Int>(p)))
-    {
-      NotClosed("a maximum is inserted before its boundary node " + std::to_string(s));
-    }
-    const Int dies = outside.Merge(elementOf[a], elementOf[b]);
-    if (dies >= 0)
-    {
-      separates[p] = 1;
-      const Int m = nodeOf[dies];
-      make(2, s, pos[m] >= 0 ? m : -1);
-    }
-  }
-
-  // Forwards: components by union-find over the edges' ends, loops as they
-  // close, and the 2-cells that do not separate fill a loop each.
-  const std::vector<Int> ends = PairsOf(index, arcs, pos, 0, order.size());
-  UnionFind inside(order.size());
-  std::vector<Int> loops; // edges of the open loops, latest last
-  for (std::size_t p = 0; p < order.size(); ++p)
-  {
-    const Int v = order[p];
-    const int dimension = index[v];
-    if (dimension == 1)
-    {
-      const Int a = ends[2 * p], b = ends[2 * p + 1];
-      if ((a >= 0) != (b >= 0) || (a >= 0 && (pos[a] < 0 || pos[b] < 0 ||
-                                               pos[a] > static_cast<Int>(p) || pos[b] > static_cast<Int>(p))))
-      {
-        NotClosed("edge " + std::to_string(v) + " is inserted before its ends");
-      }
-      // A component is named by its oldest vertex: the younger one dies.
-      const Int dies = a >= 0 ? inside.Merge(pos[a], pos[b]) : -1;
-      if (dies >= 0)
-      {
-        make(0, order[dies], v);
-      }
-      else
-      {
-        loops.push_back(v);
-      }
-    }
-    else if (dimension == 2 && !separates[p])
-    {
-      if (loops.empty())
-      {
-        NotClosed("2-cell " + std::to_string(v) + " fills no loop");
-      }
-      make(1, loops.back(), v);
-      loops.pop_back();
-    }
-  }
-  for (std::size_t p = 0; p < order.size(); ++p)
-  {
-    if (index[order[p]] == 0 && inside.Find(static_cast<Int>(p)) == static_cast<Int>(p))
-    {
-      make(0, order[p], -1);
-    }
-  }
-  for (const Int e : loops)
-  {
-    make(1, e, -1);
-  }
-  return bars;
+  Barcode code(Indices(nodes), presence);
+  code.Outside(rawArcs, joined);
+  code.Inside(rawArcs);
+  return std::move(code.Bars);
 }
 
 } // namespace flowrecon
