@@ -13,19 +13,15 @@
 namespace flowrecon
 {
 
-ExteriorRegions::ExteriorRegions(const Triangulation& tri, double levelSq)
-  : LevelSq(levelSq)
-  , TriangulationSerial(tri.Serial())
+namespace
 {
-  if (tri.Dimension() != 3)
-  {
-    throw Degenerate("exterior regions: the triangulation is not 3-dimensional");
-  }
+
+/// The Voronoi vertices in U_r: the cells of circumradius > r.
+std::vector<char> CellsOverLevel(const Triangulation& tri, double levelSq)
+{
   const Kernel kernel;
   const auto compare = kernel.compare_squared_radius_3_object();
-  const Delaunay& dt = tri.Dt();
   const std::size_t n = static_cast<std::size_t>(tri.NumberOfCells());
-  // The Voronoi vertices in U_r: cells of circumradius > r.
   std::vector<char> above;
   ReserveHugePopulated(above, n);
   above.resize(n);
@@ -50,6 +46,17 @@ ExteriorRegions::ExteriorRegions(const Triangulation& tri, double levelSq)
                    h->vertex(3)->point(), levelSq) == CGAL::LARGER;
     }
   });
+  return above;
+}
+
+/// The components of U_r's graph: cells above joined across the facets whose
+/// Voronoi edge lies in U_r; element n is infinity.
+UnionFind JoinAcrossFacets(const Triangulation& tri, const std::vector<char>& above, double levelSq)
+{
+  const Kernel kernel;
+  const auto compare = kernel.compare_squared_radius_3_object();
+  const Delaunay& dt = tri.Dt();
+  const std::size_t n = above.size();
   // The Voronoi edge dual to facet (c, i) lies in U_r, given that its finite
   // ends do: f is not Gabriel (its lowest point is an end) or R_f > r.
   auto edgeAbove = [&](CellHandle c, int i) {
@@ -77,7 +84,7 @@ ExteriorRegions::ExteriorRegions(const Triangulation& tri, double levelSq)
     }
     return false;
   };
-  // Element n: infinity, joined to every cell whose Voronoi ray lies in U_r.
+  // Infinity is joined to every cell whose Voronoi ray lies in U_r.
   UnionFind components(n + 1);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n), [&](const tbb::blocked_range<std::size_t>& r) {
     for (std::size_t c = r.begin(); c != r.end(); ++c)
@@ -109,6 +116,27 @@ ExteriorRegions::ExteriorRegions(const Triangulation& tri, double levelSq)
       }
     }
   });
+  return components;
+}
+
+} // namespace
+
+ExteriorRegions::ExteriorRegions(const Triangulation& tri, double levelSq)
+  : LevelSq(levelSq)
+  , TriangulationSerial(tri.Serial())
+{
+  if (tri.Dimension() != 3)
+  {
+    throw Degenerate("exterior regions: the triangulation is not 3-dimensional");
+  }
+  const std::vector<char> above = CellsOverLevel(tri, levelSq);
+  UnionFind components = JoinAcrossFacets(tri, above, levelSq);
+  this->Label(above, components);
+}
+
+void ExteriorRegions::Label(const std::vector<char>& above, UnionFind& components)
+{
+  const std::size_t n = above.size();
   // Dense region ids in the order of the regions' smallest cells (infinity's
   // last when it is alone), labels in place: a root, the smallest element of
   // its component, comes before the other members, so one scan numbers the

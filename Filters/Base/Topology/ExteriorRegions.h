@@ -30,6 +30,8 @@
 namespace flowrecon
 {
 
+class UnionFind;
+
 /// The components of U_r (r^2 = `levelSq`, triangulation units), computed
 /// over every cell in parallel; deterministic.
 class ExteriorRegions
@@ -48,6 +50,9 @@ public:
   std::int64_t CellsAbove() const { return this->Above; }
 
 private:
+  /// Dense region ids, in the order of the regions' smallest cells.
+  void Label(const std::vector<char>& above, UnionFind& components);
+
   double LevelSq;
   std::uint64_t TriangulationSerial;
   std::vector<std::int32_t> Region;
