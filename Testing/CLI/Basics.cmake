@@ -54,6 +54,11 @@ flowrecon_add_cli_test(CommaLineObj EXIT 1 STDERR_LINES 1
 flowrecon_add_cli_test(TinySpacing EXIT 1 STDERR_LINES 1
   STDERR "tiny_spacing\\.xyz: (points too close together|flow complex construction failed: CGAL ERROR)"
   ARGS info "${_d}/tiny_spacing.xyz")
+# Coordinates near the largest doubles: a circumcentre beyond them is refused,
+# not written as inf (a fuzz_core finding).
+flowrecon_add_cli_test(BeyondDouble EXIT 1 STDERR_LINES 1
+  STDERR "beyond_double\\.xyz: coordinates too large: a critical point lies beyond the largest double"
+  ARGS info "${_d}/beyond_double.xyz")
 
 # Results.
 flowrecon_add_cli_test(ComplexWritesVtm EXIT 0 STDERR_LINES 0

@@ -41,6 +41,7 @@ float RoundedDown(double x);
 
 /// The one-line refusal of a cloud whose critical values underflow.
 extern const char* const TooClose;
+extern const char* const TooLarge;
 
 /// Index-2 patches are walked in chunks of this many, in parallel.
 constexpr std::size_t PatchChunk = 8192;

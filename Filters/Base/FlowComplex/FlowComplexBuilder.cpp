@@ -36,6 +36,8 @@ std::array<double, 4> CentreAndSquaredRadius(const KPoint* p, std::size_t n)
   return { { c.x(), c.y(), c.z(), CGAL::squared_distance(c, p[0]) } };
 }
 
+const char* const TooLarge = "coordinates too large: a critical point lies beyond the largest double "
+                             "(about 1.8e308); rescale the cloud";
 const char* const TooClose = "points too close together for the size of the cloud (a critical "
                              "value underflows in double precision); rescale or separate the clusters";
 
@@ -168,6 +170,13 @@ void Builder::ScaleBack()
     {
       n.Value = std::ldexp(n.Value, e);
       back(n.Location);
+      // Scaled, the construction was finite; back at the cloud's scale a
+      // critical point of a cloud near the largest doubles can lie beyond them.
+      if (!(std::isfinite(n.Value) && std::isfinite(n.Location[0]) && std::isfinite(n.Location[1]) &&
+            std::isfinite(n.Location[2])))
+      {
+        throw InputError(TooLarge);
+      }
     }
   }
   for (std::size_t k = static_cast<std::size_t>(fc.NumberOfInputPoints); k < fc.Points.size(); ++k)
