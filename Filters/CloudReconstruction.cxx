@@ -35,8 +35,8 @@ struct Candidate
   std::int64_t CellsAbove = 0;
 };
 
-/// The run at `tp` from `build` (taken when `last`); `regions`: shared by the
-/// runs of one build (TopologyOfCappedRun).
+/// The run at `tp` from `build` (taken when `last`, else its nodes are given
+/// back); `regions`: shared by the runs of one build (TopologyOfCappedRun).
 Candidate Run(CappedBuild& build, double tp, bool last, const CloudReconstructionSettings& settings,
   std::unique_ptr<ExteriorRegions>& regions, const Progress& progress)
 {
@@ -64,6 +64,13 @@ Candidate Run(CappedBuild& build, double tp, bool last, const CloudReconstructio
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
   c.LinesFollowed = c.R.Lines ? c.R.Lines->LinesFollowed() : 0;
+  // Nothing after the bars reads the simplification: while the next t_p
+  // runs, it would only add to the peak.
+  c.R.Simplification = SimplificationResult();
+  if (!last)
+  {
+    ReturnNodes(c.R, build);
+  }
   return c;
 }
 
@@ -162,6 +169,10 @@ CloudReconstructionReport ReconstructCloud(const std::vector<Point3>& samples,
         report.Choice = Choose(candidates, settings);
         report.Automatic = true;
         pick = report.Choice.Candidate;
+        if (pick + 1 != candidates.size())
+        {
+          MoveNodes(candidates.back().R.Complex, candidates[pick].R.Complex);
+        }
         tr = report.Choice.ReconstructionThreshold;
         const CappedReconstruction& p = candidates[pick].R;
         CheckFilled(report.Choice, samples, MaximaBelow(p.Complex.Nodes, p.Carriers, p.Run, tr));

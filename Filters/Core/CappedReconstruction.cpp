@@ -55,14 +55,21 @@ CappedReconstruction Continue(CappedBuild& b, double tp, bool last, const Progre
   const double cap = b.Cap;
   if (!last)
   {
+    // The nodes are lent, not copied (MoveNodes).
     const double arcs = static_cast<double>(b.Complex.Arcs.size() + b.Cones.size() + b.RawPatchArcs.size());
-    RequireMemory(static_cast<double>(sizeof(Node)) * static_cast<double>(b.Complex.Nodes.size()) +
-        static_cast<double>(sizeof(Arc)) * arcs,
+    RequireMemory(static_cast<double>(sizeof(Arc)) * arcs,
       "a copy of the flow complex of a " + std::to_string(b.Complex.CountByIndex()[0]) +
         "-point cloud for a second t_p",
       "give t_p a value (one run), or use fewer points");
+    FlowComplex lent;
+    MoveNodes(b.Complex, lent);
+    r.Complex = b.Complex;
+    MoveNodes(lent, r.Complex);
   }
-  r.Complex = last ? std::move(b.Complex) : b.Complex;
+  else
+  {
+    r.Complex = std::move(b.Complex);
+  }
   r.Cones = last ? std::move(b.Cones) : b.Cones;
   r.RawPatchArcs = last ? std::move(b.RawPatchArcs) : b.RawPatchArcs;
   r.Triangulation = b.Triangulation;
@@ -146,6 +153,21 @@ CappedReconstruction Continue(CappedBuild& b, double tp, bool last, const Progre
 }
 
 } // namespace
+
+void MoveNodes(FlowComplex& from, FlowComplex& to)
+{
+  to.Nodes = std::move(from.Nodes);
+  to.Points = std::move(from.Points);
+  to.Representative = std::move(from.Representative);
+  from.Nodes.clear();
+  from.Points.clear();
+  from.Representative.clear();
+}
+
+void ReturnNodes(CappedReconstruction& r, CappedBuild& build)
+{
+  MoveNodes(r.Complex, build.Complex);
+}
 
 double FlowLineDeferralRatio(double cap, double persistenceThreshold)
 {
