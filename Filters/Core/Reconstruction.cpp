@@ -63,11 +63,12 @@ private:
   }
 };
 
+/// 16 bytes, as Offer: the queue and the offers are most of the run's memory.
 struct Entry
 {
   double Priority;
-  int Gated; ///< 0 for regularization: it precedes any extension of equal priority
-  Id Node;
+  std::int32_t Gated; ///< 0 for regularization: it precedes any extension of equal priority
+  std::int32_t Node;
   /// Reversed, so that std::priority_queue pops the least key.
   bool operator<(const Entry& o) const
   {
@@ -80,10 +81,13 @@ struct Entry
 struct Offer
 {
   double Priority = HUGE_VAL;
-  int Gated = 2; ///< larger than any real offer
-  Extension Kind = Extension::Initialization;
-  Id Sponsor = -1;
+  std::int32_t Sponsor = -1;
+  std::int16_t Gated = 2; ///< larger than any real offer
+  std::int16_t Kind = 0;  ///< an Extension
 };
+
+static_assert(sizeof(Entry) == 16 && sizeof(Offer) == 16 && sizeof(Insertion) == 32,
+  "per-node records of the run");
 
 class Reconstructor
 {
@@ -139,7 +143,7 @@ public:
       {
         continue;
       }
-      this->Insert(top.Node, best.Priority, best.Kind, best.Sponsor);
+      this->Insert(top.Node, best.Priority, static_cast<Extension>(best.Kind), best.Sponsor);
       this->Result.Profile.push_back(best.Priority);
       this->Extend(top.Node);
       if (this->Result.Order.size() % 4096 == 0)
@@ -160,7 +164,7 @@ private:
     ins.Priority = priority;
     ins.Threshold = this->Running;
     ins.Kind = kind;
-    ins.Sponsor = sponsor;
+    ins.Sponsor = static_cast<std::int32_t>(sponsor);
     this->Result.Order.push_back(node);
   }
 
@@ -316,10 +320,10 @@ private:
     if (std::tie(ratio, gated) < std::tie(best.Priority, best.Gated))
     {
       best.Priority = ratio;
-      best.Gated = gated;
-      best.Kind = kind;
-      best.Sponsor = sponsor;
-      this->Queue.push(Entry{ ratio, gated, d });
+      best.Gated = static_cast<std::int16_t>(gated);
+      best.Kind = static_cast<std::int16_t>(kind);
+      best.Sponsor = static_cast<std::int32_t>(sponsor);
+      this->Queue.push(Entry{ ratio, gated, static_cast<std::int32_t>(d) });
     }
   }
 
