@@ -209,8 +209,9 @@ void HasseDiagram::Remove(Id node)
   HalfArcs().swap(this->OutLists[node]);
 }
 
-std::vector<Arc> HasseDiagram::Arcs() const
+std::vector<Arc> HasseDiagram::TakeArcs()
 {
+  std::vector<HalfArcs>().swap(this->InLists); // the Out lists hold every arc
   std::vector<Arc> arcs;
   std::size_t count = 0;
   for (const HalfArcs& out : this->OutLists)
@@ -218,19 +219,22 @@ std::vector<Arc> HasseDiagram::Arcs() const
     count += out.size(); // an upper bound: entries of removed nodes are skipped
   }
   arcs.reserve(count);
-  for (Id lower = 0; lower < this->NodeCount(); ++lower)
+  for (std::size_t lower = 0; lower < this->OutLists.size(); ++lower)
   {
     const std::size_t first = arcs.size();
     for (const HalfArc& h : this->OutLists[lower])
     {
       if (!this->Removed[h.Node])
       {
-        arcs.push_back(Arc{ lower, h.Node, h.Multiplicity });
+        arcs.push_back(Arc{ static_cast<Id>(lower), h.Node, h.Multiplicity });
       }
     }
+    HalfArcs().swap(this->OutLists[lower]);
     std::sort(arcs.begin() + static_cast<std::ptrdiff_t>(first), arcs.end(),
       [](const Arc& a, const Arc& b) { return a.Upper < b.Upper; });
   }
+  std::vector<HalfArcs>().swap(this->OutLists);
+  std::vector<char>().swap(this->Removed);
   return arcs;
 }
 

@@ -63,8 +63,9 @@ public:
   /// the simplification of 10^5 torus-surface points).
   void Remove(Id node);
 
-  /// Every arc, sorted by (Lower, Upper).
-  std::vector<Arc> Arcs() const;
+  /// Every arc, sorted by (Lower, Upper). Empties the diagram: its lists are
+  /// freed while the arcs are made, so that the two do not add up.
+  std::vector<Arc> TakeArcs();
 
 private:
   /// Position of `upper` in Out(lower), or -1.
