@@ -44,6 +44,9 @@ Candidate Run(CappedBuild& build, double tp, bool last, const CloudReconstructio
   c.Tp = tp;
   c.R = ReconstructBuilt(build, tp, last, progress);
   c.LinesDeferred = c.R.Lines ? c.R.Lines->LinesDeferred() : 0;
+  // Nothing after the run reads the simplification (carriers and lines hold
+  // what they need): it would only add to the topology's peak.
+  c.R.Simplification = SimplificationResult();
   if (settings.Topology)
   {
     const auto start = std::chrono::steady_clock::now();
@@ -64,9 +67,6 @@ Candidate Run(CappedBuild& build, double tp, bool last, const CloudReconstructio
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
   c.LinesFollowed = c.R.Lines ? c.R.Lines->LinesFollowed() : 0;
-  // Nothing after the bars reads the simplification: while the next t_p
-  // runs, it would only add to the peak.
-  c.R.Simplification = SimplificationResult();
   if (!last)
   {
     ReturnNodes(c.R, build);
@@ -236,13 +236,27 @@ CloudReconstructionReport ReconstructCloud(const std::vector<Point3>& samples,
   ReleaseFreedMemory();
   FlowComplex& fc = r.Complex;
   phaseDone("drawing");
-  const CellsByNode triangles = PositionsByRow(fc.TriangleNode, fc.Nodes.size());
-  const CellsByNode tetrahedra = PositionsByRow(fc.TetrahedronNode, fc.Nodes.size());
   report.TopologyError = settings.Topology ? chosen.TopologyError : "not asked for";
   progress(0.95, "output");
-  // No sponsor arrows: nothing here reads them (millions at 10^6 points).
-  ReconstructionToVTK(fc, r.Carriers, r.Run, output, triangles, tetrahedra, outputs.Grid,
-    outputs.Profile, nullptr, settings.Advice);
+  {
+    const CellsByNode triangles = PositionsByRow(fc.TriangleNode, fc.Nodes.size());
+    const CellsByNode tetrahedra = PositionsByRow(fc.TetrahedronNode, fc.Nodes.size());
+    // No sponsor arrows: nothing here reads them (millions at 10^6 points).
+    ReconstructionToVTK(fc, r.Carriers, r.Run, output, triangles, tetrahedra, outputs.Grid,
+      nullptr, nullptr, settings.Advice);
+  }
+  // The geometry is in the grid now: the profile and the rest read nodes and
+  // steps only, and need its memory.
+  fc.Points = std::vector<Point3>();
+  fc.Triangles = std::vector<std::array<Id, 3>>();
+  fc.TriangleNode = std::vector<Id>();
+  fc.Tetrahedra = std::vector<std::array<Id, 4>>();
+  fc.TetrahedronNode = std::vector<Id>();
+  fc.Arcs = std::vector<Arc>();
+  r.Cones = std::vector<Arc>();
+  r.Carriers = std::vector<Id>();
+  ReconstructionToVTK(fc, r.Carriers, r.Run, output, {}, {}, nullptr, outputs.Profile, nullptr,
+    settings.Advice);
   if (report.TopologyError.empty())
   {
     TopologyToVTK(chosen.Bars, output, settings.Cap, outputs.Grid, outputs.Topology);
