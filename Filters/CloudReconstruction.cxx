@@ -35,14 +35,14 @@ struct Candidate
   std::int64_t CellsAbove = 0;
 };
 
-/// The run at `tp` from `build` (taken when `last`, else its nodes are given
+/// The run at `tp` from `build` (taken when `take`, else its nodes are given
 /// back); `regions`: shared by the runs of one build (TopologyOfCappedRun).
-Candidate Run(CappedBuild& build, double tp, bool last, const CloudReconstructionSettings& settings,
+Candidate Run(CappedBuild& build, double tp, bool take, const CloudReconstructionSettings& settings,
   std::unique_ptr<ExteriorRegions>& regions, const Progress& progress)
 {
   Candidate c;
   c.Tp = tp;
-  c.R = ReconstructBuilt(build, tp, last, progress);
+  c.R = ReconstructBuilt(build, tp, take, progress);
   c.LinesDeferred = c.R.Lines ? c.R.Lines->LinesDeferred() : 0;
   // Nothing after the run reads the simplification (carriers and lines hold
   // what they need): it would only add to the topology's peak.
@@ -67,7 +67,7 @@ Candidate Run(CappedBuild& build, double tp, bool last, const CloudReconstructio
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
   c.LinesFollowed = c.R.Lines ? c.R.Lines->LinesFollowed() : 0;
-  if (!last)
+  if (!take)
   {
     ReturnNodes(c.R, build);
   }
@@ -148,14 +148,27 @@ CloudReconstructionReport ReconstructCloud(const std::vector<Point3>& samples,
       candidates.reserve(tps.size());
       std::unique_ptr<ExteriorRegions> regions;
       const double share = 0.3 / static_cast<double>(tps.size());
+      auto range = [&](std::size_t k) {
+        return progress.Range(0.4 + share * static_cast<double>(k), 0.4 + share * static_cast<double>(k + 1));
+      };
+      // With several t_p, two runs (insertions, lines, arcs) held together
+      // were most of the peak: a run before the last keeps only its bars and
+      // is run again if chosen, so the build stays whole until the choice.
+      const bool one = tps.size() == 1;
+      std::vector<std::unique_ptr<ExteriorRegions>> seen(tps.size()); // the regions run k started from
       for (std::size_t k = 0; k < tps.size(); ++k)
       {
         const bool last = k + 1 == tps.size();
-        candidates.push_back(Run(build, tps[k], last, settings, regions,
-          progress.Range(0.4 + share * static_cast<double>(k), 0.4 + share * static_cast<double>(k + 1))));
+        if (!last && regions)
+        {
+          seen[k] = std::make_unique<ExteriorRegions>(*regions);
+        }
+        candidates.push_back(Run(build, tps[k], one, settings, regions, range(k)));
+        if (!last)
+        {
+          candidates.back().R = CappedReconstruction();
+        }
       }
-      phaseDone(tps.size() > 1 ? "simplification, reconstruction queue, Betti numbers (each t_p)"
-                               : "simplification, reconstruction queue, Betti numbers");
       std::ostringstream each;
       for (const Candidate& c : candidates)
       {
@@ -169,11 +182,21 @@ CloudReconstructionReport ReconstructCloud(const std::vector<Point3>& samples,
         report.Choice = Choose(candidates, settings);
         report.Automatic = true;
         pick = report.Choice.Candidate;
-        if (pick + 1 != candidates.size())
-        {
-          MoveNodes(candidates.back().R.Complex, candidates[pick].R.Complex);
-        }
         tr = report.Choice.ReconstructionThreshold;
+      }
+      if (!one && pick + 1 == candidates.size())
+      {
+        MoveNodes(build.Complex, candidates[pick].R.Complex);
+      }
+      else if (!one)
+      {
+        candidates.back().R = CappedReconstruction();
+        candidates[pick] = Run(build, tps[pick], true, settings, seen[pick], range(pick));
+      }
+      phaseDone(tps.size() > 1 ? "simplification, reconstruction queue, Betti numbers (each t_p)"
+                               : "simplification, reconstruction queue, Betti numbers");
+      if (automatic)
+      {
         const CappedReconstruction& p = candidates[pick].R;
         CheckFilled(report.Choice, samples, MaximaBelow(p.Complex.Nodes, p.Carriers, p.Run, tr));
       }
