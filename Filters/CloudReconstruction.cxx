@@ -13,6 +13,7 @@
 #include <chrono>
 #include <cmath>
 #include <iomanip>
+#include <iterator>
 #include <sstream>
 
 namespace flowrecon
@@ -35,6 +36,17 @@ struct Candidate
   std::int64_t CellsAbove = 0;
 };
 
+/// Keeps only the arcs the output reads after a run, those of index-1 nodes
+/// (edge multiplicities): the others would add to the topology's peak.
+void KeepEdgeArcs(FlowComplex& fc)
+{
+  const auto edge = [&fc](const Arc& a) { return fc.Nodes[a.Lower].Index == 1; };
+  std::vector<Arc> kept;
+  kept.reserve(static_cast<std::size_t>(std::count_if(fc.Arcs.begin(), fc.Arcs.end(), edge)));
+  std::copy_if(fc.Arcs.begin(), fc.Arcs.end(), std::back_inserter(kept), edge);
+  fc.Arcs.swap(kept);
+}
+
 /// The run at `tp` from `build` (taken when `take`, else its nodes are given
 /// back); `regions`: shared by the runs of one build (TopologyOfCappedRun).
 Candidate Run(CappedBuild& build, double tp, bool take, const CloudReconstructionSettings& settings,
@@ -47,6 +59,7 @@ Candidate Run(CappedBuild& build, double tp, bool take, const CloudReconstructio
   // Nothing after the run reads the simplification (carriers and lines hold
   // what they need): it would only add to the topology's peak.
   c.R.Simplification = SimplificationResult();
+  KeepEdgeArcs(c.R.Complex);
   if (settings.Topology)
   {
     const auto start = std::chrono::steady_clock::now();
