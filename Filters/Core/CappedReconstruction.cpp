@@ -30,17 +30,7 @@ CappedBuild Build(const std::vector<Point3>& points, const BuildOptions& options
   std::unique_ptr<Retriangulation> triangulation;
   b.Complex = BuildFlowComplex(points, build, progress, &triangulation);
   b.Triangulation = std::move(triangulation);
-  for (const Arc& a : b.Complex.Arcs)
-  {
-    if (b.Complex.Nodes[a.Lower].Index == 2)
-    {
-      b.Cones.push_back(a);
-    }
-    else if (keepRaw && b.Complex.Nodes[a.Lower].Index == 1)
-    {
-      b.RawPatchArcs.push_back(a);
-    }
-  }
+  b.KeepRawPatchArcs = keepRaw;
   b.Cap = cap;
   b.PersistenceThreshold = tpMax;
   b.Deferred = defer;
@@ -53,14 +43,39 @@ CappedReconstruction Continue(CappedBuild& b, double tp, bool last, const Progre
 {
   CappedReconstruction r;
   const double cap = b.Cap;
+  // The 2-3 arcs and (for the topology) the 1-2 arcs as built, out of the
+  // build's arcs: the build does not hold them a second time.
+  const auto lowerIndex = [&b](const Arc& a) { return b.Complex.Nodes[a.Lower].Index; };
+  std::size_t cones = 0, raw = 0;
+  for (const Arc& a : b.Complex.Arcs)
+  {
+    cones += lowerIndex(a) == 2 ? 1 : 0;
+    raw += b.KeepRawPatchArcs && lowerIndex(a) == 1 ? 1 : 0;
+  }
   if (!last)
   {
     // The nodes are lent, not copied (MoveNodes).
-    const double arcs = static_cast<double>(b.Complex.Arcs.size() + b.Cones.size() + b.RawPatchArcs.size());
+    const double arcs = static_cast<double>(b.Complex.Arcs.size() + cones + raw);
     RequireMemory(static_cast<double>(sizeof(Arc)) * arcs,
       "a copy of the flow complex of a " + std::to_string(b.Complex.CountByIndex()[0]) +
         "-point cloud for a second t_p",
       "give t_p a value (one run), or use fewer points");
+  }
+  r.Cones.reserve(cones);
+  r.RawPatchArcs.reserve(raw);
+  for (const Arc& a : b.Complex.Arcs)
+  {
+    if (lowerIndex(a) == 2)
+    {
+      r.Cones.push_back(a);
+    }
+    else if (b.KeepRawPatchArcs && lowerIndex(a) == 1)
+    {
+      r.RawPatchArcs.push_back(a);
+    }
+  }
+  if (!last)
+  {
     FlowComplex lent;
     MoveNodes(b.Complex, lent);
     r.Complex = b.Complex;
@@ -70,8 +85,6 @@ CappedReconstruction Continue(CappedBuild& b, double tp, bool last, const Progre
   {
     r.Complex = std::move(b.Complex);
   }
-  r.Cones = last ? std::move(b.Cones) : b.Cones;
-  r.RawPatchArcs = last ? std::move(b.RawPatchArcs) : b.RawPatchArcs;
   r.Triangulation = b.Triangulation;
   FlowComplex& fc = r.Complex;
   r.DeferredPatches = static_cast<Id>(fc.DeferredPatches.size());

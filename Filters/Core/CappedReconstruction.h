@@ -53,8 +53,7 @@ struct CappedReconstruction
 struct CappedBuild
 {
   FlowComplex Complex;            ///< nodes and arcs as built, no geometry
-  std::vector<Arc> Cones;         ///< the 2-3 arcs as built
-  std::vector<Arc> RawPatchArcs;  ///< with keepRawPatchArcs: the 1-2 arcs as built
+  bool KeepRawPatchArcs = false;  ///< runs keep their RawPatchArcs
   std::shared_ptr<Retriangulation> Triangulation;
   double Cap = HUGE_VAL;
   double PersistenceThreshold = 0; ///< the largest t_p it serves
