@@ -60,6 +60,7 @@ Candidate Run(CappedBuild& build, double tp, bool take, const CloudReconstructio
   // what they need): it would only add to the topology's peak.
   c.R.Simplification = SimplificationResult();
   KeepEdgeArcs(c.R.Complex);
+  c.R.Run.Profile = std::vector<double>(); // unread: the output's profile comes from the steps
   // The queue's freed memory, handed back: the topology's allocations did not
   // reuse it (about 20 MB at 10^6 points).
   ReleaseFreedMemory();
@@ -280,6 +281,12 @@ CloudReconstructionReport ReconstructCloud(const std::vector<Point3>& samples,
   {
     const CellsByNode triangles = PositionsByRow(fc.TriangleNode, fc.Nodes.size());
     const CellsByNode tetrahedra = PositionsByRow(fc.TetrahedronNode, fc.Nodes.size());
+    // The grid reads the groups, not what they came from, nor the drawing's
+    // node points and cone boundaries.
+    fc.TriangleNode = std::vector<Id>();
+    fc.TetrahedronNode = std::vector<Id>();
+    fc.NodePoint = std::vector<Id>();
+    r.Cones = std::vector<Arc>();
     // No sponsor arrows: nothing here reads them (millions at 10^6 points).
     ReconstructionToVTK(fc, r.Carriers, r.Run, output, triangles, tetrahedra, outputs.Grid,
       nullptr, nullptr, settings.Advice);
@@ -288,11 +295,8 @@ CloudReconstructionReport ReconstructCloud(const std::vector<Point3>& samples,
   // steps only, and need its memory.
   fc.Points = std::vector<Point3>();
   fc.Triangles = std::vector<std::array<Id, 3>>();
-  fc.TriangleNode = std::vector<Id>();
   fc.Tetrahedra = std::vector<std::array<Id, 4>>();
-  fc.TetrahedronNode = std::vector<Id>();
   fc.Arcs = std::vector<Arc>();
-  r.Cones = std::vector<Arc>();
   r.Carriers = std::vector<Id>();
   ReconstructionToVTK(fc, r.Carriers, r.Run, output, {}, {}, nullptr, outputs.Profile, nullptr,
     settings.Advice);
