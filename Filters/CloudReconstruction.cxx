@@ -161,6 +161,10 @@ CloudReconstructionReport ReconstructCloud(const std::vector<Point3>& samples,
       CappedBuild build = BuildBelow(samples, options, *std::max_element(tps.begin(), tps.end()),
         settings.Cap, defer, progress.Range(0, 0.4), settings.Topology);
       phaseDone("flow complex");
+      // The drawing makes the points again from the samples, and nothing here
+      // reads the representatives: a copy of the cloud less until then.
+      build.Complex.Points = std::vector<Point3>();
+      build.Complex.Representative = std::vector<Id>();
       std::vector<Candidate> candidates;
       candidates.reserve(tps.size());
       std::unique_ptr<ExteriorRegions> regions;
