@@ -38,8 +38,8 @@ CappedBuild Build(const std::vector<Point3>& points, const BuildOptions& options
 }
 
 /// The rest of the run from `b`, at t_p (<= b's): b's parts are copied, or
-/// moved when `last`.
-CappedReconstruction Continue(CappedBuild& b, double tp, bool last, const Progress& progress)
+/// moved when `take`.
+CappedReconstruction Continue(CappedBuild& b, double tp, bool take, const Progress& progress)
 {
   CappedReconstruction r;
   const double cap = b.Cap;
@@ -52,7 +52,7 @@ CappedReconstruction Continue(CappedBuild& b, double tp, bool last, const Progre
     cones += lowerIndex(a) == 2 ? 1 : 0;
     raw += b.KeepRawPatchArcs && lowerIndex(a) == 1 ? 1 : 0;
   }
-  if (!last)
+  if (!take)
   {
     // The nodes are lent, not copied (MoveNodes).
     const double arcs = static_cast<double>(b.Complex.Arcs.size() + cones + raw);
@@ -74,7 +74,7 @@ CappedReconstruction Continue(CappedBuild& b, double tp, bool last, const Progre
       r.RawPatchArcs.push_back(a);
     }
   }
-  if (!last)
+  if (!take)
   {
     FlowComplex lent;
     MoveNodes(b.Complex, lent);
@@ -221,13 +221,13 @@ CappedBuild BuildBelow(const std::vector<Point3>& points, BuildOptions options,
 }
 
 CappedReconstruction ReconstructBuilt(
-  CappedBuild& build, double persistenceThreshold, bool last, const Progress& progress)
+  CappedBuild& build, double persistenceThreshold, bool take, const Progress& progress)
 {
   if (!(persistenceThreshold <= build.PersistenceThreshold))
   {
     throw InputError("reconstruction: t_p above the one the build deferred for");
   }
-  return Continue(build, persistenceThreshold, last, progress);
+  return Continue(build, persistenceThreshold, take, progress);
 }
 
 CappedReconstruction ReconstructBelow(const std::vector<Point3>& points, BuildOptions options,

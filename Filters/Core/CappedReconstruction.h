@@ -84,20 +84,21 @@ CappedReconstruction ReconstructBelow(const std::vector<Point3>& points, BuildOp
 
 /// ReconstructBelow in two parts: the build for every t_p up to
 /// `persistenceThreshold`, then each t_p's run (which copies what it changes
-/// and borrows the rest, or takes it all when `last`). A run that is not the
-/// last must give what it borrowed back (ReturnNodes) before the next one.
-/// A Degenerate from a deferring build's run means: build again without deferral.
+/// and borrows the rest, or takes it all when `take`: the build is spent). A
+/// run that does not take it must give what it borrowed back (ReturnNodes)
+/// before the next one. A Degenerate from a deferring build's run means: build
+/// again without deferral.
 CappedBuild BuildBelow(const std::vector<Point3>& points, BuildOptions options,
   double persistenceThreshold, double cap, bool allowDeferral, const Progress& progress,
   bool keepRawPatchArcs);
 CappedReconstruction ReconstructBuilt(
-  CappedBuild& build, double persistenceThreshold, bool last, const Progress& progress);
+  CappedBuild& build, double persistenceThreshold, bool take, const Progress& progress);
 
 /// Moves the parts of a flow complex that no run changes (nodes, points,
-/// representatives): lent by the build to a run that is not the last, so
+/// representatives): lent by the build to a run that does not take it, so
 /// that the runs of several t_p hold them once.
 void MoveNodes(FlowComplex& from, FlowComplex& to);
-/// Gives what the run `r` (not the last) borrowed back to its build.
+/// Gives what the run `r` (which did not take the build) borrowed back to it.
 void ReturnNodes(CappedReconstruction& r, CappedBuild& build);
 
 } // namespace flowrecon
