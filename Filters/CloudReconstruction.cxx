@@ -13,6 +13,7 @@
 #include <chrono>
 #include <cmath>
 #include <iomanip>
+#include <iterator>
 #include <sstream>
 
 namespace flowrecon
@@ -35,15 +36,34 @@ struct Candidate
   std::int64_t CellsAbove = 0;
 };
 
-/// The run at `tp` from `build` (taken when `last`); `regions`: shared by the
-/// runs of one build (TopologyOfCappedRun).
-Candidate Run(CappedBuild& build, double tp, bool last, const CloudReconstructionSettings& settings,
+/// Keeps only the arcs the output reads after a run, those of index-1 nodes
+/// (edge multiplicities): the others would add to the topology's peak.
+void KeepEdgeArcs(FlowComplex& fc)
+{
+  const auto edge = [&fc](const Arc& a) { return fc.Nodes[a.Lower].Index == 1; };
+  std::vector<Arc> kept;
+  kept.reserve(static_cast<std::size_t>(std::count_if(fc.Arcs.begin(), fc.Arcs.end(), edge)));
+  std::copy_if(fc.Arcs.begin(), fc.Arcs.end(), std::back_inserter(kept), edge);
+  fc.Arcs.swap(kept);
+}
+
+/// The run at `tp` from `build` (taken when `take`, else its nodes are given
+/// back); `regions`: shared by the runs of one build (TopologyOfCappedRun).
+Candidate Run(CappedBuild& build, double tp, bool take, const CloudReconstructionSettings& settings,
   std::unique_ptr<ExteriorRegions>& regions, const Progress& progress)
 {
   Candidate c;
   c.Tp = tp;
-  c.R = ReconstructBuilt(build, tp, last, progress);
+  c.R = ReconstructBuilt(build, tp, take, progress);
   c.LinesDeferred = c.R.Lines ? c.R.Lines->LinesDeferred() : 0;
+  // Nothing after the run reads the simplification (carriers and lines hold
+  // what they need): it would only add to the topology's peak.
+  c.R.Simplification = SimplificationResult();
+  KeepEdgeArcs(c.R.Complex);
+  c.R.Run.Profile = std::vector<double>(); // unread: the output's profile comes from the steps
+  // The queue's freed memory, handed back: the topology's allocations did not
+  // reuse it (about 20 MB at 10^6 points).
+  ReleaseFreedMemory();
   if (settings.Topology)
   {
     const auto start = std::chrono::steady_clock::now();
@@ -64,6 +84,10 @@ Candidate Run(CappedBuild& build, double tp, bool last, const CloudReconstructio
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
   c.LinesFollowed = c.R.Lines ? c.R.Lines->LinesFollowed() : 0;
+  if (!take)
+  {
+    ReturnNodes(c.R, build);
+  }
   return c;
 }
 
@@ -137,18 +161,35 @@ CloudReconstructionReport ReconstructCloud(const std::vector<Point3>& samples,
       CappedBuild build = BuildBelow(samples, options, *std::max_element(tps.begin(), tps.end()),
         settings.Cap, defer, progress.Range(0, 0.4), settings.Topology);
       phaseDone("flow complex");
+      // The drawing makes the points again from the samples, and nothing here
+      // reads the representatives: a copy of the cloud less until then.
+      build.Complex.Points = std::vector<Point3>();
+      build.Complex.Representative = std::vector<Id>();
       std::vector<Candidate> candidates;
       candidates.reserve(tps.size());
       std::unique_ptr<ExteriorRegions> regions;
       const double share = 0.3 / static_cast<double>(tps.size());
+      auto range = [&](std::size_t k) {
+        return progress.Range(0.4 + share * static_cast<double>(k), 0.4 + share * static_cast<double>(k + 1));
+      };
+      // With several t_p, two runs (insertions, lines, arcs) held together
+      // were most of the peak: a run before the last keeps only its bars and
+      // is run again if chosen, so the build stays whole until the choice.
+      const bool one = tps.size() == 1;
+      std::vector<std::unique_ptr<ExteriorRegions>> seen(tps.size()); // the regions run k started from
       for (std::size_t k = 0; k < tps.size(); ++k)
       {
         const bool last = k + 1 == tps.size();
-        candidates.push_back(Run(build, tps[k], last, settings, regions,
-          progress.Range(0.4 + share * static_cast<double>(k), 0.4 + share * static_cast<double>(k + 1))));
+        if (!last && regions)
+        {
+          seen[k] = std::make_unique<ExteriorRegions>(*regions);
+        }
+        candidates.push_back(Run(build, tps[k], one, settings, regions, range(k)));
+        if (!last)
+        {
+          candidates.back().R = CappedReconstruction();
+        }
       }
-      phaseDone(tps.size() > 1 ? "simplification, reconstruction queue, Betti numbers (each t_p)"
-                               : "simplification, reconstruction queue, Betti numbers");
       std::ostringstream each;
       for (const Candidate& c : candidates)
       {
@@ -163,6 +204,20 @@ CloudReconstructionReport ReconstructCloud(const std::vector<Point3>& samples,
         report.Automatic = true;
         pick = report.Choice.Candidate;
         tr = report.Choice.ReconstructionThreshold;
+      }
+      if (!one && pick + 1 == candidates.size())
+      {
+        MoveNodes(build.Complex, candidates[pick].R.Complex);
+      }
+      else if (!one)
+      {
+        candidates.back().R = CappedReconstruction();
+        candidates[pick] = Run(build, tps[pick], true, settings, seen[pick], range(pick));
+      }
+      phaseDone(tps.size() > 1 ? "simplification, reconstruction queue, Betti numbers (each t_p)"
+                               : "simplification, reconstruction queue, Betti numbers");
+      if (automatic)
+      {
         const CappedReconstruction& p = candidates[pick].R;
         CheckFilled(report.Choice, samples, MaximaBelow(p.Complex.Nodes, p.Carriers, p.Run, tr));
       }
@@ -225,13 +280,30 @@ CloudReconstructionReport ReconstructCloud(const std::vector<Point3>& samples,
   ReleaseFreedMemory();
   FlowComplex& fc = r.Complex;
   phaseDone("drawing");
-  const CellsByNode triangles = PositionsByRow(fc.TriangleNode, fc.Nodes.size());
-  const CellsByNode tetrahedra = PositionsByRow(fc.TetrahedronNode, fc.Nodes.size());
   report.TopologyError = settings.Topology ? chosen.TopologyError : "not asked for";
   progress(0.95, "output");
-  // No sponsor arrows: nothing here reads them (millions at 10^6 points).
-  ReconstructionToVTK(fc, r.Carriers, r.Run, output, triangles, tetrahedra, outputs.Grid,
-    outputs.Profile, nullptr, settings.Advice);
+  {
+    const CellsByNode triangles = PositionsByRow(fc.TriangleNode, fc.Nodes.size());
+    const CellsByNode tetrahedra = PositionsByRow(fc.TetrahedronNode, fc.Nodes.size());
+    // The grid reads the groups, not what they came from, nor the drawing's
+    // node points and cone boundaries.
+    fc.TriangleNode = std::vector<Id>();
+    fc.TetrahedronNode = std::vector<Id>();
+    fc.NodePoint = std::vector<Id>();
+    r.Cones = std::vector<Arc>();
+    // No sponsor arrows: nothing here reads them (millions at 10^6 points).
+    ReconstructionToVTK(fc, r.Carriers, r.Run, output, triangles, tetrahedra, outputs.Grid,
+      nullptr, nullptr, settings.Advice);
+  }
+  // The geometry is in the grid now: the profile and the rest read nodes and
+  // steps only, and need its memory.
+  fc.Points = std::vector<Point3>();
+  fc.Triangles = std::vector<std::array<Id, 3>>();
+  fc.Tetrahedra = std::vector<std::array<Id, 4>>();
+  fc.Arcs = std::vector<Arc>();
+  r.Carriers = std::vector<Id>();
+  ReconstructionToVTK(fc, r.Carriers, r.Run, output, {}, {}, nullptr, outputs.Profile, nullptr,
+    settings.Advice);
   if (report.TopologyError.empty())
   {
     TopologyToVTK(chosen.Bars, output, settings.Cap, outputs.Grid, outputs.Topology);

@@ -284,7 +284,8 @@ ReconstructionResult PlainReconstruct(const std::vector<Node>& nodes, const std:
   double running = 1;
   auto insert = [&](Id n, double priority, Extension kind, Id sponsor) {
     running = std::max(running, priority);
-    r.Nodes[n] = Insertion{ static_cast<Id>(r.Order.size()), priority, running, kind, sponsor };
+    r.Nodes[n] = Insertion{ static_cast<Id>(r.Order.size()), priority, running, kind,
+      static_cast<std::int32_t>(sponsor) };
     r.Order.push_back(n);
   };
   std::sort(init.begin(), init.end());

@@ -36,12 +36,13 @@ private:
 };
 
 /// Offsets has one entry per row plus one, starts at 0 and never decreases;
-/// its last entry is the number of values. Offsets are 64-bit (flow complexes
-/// have more arcs than 2^31), the values' type is the caller's.
-template <class T>
+/// its last entry is the number of values. Offsets are 64-bit by default (flow
+/// complexes have more arcs than 2^31); O narrower when the caller knows the
+/// values fit. The values' type is the caller's.
+template <class T, class O = Id>
 struct CompressedRows
 {
-  std::vector<Id> Offsets{ 0 };
+  std::vector<O> Offsets{ 0 };
   std::vector<T> Values;
 
   Id RowCount() const { return static_cast<Id>(this->Offsets.size()) - 1; }
@@ -57,7 +58,7 @@ struct CompressedRows
   void AppendRow(It first, It last)
   {
     this->Values.insert(this->Values.end(), first, last);
-    this->Offsets.push_back(this->ValueCount());
+    this->Offsets.push_back(static_cast<O>(this->ValueCount()));
   }
 
   /// The entries grouped by row (a counting sort): `forEach(emit)` must call
@@ -68,7 +69,7 @@ struct CompressedRows
   static CompressedRows Group(std::size_t rows, ForEach&& forEach)
   {
     CompressedRows c;
-    std::vector<Id>& o = c.Offsets;
+    std::vector<O>& o = c.Offsets;
     o.assign(rows + 1, 0);
     // Counted two rows on, so that after the prefix sum Offsets[r + 1] is where
     // row r starts: the cursor of row r while placing, its end afterwards.

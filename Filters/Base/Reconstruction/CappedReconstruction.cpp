@@ -30,17 +30,7 @@ CappedBuild Build(const std::vector<Point3>& points, const BuildOptions& options
   std::unique_ptr<Retriangulation> triangulation;
   b.Complex = BuildFlowComplex(points, build, progress, &triangulation);
   b.Triangulation = std::move(triangulation);
-  for (const Arc& a : b.Complex.Arcs)
-  {
-    if (b.Complex.Nodes[a.Lower].Index == 2)
-    {
-      b.Cones.push_back(a);
-    }
-    else if (keepRaw && b.Complex.Nodes[a.Lower].Index == 1)
-    {
-      b.RawPatchArcs.push_back(a);
-    }
-  }
+  b.KeepRawPatchArcs = keepRaw;
   b.Cap = cap;
   b.PersistenceThreshold = tpMax;
   b.Deferred = defer;
@@ -48,23 +38,53 @@ CappedBuild Build(const std::vector<Point3>& points, const BuildOptions& options
 }
 
 /// The rest of the run from `b`, at t_p (<= b's): b's parts are copied, or
-/// moved when `last`.
-CappedReconstruction Continue(CappedBuild& b, double tp, bool last, const Progress& progress)
+/// moved when `take`.
+CappedReconstruction Continue(CappedBuild& b, double tp, bool take, const Progress& progress)
 {
   CappedReconstruction r;
   const double cap = b.Cap;
-  if (!last)
+  // The 2-3 arcs and (for the topology) the 1-2 arcs as built, out of the
+  // build's arcs: the build does not hold them a second time.
+  const auto lowerIndex = [&b](const Arc& a) { return b.Complex.Nodes[a.Lower].Index; };
+  std::size_t cones = 0, raw = 0;
+  for (const Arc& a : b.Complex.Arcs)
   {
-    const double arcs = static_cast<double>(b.Complex.Arcs.size() + b.Cones.size() + b.RawPatchArcs.size());
-    RequireMemory(static_cast<double>(sizeof(Node)) * static_cast<double>(b.Complex.Nodes.size()) +
-        static_cast<double>(sizeof(Arc)) * arcs,
+    cones += lowerIndex(a) == 2 ? 1 : 0;
+    raw += b.KeepRawPatchArcs && lowerIndex(a) == 1 ? 1 : 0;
+  }
+  if (!take)
+  {
+    // The nodes are lent, not copied (MoveNodes).
+    const double arcs = static_cast<double>(b.Complex.Arcs.size() + cones + raw);
+    RequireMemory(static_cast<double>(sizeof(Arc)) * arcs,
       "a copy of the flow complex of a " + std::to_string(b.Complex.CountByIndex()[0]) +
         "-point cloud for a second t_p",
       "give t_p a value (one run), or use fewer points");
   }
-  r.Complex = last ? std::move(b.Complex) : b.Complex;
-  r.Cones = last ? std::move(b.Cones) : b.Cones;
-  r.RawPatchArcs = last ? std::move(b.RawPatchArcs) : b.RawPatchArcs;
+  r.Cones.reserve(cones);
+  r.RawPatchArcs.reserve(raw);
+  for (const Arc& a : b.Complex.Arcs)
+  {
+    if (lowerIndex(a) == 2)
+    {
+      r.Cones.push_back(a);
+    }
+    else if (b.KeepRawPatchArcs && lowerIndex(a) == 1)
+    {
+      r.RawPatchArcs.push_back(a);
+    }
+  }
+  if (!take)
+  {
+    FlowComplex lent;
+    MoveNodes(b.Complex, lent);
+    r.Complex = b.Complex;
+    MoveNodes(lent, r.Complex);
+  }
+  else
+  {
+    r.Complex = std::move(b.Complex);
+  }
   r.Triangulation = b.Triangulation;
   FlowComplex& fc = r.Complex;
   r.DeferredPatches = static_cast<Id>(fc.DeferredPatches.size());
@@ -147,6 +167,21 @@ CappedReconstruction Continue(CappedBuild& b, double tp, bool last, const Progre
 
 } // namespace
 
+void MoveNodes(FlowComplex& from, FlowComplex& to)
+{
+  to.Nodes = std::move(from.Nodes);
+  to.Points = std::move(from.Points);
+  to.Representative = std::move(from.Representative);
+  from.Nodes.clear();
+  from.Points.clear();
+  from.Representative.clear();
+}
+
+void ReturnNodes(CappedReconstruction& r, CappedBuild& build)
+{
+  MoveNodes(r.Complex, build.Complex);
+}
+
 double FlowLineDeferralRatio(double cap, double persistenceThreshold)
 {
   return 1.25 * cap * std::max(1.0, persistenceThreshold);
@@ -186,13 +221,13 @@ CappedBuild BuildBelow(const std::vector<Point3>& points, BuildOptions options,
 }
 
 CappedReconstruction ReconstructBuilt(
-  CappedBuild& build, double persistenceThreshold, bool last, const Progress& progress)
+  CappedBuild& build, double persistenceThreshold, bool take, const Progress& progress)
 {
   if (!(persistenceThreshold <= build.PersistenceThreshold))
   {
     throw InputError("reconstruction: t_p above the one the build deferred for");
   }
-  return Continue(build, persistenceThreshold, last, progress);
+  return Continue(build, persistenceThreshold, take, progress);
 }
 
 CappedReconstruction ReconstructBelow(const std::vector<Point3>& points, BuildOptions options,

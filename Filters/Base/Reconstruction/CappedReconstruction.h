@@ -53,8 +53,7 @@ struct CappedReconstruction
 struct CappedBuild
 {
   FlowComplex Complex;            ///< nodes and arcs as built, no geometry
-  std::vector<Arc> Cones;         ///< the 2-3 arcs as built
-  std::vector<Arc> RawPatchArcs;  ///< with keepRawPatchArcs: the 1-2 arcs as built
+  bool KeepRawPatchArcs = false;  ///< runs keep their RawPatchArcs
   std::shared_ptr<Retriangulation> Triangulation;
   double Cap = HUGE_VAL;
   double PersistenceThreshold = 0; ///< the largest t_p it serves
@@ -84,14 +83,23 @@ CappedReconstruction ReconstructBelow(const std::vector<Point3>& points, BuildOp
   bool keepRawPatchArcs = false);
 
 /// ReconstructBelow in two parts: the build for every t_p up to
-/// `persistenceThreshold`, then each t_p's run (which copies what it changes,
-/// or takes it when `last`). A Degenerate from a deferring build's run means:
-/// build again without deferral.
+/// `persistenceThreshold`, then each t_p's run (which copies what it changes
+/// and borrows the rest, or takes it all when `take`: the build is spent). A
+/// run that does not take it must give what it borrowed back (ReturnNodes)
+/// before the next one. A Degenerate from a deferring build's run means: build
+/// again without deferral.
 CappedBuild BuildBelow(const std::vector<Point3>& points, BuildOptions options,
   double persistenceThreshold, double cap, bool allowDeferral, const Progress& progress,
   bool keepRawPatchArcs);
 CappedReconstruction ReconstructBuilt(
-  CappedBuild& build, double persistenceThreshold, bool last, const Progress& progress);
+  CappedBuild& build, double persistenceThreshold, bool take, const Progress& progress);
+
+/// Moves the parts of a flow complex that no run changes (nodes, points,
+/// representatives): lent by the build to a run that does not take it, so
+/// that the runs of several t_p hold them once.
+void MoveNodes(FlowComplex& from, FlowComplex& to);
+/// Gives what the run `r` (which did not take the build) borrowed back to it.
+void ReturnNodes(CappedReconstruction& r, CappedBuild& build);
 
 } // namespace flowrecon
 

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <queue>
 #include <string>
 #include <tuple>
@@ -35,9 +36,11 @@ void CheckArcs(const std::vector<Node>& nodes, const std::vector<Arc>& arcs,
 /// kept: the reconstruction follows incidences of the Hasse diagram (an orbit
 /// from a to b exists), not their parity. Rows are sorted: the visiting order,
 /// hence which sponsor wins a tie, does not depend on the order of the arcs.
+/// Offsets are 32-bit, as node ids: 8 bytes a node less (checked).
 struct Adjacency
 {
-  CompressedRows<std::int32_t> In, Out;
+  using Rows32 = CompressedRows<std::int32_t, std::uint32_t>;
+  Rows32 In, Out;
 
   Adjacency(std::size_t n, const std::vector<Arc>& arcs)
     : In(Rows(n, arcs, &Arc::Upper, &Arc::Lower))
@@ -46,10 +49,14 @@ struct Adjacency
   }
 
 private:
-  static CompressedRows<std::int32_t> Rows(
+  static Rows32 Rows(
     std::size_t n, const std::vector<Arc>& arcs, std::int32_t Arc::*row, std::int32_t Arc::*value)
   {
-    auto rows = CompressedRows<std::int32_t>::Group(n, [&](const auto& emit) {
+    if (arcs.size() > std::numeric_limits<std::uint32_t>::max())
+    {
+      throw InputError("reconstruction: more than 2^32 arcs");
+    }
+    auto rows = Rows32::Group(n, [&](const auto& emit) {
       for (const Arc& a : arcs)
       {
         if (a.Multiplicity > 0)
@@ -63,11 +70,13 @@ private:
   }
 };
 
+/// 16 bytes: with the adjacency and the insertions, the queue is most of the
+/// run's memory.
 struct Entry
 {
   double Priority;
-  int Gated; ///< 0 for regularization: it precedes any extension of equal priority
-  Id Node;
+  std::int32_t Gated; ///< 0 for regularization: it precedes any extension of equal priority
+  std::int32_t Node;
   /// Reversed, so that std::priority_queue pops the least key.
   bool operator<(const Entry& o) const
   {
@@ -76,14 +85,18 @@ struct Entry
   }
 };
 
-/// The best sponsorship of a node not yet inserted.
-struct Offer
+static_assert(sizeof(Entry) == 16 && sizeof(Insertion) == 32, "per-node records of the run");
+
+/// The best sponsorship of a node not yet inserted is kept in its Insertion
+/// (Step -1), its Gated in Threshold, rather than in an array of its own (one
+/// record per node less); nodes never inserted get Insertion() at the end.
+Insertion NoOffer()
 {
-  double Priority = HUGE_VAL;
-  int Gated = 2; ///< larger than any real offer
-  Extension Kind = Extension::Initialization;
-  Id Sponsor = -1;
-};
+  Insertion none;
+  none.Priority = HUGE_VAL;
+  none.Threshold = 2; // Gated: larger than any real offer
+  return none;
+}
 
 class Reconstructor
 {
@@ -94,14 +107,13 @@ public:
     , Survives(survives)
     , Graph(nodes.size(), arcs)
     , Tr(tr)
-    , Best(nodes.size())
     , Late(late)
   {
   }
 
   ReconstructionResult Run(const std::vector<Id>& initializationEdges, const Progress& progress)
   {
-    this->Result.Nodes.assign(this->Nodes.size(), Insertion());
+    this->Result.Nodes.assign(this->Nodes.size(), NoOffer());
     std::vector<Id> edges = initializationEdges;
     std::sort(edges.begin(), edges.end());
     edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
@@ -132,19 +144,26 @@ public:
     {
       const Entry top = this->Queue.top();
       this->Queue.pop();
-      const Offer& best = this->Best[top.Node];
+      const Insertion& best = this->Result.Nodes[top.Node];
       // Lazy deletion: skip entries superseded by a better offer or already used.
-      if (this->Result.Nodes[top.Node].Step >= 0 || best.Priority != top.Priority ||
-        best.Gated != top.Gated)
+      if (best.Step >= 0 || best.Priority != top.Priority || best.Threshold != top.Gated)
       {
         continue;
       }
-      this->Insert(top.Node, best.Priority, best.Kind, best.Sponsor);
-      this->Result.Profile.push_back(best.Priority);
+      const double priority = best.Priority;
+      this->Insert(top.Node, priority, best.Kind, best.Sponsor);
+      this->Result.Profile.push_back(priority);
       this->Extend(top.Node);
       if (this->Result.Order.size() % 4096 == 0)
       {
         progress(static_cast<double>(this->Result.Order.size()) / total, "Reconstructing");
+      }
+    }
+    for (Insertion& ins : this->Result.Nodes)
+    {
+      if (ins.Step < 0)
+      {
+        ins = Insertion(); // never offered
       }
     }
     progress(1, "Reconstructing");
@@ -160,7 +179,7 @@ private:
     ins.Priority = priority;
     ins.Threshold = this->Running;
     ins.Kind = kind;
-    ins.Sponsor = sponsor;
+    ins.Sponsor = static_cast<std::int32_t>(sponsor);
     this->Result.Order.push_back(node);
   }
 
@@ -311,15 +330,15 @@ private:
     {
       return;
     }
-    Offer& best = this->Best[d];
+    Insertion& best = this->Result.Nodes[d];
     // Strictly better only: the first sponsor found keeps ties.
-    if (std::tie(ratio, gated) < std::tie(best.Priority, best.Gated))
+    if (std::make_pair(ratio, static_cast<double>(gated)) < std::make_pair(best.Priority, best.Threshold))
     {
       best.Priority = ratio;
-      best.Gated = gated;
+      best.Threshold = gated;
       best.Kind = kind;
-      best.Sponsor = sponsor;
-      this->Queue.push(Entry{ ratio, gated, d });
+      best.Sponsor = static_cast<std::int32_t>(sponsor);
+      this->Queue.push(Entry{ ratio, gated, static_cast<std::int32_t>(d) });
     }
   }
 
@@ -327,7 +346,6 @@ private:
   const std::vector<bool>& Survives;
   Adjacency Graph;
   double Tr;
-  std::vector<Offer> Best;
   std::priority_queue<Entry> Queue;
   double Running = 1;
   ReconstructionResult Result;

@@ -23,7 +23,8 @@ enum class Extension : int
   Horizontal = 3
 };
 
-/// What happened to one node. Step < 0: never inserted.
+/// What happened to one node. Step < 0: never inserted. 32 bytes (node ids
+/// are 32-bit, FlowComplex.h): one per node, for each t_p candidate.
 struct Insertion
 {
   Id Step = -1;        ///< insertion order, 0-based; initialization edges first
@@ -32,7 +33,7 @@ struct Insertion
   /// t_r > 1 is exactly the set of nodes with Threshold < t_r (see Reconstruct).
   double Threshold = 0;
   Extension Kind = Extension::Initialization;
-  Id Sponsor = -1;     ///< the node whose extension inserted it; -1 for initialization
+  std::int32_t Sponsor = -1; ///< the node whose extension inserted it; -1 for initialization
 };
 
 struct ReconstructionResult

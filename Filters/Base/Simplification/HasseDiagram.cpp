@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <limits>
 #include <string>
+#include <tuple>
 
 namespace flowrecon
 {
@@ -39,10 +40,16 @@ HasseDiagram::HasseDiagram(const std::vector<Node>& nodes, const std::vector<Arc
   }
   // Reserve the lists (a flow complex has ~3 arcs per node: reallocation shows).
   std::vector<std::uint32_t> inDegree(nodes.size(), 0), outDegree(nodes.size(), 0);
+  std::size_t sampleArcs = 0;
   for (const Arc& a : arcs)
   {
     if (a.Lower >= 0 && a.Lower < n && a.Upper >= 0 && a.Upper < n)
     {
+      if (nodes[a.Lower].Index == 0)
+      {
+        ++sampleArcs;
+        continue;
+      }
       ++outDegree[a.Lower];
       ++inDegree[a.Upper];
     }
@@ -52,15 +59,22 @@ HasseDiagram::HasseDiagram(const std::vector<Node>& nodes, const std::vector<Arc
     this->InLists[i].reserve(inDegree[i]);
     this->OutLists[i].reserve(outDegree[i]);
   }
+  this->SampleArcs.reserve(sampleArcs);
   for (std::size_t i = 0; i < arcs.size(); ++i)
   {
     const Arc& a = arcs[i];
     ValidateArc(nodes, a, i);
-    if (a.Multiplicity > 0)
+    if (a.Multiplicity > 0 && nodes[a.Lower].Index == 0)
+    {
+      this->SampleArcs.push_back(a);
+    }
+    else if (a.Multiplicity > 0)
     {
       this->Insert(a.Lower, a.Upper, a.Multiplicity);
     }
   }
+  std::sort(this->SampleArcs.begin(), this->SampleArcs.end(),
+    [](const Arc& a, const Arc& b) { return std::tie(a.Lower, a.Upper) < std::tie(b.Lower, b.Upper); });
   this->MergeRepeatedArcs();
 }
 
@@ -73,8 +87,26 @@ void HasseDiagram::MergeRepeatedArcs()
   // multiplicities go to the first copy, the others are erased.
   std::vector<std::pair<std::int32_t, std::uint32_t>> row; // (upper, position)
   std::vector<std::uint32_t> erase;
+  std::vector<Arc>& sample = this->SampleArcs;
+  std::size_t next = 0, kept = 0; // in SampleArcs, sorted: repeats are neighbours
   for (Id lower = 0; lower < this->NodeCount(); ++lower)
   {
+    for (; next < sample.size() && sample[next].Lower == lower; ++next)
+    {
+      const Arc& a = sample[next];
+      if (kept == 0 || sample[kept - 1].Lower != lower || sample[kept - 1].Upper != a.Upper)
+      {
+        sample[kept++] = a;
+        continue;
+      }
+      Arc& keep = sample[kept - 1];
+      if (a.Multiplicity > std::numeric_limits<std::int32_t>::max() - keep.Multiplicity)
+      {
+        throw InputError("Hasse diagram: the arc from node " + std::to_string(lower) +
+          " to node " + std::to_string(keep.Upper) + " has too large a multiplicity");
+      }
+      keep.Multiplicity += a.Multiplicity;
+    }
     HalfArcs& out = this->OutLists[lower];
     if (out.size() < 2)
     {
@@ -112,6 +144,7 @@ void HasseDiagram::MergeRepeatedArcs()
       this->EraseOut(lower, k);
     }
   }
+  sample.resize(kept);
 }
 
 std::int64_t HasseDiagram::Find(Id lower, Id upper) const
@@ -209,28 +242,41 @@ void HasseDiagram::Remove(Id node)
   HalfArcs().swap(this->OutLists[node]);
 }
 
-std::vector<Arc> HasseDiagram::Arcs() const
+std::vector<Arc> HasseDiagram::TakeArcs()
 {
+  std::vector<HalfArcs>().swap(this->InLists); // the Out lists hold every other arc
   std::vector<Arc> arcs;
-  std::size_t count = 0;
+  std::size_t count = this->SampleArcs.size();
   for (const HalfArcs& out : this->OutLists)
   {
     count += out.size(); // an upper bound: entries of removed nodes are skipped
   }
   arcs.reserve(count);
-  for (Id lower = 0; lower < this->NodeCount(); ++lower)
+  std::size_t next = 0;
+  for (std::size_t lower = 0; lower < this->OutLists.size(); ++lower)
   {
     const std::size_t first = arcs.size();
+    for (; next < this->SampleArcs.size() && this->SampleArcs[next].Lower == static_cast<Id>(lower); ++next)
+    {
+      if (!this->Removed[this->SampleArcs[next].Upper])
+      {
+        arcs.push_back(this->SampleArcs[next]);
+      }
+    }
     for (const HalfArc& h : this->OutLists[lower])
     {
       if (!this->Removed[h.Node])
       {
-        arcs.push_back(Arc{ lower, h.Node, h.Multiplicity });
+        arcs.push_back(Arc{ static_cast<Id>(lower), h.Node, h.Multiplicity });
       }
     }
+    HalfArcs().swap(this->OutLists[lower]);
     std::sort(arcs.begin() + static_cast<std::ptrdiff_t>(first), arcs.end(),
       [](const Arc& a, const Arc& b) { return a.Upper < b.Upper; });
   }
+  std::vector<HalfArcs>().swap(this->OutLists);
+  std::vector<char>().swap(this->Removed);
+  std::vector<Arc>().swap(this->SampleArcs);
   return arcs;
 }
 

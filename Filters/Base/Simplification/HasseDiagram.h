@@ -24,6 +24,11 @@ void ValidateArc(const std::vector<Node>& nodes, const Arc& arc, std::size_t pos
 /// simplification quadratic. Lists are unordered. Finding an arc scans the
 /// shorter of the two lists, which is short in flow complexes (a few entries)
 /// even when the other one is huge.
+///
+/// The arcs out of index-0 nodes (from samples to their Gabriel edges, some
+/// half of all arcs) are kept aside in one sorted list, not in In and Out: no
+/// cancellation reads them or makes one (index-0 nodes are never cancelled),
+/// and an edge's go with it.
 class HasseDiagram
 {
 public:
@@ -43,8 +48,8 @@ public:
 
   Id NodeCount() const { return static_cast<Id>(this->InLists.size()); }
   /// Ancestors / successors of `node` with multiplicities, in no particular
-  /// order. The lists may still hold entries of removed nodes: skip them
-  /// (IsRemoved).
+  /// order, but for the arcs out of index-0 nodes. The lists may still hold
+  /// entries of removed nodes: skip them (IsRemoved).
   const HalfArcs& In(Id node) const { return this->InLists[node]; }
   const HalfArcs& Out(Id node) const { return this->OutLists[node]; }
   bool IsRemoved(Id node) const { return this->Removed[node] != 0; }
@@ -63,8 +68,9 @@ public:
   /// the simplification of 10^5 torus-surface points).
   void Remove(Id node);
 
-  /// Every arc, sorted by (Lower, Upper).
-  std::vector<Arc> Arcs() const;
+  /// Every arc, sorted by (Lower, Upper). Empties the diagram: its lists are
+  /// freed while the arcs are made, so that the two do not add up.
+  std::vector<Arc> TakeArcs();
 
 private:
   /// Position of `upper` in Out(lower), or -1.
@@ -77,6 +83,7 @@ private:
 
   std::vector<HalfArcs> InLists, OutLists;
   std::vector<char> Removed;
+  std::vector<Arc> SampleArcs; ///< the arcs out of index-0 nodes, sorted, repeats merged
 };
 
 } // namespace flowrecon

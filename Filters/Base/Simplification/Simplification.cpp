@@ -97,7 +97,7 @@ public:
       result.Pairs.push_back(pair);
     }
     result.Survives = this->Alive;
-    result.Arcs = this->Diagram.Arcs();
+    result.Arcs = this->Diagram.TakeArcs(); // frees the diagram before the owners
     if (!this->RecordLowers)
     {
       result.Lowers.Offsets.assign(result.Pairs.size() + 1, 0);
