@@ -18,11 +18,9 @@ import re
 import subprocess
 import sys
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "..", "Data"))
-import generate_clouds as gc  # noqa: E402
-import numpy as np  # noqa: E402
-from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader  # noqa: E402
+import generate_clouds as gc
+import numpy as np
+from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
 
 FLOWRECON, WORK = sys.argv[1], sys.argv[2]
 os.makedirs(WORK, exist_ok=True)

@@ -17,16 +17,13 @@ import os
 import subprocess
 import sys
 
+import generate_clouds as gen
 import numpy as np
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "Filters", "Python"))  # flowcomplex_io
-sys.path.insert(0, os.path.join(HERE, "..", "..", "Data"))
+from flowrecon_testing import flowcomplex_io as fio
+from flowrecon_testing.checks import Checker
 
-import flowcomplex_io as fio  # noqa: E402
-import generate_clouds as gen  # noqa: E402
-
-CHK = fio.Checker("test_diagram_gudhi")
+CHK = Checker("test_diagram_gudhi")
 DROP = 1e-9
 TOL = 1e-7
 

@@ -35,14 +35,13 @@ import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkIOXML import vtkXMLMultiBlockDataReader, vtkXMLUnstructuredGridReader
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "Filters", "Python"))  # flowcomplex_io
-import flowcomplex_io as fio  # noqa: E402
+from flowrecon_testing import flowcomplex_io as fio
+from flowrecon_testing.checks import Checker
 
 FLOWRECON, WORK = sys.argv[1], sys.argv[2]
 LARGE = int(sys.argv[sys.argv.index("--large") + 1]) if "--large" in sys.argv else None
 REL = 1e-12
-CHK = fio.Checker("test_exact_perturbed_values")
+CHK = Checker("test_exact_perturbed_values")
 
 
 def grid(n, spacing=1.0, origin=(0.0, 0.0, 0.0)):

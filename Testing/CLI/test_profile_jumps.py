@@ -19,13 +19,10 @@ import subprocess
 import sys
 
 import numpy as np
+from flowrecon import vtkFlowComplex, vtkFlowComplexSimplification, vtkFlowReconstruction
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Filters",
-                                "Python"))
-from flowcomplex_io import array, get_block, make_polydata  # noqa: E402
-from flowrecon import (vtkFlowComplex, vtkFlowComplexSimplification,  # noqa: E402
-                       vtkFlowReconstruction)
+from flowrecon_testing.flowcomplex_io import array, get_block, make_polydata
 
 FLOWRECON, WORK = sys.argv[1], sys.argv[2]
 DATA = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Data")

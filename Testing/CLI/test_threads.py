@@ -18,8 +18,7 @@ import sys
 import numpy as np
 from vtkmodules.vtkIOXML import vtkXMLMultiBlockDataReader
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Filters", "Python"))
-import flowcomplex_io as fio  # noqa: E402
+from flowrecon_testing import flowcomplex_io as fio
 
 FLOWRECON, WORK = sys.argv[1], sys.argv[2]
 os.makedirs(WORK, exist_ok=True)

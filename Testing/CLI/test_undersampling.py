@@ -12,11 +12,10 @@ import re
 import subprocess
 import sys
 
+import generate_clouds as gc
 import numpy as np
 
 FLOWRECON, WORK = sys.argv[1], sys.argv[2]
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Data"))
-import generate_clouds as gc  # noqa: E402
 
 failures = []
 

@@ -31,18 +31,15 @@ import math
 import os
 import sys
 
+import generate_clouds as gen
 import numpy as np
-
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "..", "Data"))
-import generate_clouds as gen  # noqa: E402
-
-from paraview import servermanager, simple  # noqa: E402
-from paraview.modules.vtkRemotingViews import (  # noqa: E402
+from paraview import servermanager, simple
+from paraview.modules.vtkRemotingViews import (
     vtkSMParaViewPipelineControllerWithRendering, vtkSMPVRepresentationProxy)
 
+from flowrecon_testing.checks import check, finish
+
 PLUGIN, WORK = sys.argv[1:3]
-from checks import check, failures, finish  # noqa: E402,F401
 
 controller = vtkSMParaViewPipelineControllerWithRendering()
 

@@ -16,18 +16,14 @@ Run (needs X): pvpython --force-offscreen-rendering test_persistence_diagram_vie
 import os
 import sys
 
+import generate_clouds as gen
 import numpy as np
+from paraview import simple
+from paraview.modules.vtkRemotingViews import vtkSMParaViewPipelineControllerWithRendering
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "..", "Data"))
-import generate_clouds as gen  # noqa: E402
-
-from paraview import simple  # noqa: E402
-from paraview.modules.vtkRemotingViews import (  # noqa: E402
-    vtkSMParaViewPipelineControllerWithRendering)
+from flowrecon_testing.checks import check, finish
 
 PLUGIN, WORK = sys.argv[1:3]
-from checks import check, failures, finish  # noqa: E402,F401
 
 
 def picture(view, path):

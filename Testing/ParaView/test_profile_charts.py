@@ -27,20 +27,16 @@ import re
 import subprocess
 import sys
 
+import generate_clouds as gen
 import numpy as np
+from paraview import servermanager, simple
+from paraview.modules.vtkRemotingViews import vtkSMParaViewPipelineControllerWithRendering
+from vtkmodules.util.numpy_support import vtk_to_numpy
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "..", "Data"))
-import generate_clouds as gen  # noqa: E402
-
-from paraview import servermanager, simple  # noqa: E402
-from paraview.modules.vtkRemotingViews import (  # noqa: E402
-    vtkSMParaViewPipelineControllerWithRendering)
-from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
+from flowrecon_testing.checks import check, finish
 
 PLUGIN, FLOWRECON, WORK = sys.argv[1:4]
 TMAX = 4.0
-from checks import check, failures, finish  # noqa: E402,F401
 
 
 def cli(xyz, tr):

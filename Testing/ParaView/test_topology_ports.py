@@ -17,15 +17,13 @@ import re
 import subprocess
 import sys
 
+import generate_clouds as gc
 import numpy as np
+from paraview import servermanager
+from paraview.simple import LoadPlugin, OpenDataFile
+from vtkmodules.util.numpy_support import vtk_to_numpy
 
 PLUGIN, FLOWRECON, WORK = sys.argv[1:4]
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Data"))
-import generate_clouds as gc  # noqa: E402
-
-from paraview import servermanager  # noqa: E402
-from paraview.simple import LoadPlugin, OpenDataFile  # noqa: E402
-from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
 
 LoadPlugin(PLUGIN, remote=False, ns=globals())
 os.makedirs(WORK, exist_ok=True)

@@ -20,10 +20,9 @@ ones (jittered and exact grids, cospherical points, duplicates, right angles):
 - random input is not perturbed; degenerate input is, and the report says so;
   duplicates are merged and reported.
 
-Run: PYTHONPATH=<build>/lib/python3/dist-packages /usr/bin/python3 test_invariants.py
+Run: PYTHONPATH=<build>/lib/python3/dist-packages:Testing/Python:Data /usr/bin/python3 test_invariants.py
 """
 
-import os
 import sys
 
 import numpy as np
@@ -31,15 +30,12 @@ from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import connected_components, minimum_spanning_tree
 from scipy.spatial import cKDTree
 from scipy.spatial.distance import cdist
+import generate_clouds as gen
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
-sys.path.insert(0, os.path.join(HERE, "..", "..", "..", "Data"))
+from flowrecon_testing import flowcomplex_io as fio
+from flowrecon_testing.checks import Checker
 
-import flowcomplex_io as fio  # noqa: E402
-import generate_clouds as gen  # noqa: E402
-
-CHK = fio.Checker("test_invariants")
+CHK = Checker("test_invariants")
 
 
 # --------------------------------------------------------------------------- inputs

@@ -13,24 +13,20 @@ agree per dimension as multisets within 1e-7 (relative).
 Before that, the reduction itself is checked against GUDHI on GUDHI's own alpha
 filtration, so a failure below points at the filter, not at this test.
 
-Run: PYTHONPATH=<build>/lib/python3/dist-packages /usr/bin/python3 test_persistence_gudhi.py
+Run: PYTHONPATH=<build>/lib/python3/dist-packages:Testing/Python:Data /usr/bin/python3 test_persistence_gudhi.py
 """
 
 import math
-import os
 import sys
 import time
 
 import numpy as np
+import generate_clouds as gen
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
-sys.path.insert(0, os.path.join(HERE, "..", "..", "..", "Data"))
+from flowrecon_testing import flowcomplex_io as fio
+from flowrecon_testing.checks import Checker
 
-import flowcomplex_io as fio  # noqa: E402
-import generate_clouds as gen  # noqa: E402
-
-CHK = fio.Checker("test_persistence_gudhi")
+CHK = Checker("test_persistence_gudhi")
 DROP = 1e-9   # pairs shorter than DROP * diameter are ignored
 TOL = 1e-7    # births and deaths must agree within TOL * diameter
 
