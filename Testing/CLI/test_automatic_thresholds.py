@@ -1,5 +1,5 @@
 """The automatic t_r and t_p (`flowrecon reconstruct` without --tr/--tp) on the
-study's generators (Data/generate_clouds.py), whose true Betti numbers are
+study's generators (Apps/Scripts/generate_clouds.py), whose true Betti numbers are
 known by construction: quasi-uniform and i.i.d. surfaces, lattices that the
 simplification breaks, a solid, a non-manifold union and a curve. At defaults
 each must print its truth, a line 't_r X (auto), t_p Y (auto): Betti numbers

@@ -1,7 +1,7 @@
 """Under-sampling warnings: `flowrecon reconstruct` at the paper's t_r 2, t_p 1.1
 prints 'warning: under-sampled near (x, y, z): ...' where the Betti numbers
 change for a t_r just above the chosen one. Clean quasi-uniform samples of a
-sphere, a torus and a genus-2 surface (Data/generate_clouds.py): the right
+sphere, a torus and a genus-2 surface (Apps/Scripts/generate_clouds.py): the right
 Betti numbers and no warning. The same sphere and torus with a known region
 thinned (a polar cap, the top of the tube: half or more of its points removed):
 a wrong answer, at least one warning, and every warning inside the thinned

@@ -71,7 +71,7 @@ if (FLOWRECON_BUILD_PARAVIEW_PLUGIN AND TARGET FlowRecon)
   endif ()
 endif ()
 
-# Data/demo.pvsm (written by Data/make_states.py) loads from the repository root
+# Data/demo.pvsm (written by Apps/Scripts/make_states.py) loads from the repository root
 # with the plugin from PV_PLUGIN_PATH. No rendering: no X server needed.
 find_program(FLOWRECON_PVPYTHON pvpython DOC "ParaView's Python interpreter")
 if (FLOWRECON_BUILD_PARAVIEW_PLUGIN AND TARGET FlowRecon AND FLOWRECON_PVPYTHON)

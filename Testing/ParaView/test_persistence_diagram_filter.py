@@ -16,7 +16,7 @@ that is not a flow complex, a simplified complex) gives a VTK error and empty
 output, never a crash; an empty multiblock gives empty outputs and no error.
 
 Run: pvpython test_persistence_diagram_filter.py PLUGIN FLOWRECON WORKDIR
-with PYTHONPATH holding the build's `flowrecon` package, Testing/Python and Data.
+with PYTHONPATH holding the build's `flowrecon` package, Testing/Python and Apps/Scripts.
 """
 
 import math

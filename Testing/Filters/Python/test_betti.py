@@ -2,7 +2,7 @@
 """Homotopy type of reconstructions (docs/design.md §3): the Betti numbers over Z/2 of
 the output of vtkFlowReconstruction, at the DEFAULT parameters (t_p and t_r
 chosen from the data: the filters' defaults, not set here), equal those of the sampled set,
-on quasi-uniform samples made by Data/generate_clouds.py (farthest-point
+on quasi-uniform samples made by Apps/Scripts/generate_clouds.py (farthest-point
 subsamples of dense i.i.d. samples, or evenly spaced curve samples: the paper's
 guarantee assumes a roughly uniform sampling).
 
@@ -22,7 +22,7 @@ The Betti numbers come from GUDHI: a SimplexTree holding every output cell
 persistence() / betti_numbers(); an independent Z/2 reduction is kept as a check
 of the GUDHI side on a small complex.
 
-Run: PYTHONPATH=<build>/lib/python3/dist-packages:Testing/Python:Data /usr/bin/python3 test_betti.py
+Run: PYTHONPATH=<build>/lib/python3/dist-packages:Testing/Python:Apps/Scripts /usr/bin/python3 test_betti.py
      [--only NAME,...] [--scan]   (--scan: on a failure, also the t_r giving the truth)
 """
 
@@ -59,7 +59,7 @@ def import_modules():
         import gudhi
     except ImportError as e:
         sys.exit("test_betti: cannot import %s; run with /usr/bin/python3 and "
-                 "PYTHONPATH=<build>/lib/python3/dist-packages:Testing/Python:Data" % e)
+                 "PYTHONPATH=<build>/lib/python3/dist-packages:Testing/Python:Apps/Scripts" % e)
     return flowrecon, gudhi
 
 

@@ -20,7 +20,7 @@ ones (jittered and exact grids, cospherical points, duplicates, right angles):
 - random input is not perturbed; degenerate input is, and the report says so;
   duplicates are merged and reported.
 
-Run: PYTHONPATH=<build>/lib/python3/dist-packages:Testing/Python:Data /usr/bin/python3 test_invariants.py
+Run: PYTHONPATH=<build>/lib/python3/dist-packages:Testing/Python:Apps/Scripts /usr/bin/python3 test_invariants.py
 """
 
 import sys

@@ -18,7 +18,7 @@
     piecewise-linear state machine of §3 over all samples, floating point), must
     reach their own index-2 critical point before any other critical point.
 
-Run: PYTHONPATH=<build>/lib/python3/dist-packages:Testing/Python:Data /usr/bin/python3 test_oracles.py
+Run: PYTHONPATH=<build>/lib/python3/dist-packages:Testing/Python:Apps/Scripts /usr/bin/python3 test_oracles.py
 """
 
 import itertools

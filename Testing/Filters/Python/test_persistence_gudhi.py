@@ -13,7 +13,7 @@ agree per dimension as multisets within 1e-7 (relative).
 Before that, the reduction itself is checked against GUDHI on GUDHI's own alpha
 filtration, so a failure below points at the filter, not at this test.
 
-Run: PYTHONPATH=<build>/lib/python3/dist-packages:Testing/Python:Data /usr/bin/python3 test_persistence_gudhi.py
+Run: PYTHONPATH=<build>/lib/python3/dist-packages:Testing/Python:Apps/Scripts /usr/bin/python3 test_persistence_gudhi.py
 """
 
 import math

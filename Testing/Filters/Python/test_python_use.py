@@ -5,7 +5,7 @@ docs/data-contract.md and Filters/vtkFlowComplex.h (block names and order, data 
 array names and types, the maximum at infinity, cell kinds per index, input ids
 of the samples, options, vtkTable input, unstable manifolds vs 2->3 arcs).
 
-Run: PYTHONPATH=<build>/lib/python3/dist-packages:Testing/Python:Data /usr/bin/python3 test_python_use.py
+Run: PYTHONPATH=<build>/lib/python3/dist-packages:Testing/Python:Apps/Scripts /usr/bin/python3 test_python_use.py
 """
 
 import sys
