@@ -9,11 +9,13 @@ region. Usage: test_undersampling.py FLOWRECON WORKDIR
 """
 import os
 import re
-import subprocess
 import sys
 
 import generate_clouds as gc
 import numpy as np
+
+from flowrecon_testing import clouds as cl
+from flowrecon_testing import run as fr
 
 FLOWRECON, WORK = sys.argv[1], sys.argv[2]
 
@@ -22,15 +24,14 @@ failures = []
 
 def reconstruct(name, points):
     path = os.path.join(WORK, name + ".xyz")
-    np.savetxt(path, points, fmt="%.17g")
-    p = subprocess.run([FLOWRECON, "reconstruct", path, "-o", os.path.join(WORK, name + ".vtu"),
-                        "--tr", "2", "--tp", "1.1"],
-                       capture_output=True, text=True)
-    if p.returncode != 0:
-        raise SystemExit("flowrecon failed on %s: %s" % (name, p.stderr))
-    betti = tuple(int(x) for x in re.search(r"Betti numbers: (\d+) (\d+) (\d+)", p.stdout).groups())
+    cl.write_xyz(path, points)
+    code, out, err = fr.call(FLOWRECON, "reconstruct", path, "-o", os.path.join(WORK, name + ".vtu"),
+                             "--tr", "2", "--tp", "1.1")
+    if code != 0:
+        raise SystemExit("flowrecon failed on %s: %s" % (name, err))
+    betti = fr.printed_betti(out)
     places = [tuple(float(v) for v in m.group(1).split(","))
-              for m in re.finditer(r"warning: under-sampled near \(([^)]*)\)", p.stderr)]
+              for m in re.finditer(r"warning: under-sampled near \(([^)]*)\)", err)]
     return betti, places
 
 

@@ -26,6 +26,7 @@ from paraview import servermanager, simple
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkCommand
 
+from flowrecon_testing import clouds as cl
 from flowrecon_testing.checks import check, finish
 
 PLUGIN, WORK = sys.argv[1:3]
@@ -96,7 +97,7 @@ def pipeline(reader, defer, cap):
 
 def compare_cloud(name, points, ratio, least):
     xyz = os.path.join(WORK, name + ".xyz")
-    np.savetxt(xyz, points, fmt="%.17g")
+    cl.write_xyz(xyz, points)
     reader = simple.OpenDataFile(xyz)
     eager = pipeline(reader, 0.0, ratio)
     lazy = pipeline(reader, ratio, ratio)

@@ -30,6 +30,7 @@ from paraview import servermanager
 from paraview import simple
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
+from flowrecon_testing import clouds as cl
 from flowrecon_testing import flowcomplex_io as fio
 from flowrecon_testing.checks import Checker
 
@@ -214,7 +215,7 @@ def check_diagram(name, points, pairs, cli_grid, grid, tp):
 
 def check_cloud(name, points, manifolds):
     xyz = os.path.join(WORK, name + ".xyz")
-    np.savetxt(xyz, points, fmt="%.17g")
+    cl.write_xyz(xyz, points)
     pairs, cli_grid = cli_pairs(xyz)
     reader = simple.OpenDataFile(xyz)
     fc = FlowComplex(Input=reader, ComputeStableManifolds=manifolds)  # noqa: F821

@@ -21,6 +21,7 @@ import numpy as np
 from paraview import simple
 from paraview.modules.vtkRemotingViews import vtkSMParaViewPipelineControllerWithRendering
 
+from flowrecon_testing import clouds as cl
 from flowrecon_testing.checks import check, finish
 
 PLUGIN, WORK = sys.argv[1:3]
@@ -75,7 +76,7 @@ def main():
     simple.LoadPlugin(PLUGIN, remote=False, ns=globals())
     rng = np.random.default_rng(11)
     xyz = os.path.join(WORK, "torus.xyz")
-    np.savetxt(xyz, gen.torus(400, rng), fmt="%.17g")
+    cl.write_xyz(xyz, gen.torus(400, rng))
     reader = simple.OpenDataFile(xyz)
     fc = FlowComplex(Input=reader, ComputeStableManifolds=0)  # noqa: F821
     pd = PersistenceDiagram(Input=fc)  # noqa: F821

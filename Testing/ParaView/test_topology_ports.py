@@ -23,6 +23,8 @@ from paraview import servermanager
 from paraview.simple import LoadPlugin, OpenDataFile
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
+from flowrecon_testing import clouds as cl
+
 PLUGIN, FLOWRECON, WORK = sys.argv[1:4]
 
 LoadPlugin(PLUGIN, remote=False, ns=globals())
@@ -104,7 +106,7 @@ rng = np.random.default_rng(3)
 thinned = base[(base[:, 2] <= 0.7) | (rng.uniform(size=len(base)) > 0.6)]
 for name, points in (("clean", base), ("thinned", thinned)):
     path = os.path.join(WORK, name + ".xyz")
-    np.savetxt(path, points, fmt="%.17g")
+    cl.write_xyz(path, points)
     cb, cplaces, crows = cli(path)
     pb, ppts, prows, recon, simplified = paraview(path)
     print("%s: CLI Betti %s, %d warnings, %d profile rows; ParaView Betti %s, %d under-sampled "

@@ -1,6 +1,7 @@
 """Checks that report every failure of a run, not only the first, and end it with
 an exit status: Checker (sections, details) for the Python tests, and check() and
-finish() over one module-wide list for the pvpython scripts."""
+finish() over one module-wide list for the pvpython scripts; fail() for a script
+that stops at its first failure."""
 import sys
 import traceback
 
@@ -63,3 +64,8 @@ def finish():
         print("FAIL: %d checks failed" % len(failures))
         sys.exit(1)
     print("PASS")
+
+
+def fail(message):
+    print("FAIL: " + message, flush=True)
+    sys.exit(1)
