@@ -1,16 +1,16 @@
 # Python scripts that run the command-line tool `flowrecon` and check what it writes
 # against independent oracles (labels cli and python; included from
-# Testing/CLI/CMakeLists.txt; need python3-gudhi). They import flowcomplex_io.py from
-# Testing/Filters/Python.
+# Testing/CLI/CMakeLists.txt; need python3-gudhi), with FLOWRECON_PYTHONPATH as PYTHONPATH.
 
-# flowrecon_add_cli_python_test(NAME SCRIPT WORKDIR): SCRIPT (of this folder) run
-# as SCRIPT FLOWRECON BUILD/WORKDIR, label python, 300 s.
+# flowrecon_add_cli_python_test(NAME SCRIPT WORKDIR [ARGS...]): SCRIPT (of this folder) run
+# as SCRIPT FLOWRECON BUILD/WORKDIR ARGS..., label python, 300 s.
 function (flowrecon_add_cli_python_test name script workdir)
   if (TARGET flowrecon)
     add_test(NAME ${name}
       COMMAND "${FLOWRECON_TEST_PYTHON}" "${CMAKE_CURRENT_SOURCE_DIR}/${script}"
-              "$<TARGET_FILE:flowrecon>" "${CMAKE_CURRENT_BINARY_DIR}/${workdir}")
-    set_tests_properties(${name} PROPERTIES LABELS "python" TIMEOUT 300)
+              "$<TARGET_FILE:flowrecon>" "${CMAKE_CURRENT_BINARY_DIR}/${workdir}" ${ARGN})
+    set_tests_properties(${name} PROPERTIES LABELS "python" TIMEOUT 300
+      ENVIRONMENT "PYTHONPATH=${FLOWRECON_PYTHONPATH}")
   endif ()
 endfunction ()
 
@@ -19,13 +19,7 @@ endfunction ()
 flowrecon_add_cli_python_test(py.diagram_gudhi test_diagram_gudhi.py diagram_gudhi)
 
 # The flow complex is the same on 1, 2 and all threads (the core is parallel).
-if (TARGET flowrecon)
-  add_test(NAME py.threads_determinism
-    COMMAND "${FLOWRECON_TEST_PYTHON}" "${CMAKE_CURRENT_LIST_DIR}/test_threads.py"
-            "$<TARGET_FILE:flowrecon>" "${CMAKE_CURRENT_BINARY_DIR}/threads")
-  set_tests_properties(py.threads_determinism PROPERTIES
-    ENVIRONMENT "PYTHONPATH=${FLOWRECON_PYTHONPATH}" LABELS "python" TIMEOUT 300)
-endif ()
+flowrecon_add_cli_python_test(py.threads_determinism test_threads.py threads)
 
 # The output-sensitive reconstruction equals the eager one below every t_r
 # (docs/design.md, "Cost follows the output").
@@ -43,38 +37,22 @@ flowrecon_add_cli_python_test(py.reconstruction.undersampling test_undersampling
 # The reconstruction does not depend on the order of the input lines (cube,
 # sphere, torus, exact grid, duplicates; t_p 1.1 and 0), and 10^6 lines holding
 # 5 distinct points give a .vtu of a handful of points.
-if (TARGET flowrecon)
-  add_test(NAME py.reconstruction.permutation
-    COMMAND "${FLOWRECON_TEST_PYTHON}" "${CMAKE_CURRENT_SOURCE_DIR}/test_permutation.py"
-            "$<TARGET_FILE:flowrecon>" "${CMAKE_CURRENT_BINARY_DIR}/permutation")
-  add_test(NAME py.reconstruction.million_duplicates
-    COMMAND "${FLOWRECON_TEST_PYTHON}" "${CMAKE_CURRENT_SOURCE_DIR}/test_permutation.py"
-            "$<TARGET_FILE:flowrecon>" "${CMAKE_CURRENT_BINARY_DIR}/million_duplicates" --duplicates)
-  set_tests_properties(py.reconstruction.permutation py.reconstruction.million_duplicates
-    PROPERTIES LABELS "python" TIMEOUT 300)
-endif ()
+flowrecon_add_cli_python_test(py.reconstruction.permutation test_permutation.py permutation)
+flowrecon_add_cli_python_test(py.reconstruction.million_duplicates test_permutation.py
+  million_duplicates --duplicates)
 
 # Without simplification the reconstruction at t_r = inf is contractible (the
 # complement of an open cell): the written cones of index-3 cells must not
 # enclose voids where a cell meets itself.
-if (TARGET flowrecon)
-  add_test(NAME py.reconstruction.contractible
-    COMMAND "${FLOWRECON_TEST_PYTHON}" "${CMAKE_CURRENT_SOURCE_DIR}/test_contractible.py"
-            "$<TARGET_FILE:flowrecon>" "${CMAKE_CURRENT_BINARY_DIR}/contractible")
-  set_tests_properties(py.reconstruction.contractible PROPERTIES LABELS "python" TIMEOUT 300
-    PASS_REGULAR_EXPRESSION "PASS")
+flowrecon_add_cli_python_test(py.reconstruction.contractible test_contractible.py contractible)
+if (TEST py.reconstruction.contractible)
+  set_tests_properties(py.reconstruction.contractible PROPERTIES PASS_REGULAR_EXPRESSION "PASS")
 endif ()
 
 # The largest jumps of the profile (the field data of Flow Reconstruction's
 # profile) equal what `flowrecon reconstruct --jumps` prints for the same cloud
 # through the core, and the largest rises of the profile's Threshold column.
-if (TARGET flowrecon)
-  add_test(NAME py.reconstruction.profile_jumps
-    COMMAND "${FLOWRECON_TEST_PYTHON}" "${CMAKE_CURRENT_LIST_DIR}/test_profile_jumps.py"
-            "$<TARGET_FILE:flowrecon>" "${CMAKE_CURRENT_BINARY_DIR}/profile_jumps")
-  set_tests_properties(py.reconstruction.profile_jumps PROPERTIES
-    ENVIRONMENT "PYTHONPATH=${FLOWRECON_PYTHONPATH}" LABELS "python" TIMEOUT 300)
-endif ()
+flowrecon_add_cli_python_test(py.reconstruction.profile_jumps test_profile_jumps.py profile_jumps)
 
 # The automatic t_r and t_p give the true Betti numbers on the study's
 # generators (surfaces, lattices, a solid, a non-manifold union, a curve).

@@ -1,5 +1,5 @@
 """The automatic t_r and t_p (`flowrecon reconstruct` without --tr/--tp) on the
-study's generators (Data/generate_clouds.py), whose true Betti numbers are
+study's generators (Apps/Scripts/generate_clouds.py), whose true Betti numbers are
 known by construction: quasi-uniform and i.i.d. surfaces, lattices that the
 simplification breaks, a solid, a non-manifold union and a curve. At defaults
 each must print its truth, a line 't_r X (auto), t_p Y (auto): Betti numbers
@@ -18,11 +18,10 @@ import re
 import subprocess
 import sys
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "..", "Data"))
-import generate_clouds as gc  # noqa: E402
-import numpy as np  # noqa: E402
-from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader  # noqa: E402
+import generate_clouds as gc
+import numpy as np
+
+from flowrecon_testing import run as fr
 
 FLOWRECON, WORK = sys.argv[1], sys.argv[2]
 os.makedirs(WORK, exist_ok=True)
@@ -59,14 +58,6 @@ def latlong_poles():
     return 10 * np.r_[x, [[0, 0, 1], [0, 0, -1]]]
 
 
-def field(path, name):
-    reader = vtkXMLUnstructuredGridReader()
-    reader.SetFileName(path)
-    reader.Update()
-    a = reader.GetOutput().GetFieldData().GetArray(name)
-    return None if a is None else [a.GetComponent(i, 0) for i in range(a.GetNumberOfTuples())]
-
-
 failures = []
 for shape, size in CLOUDS:
     base = os.path.join(WORK, "%s_%s" % (shape, size or "default"))
@@ -90,16 +81,16 @@ for shape, size in CLOUDS:
             problems.append("the choice line names other Betti numbers")
         if not lo < tr <= hi:
             problems.append("t_r %g outside its window (%g, %g]" % (tr, lo, hi))
-        if field(base + ".vtu", "ThresholdsChosen") != [1, 1]:
-            problems.append("field data ThresholdsChosen %s" % field(base + ".vtu", "ThresholdsChosen"))
-        used = field(base + ".vtu", "ReconstructionThreshold")
+        if fr.field(base + ".vtu", "ThresholdsChosen") != [1, 1]:
+            problems.append("field data ThresholdsChosen %s" % fr.field(base + ".vtu", "ThresholdsChosen"))
+        used = fr.field(base + ".vtu", "ReconstructionThreshold")
         if not used or abs(used[0] - tr) > 1e-3 * tr:
             problems.append("field data ReconstructionThreshold %s, printed %g" % (used, tr))
-        if field(base + ".vtu", "PersistenceThreshold") != [tp]:
-            problems.append("field data PersistenceThreshold %s" % field(base + ".vtu", "PersistenceThreshold"))
+        if fr.field(base + ".vtu", "PersistenceThreshold") != [tp]:
+            problems.append("field data PersistenceThreshold %s" % fr.field(base + ".vtu", "PersistenceThreshold"))
         if FILLED in p.stderr:
             problems.append("a right answer warned as filled")
-        window = field(base + ".vtu", "StableWindow")
+        window = fr.field(base + ".vtu", "StableWindow")
         if not window or abs(window[0] - lo) > 0.01 or abs(window[1] - hi) > 0.01:
             problems.append("field data StableWindow %s, printed (%g, %g]" % (window, lo, hi))
     print("%s (%s points): %s" % (shape, size or "default",
@@ -129,8 +120,8 @@ with open(base + ".xyz", "w") as f:
     f.write(gc.to_xyz_text(gc.make("sphere_qu", size=2000)))
 p = subprocess.run([FLOWRECON, "reconstruct", base + ".xyz", "-o", base + ".vtu", "--tr", "2",
                     "--tp", "1.1"], capture_output=True, text=True)
-if p.returncode != 0 or "(auto)" in p.stdout or field(base + ".vtu", "ThresholdsChosen") != [0, 0] \
-        or field(base + ".vtu", "ReconstructionThreshold") != [2.0]:
+if p.returncode != 0 or "(auto)" in p.stdout or fr.field(base + ".vtu", "ThresholdsChosen") != [0, 0] \
+        or fr.field(base + ".vtu", "ReconstructionThreshold") != [2.0]:
     failures.append("explicit numbers")
     print("explicit --tr 2 --tp 1.1: WRONG", p.stdout, p.stderr)
 else:

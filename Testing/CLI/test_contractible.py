@@ -12,10 +12,13 @@ Usage: test_contractible.py FLOWRECON WORKDIR
 """
 import os
 import re
-import subprocess
 import sys
 
+import generate_clouds as gc
 import numpy as np
+
+from flowrecon_testing import clouds as cl
+from flowrecon_testing import run as fr
 
 FLOWRECON, WORK = sys.argv[1], sys.argv[2]
 os.makedirs(WORK, exist_ok=True)
@@ -35,13 +38,11 @@ def torus(n, seed):
 
 def clouds():
     rng = np.random.default_rng(5)
-    s = rng.normal(size=(3000, 3))
-    b = rng.normal(size=(4000, 3))
-    b /= np.linalg.norm(b, axis=1)[:, None]
-    b *= rng.uniform(0, 1, (4000, 1)) ** (1 / 3)
-    return {"sphere": s / np.linalg.norm(s, axis=1)[:, None],
+    sphere = cl.sphere(3000, rng)
+    ball = gc.ball(4000, rng)
+    return {"sphere": sphere,
             "cube": rng.uniform(0, 1, (3000, 3)),
-            "ball": b,
+            "ball": ball,
             "torus": torus(6000, 7),
             # Cells here also meet themselves along Gabriel edges (2 voids
             # before the cones were split there by sides).
@@ -49,13 +50,12 @@ def clouds():
 
 
 def betti_of(path):
-    out = subprocess.run([FLOWRECON, "reconstruct", path, "-o", path + ".vtu", "--tp", "0",
-                          "--tr", "inf", "--betti-max-cells", "inf"],
-                         capture_output=True, text=True)
-    if out.returncode != 0:
-        failures.append("%s: exit %d: %s" % (path, out.returncode, out.stderr.strip()))
+    code, out, err = fr.call(FLOWRECON, "reconstruct", path, "-o", path + ".vtu", "--tp", "0",
+                             "--tr", "inf", "--betti-max-cells", "inf")
+    if code != 0:
+        failures.append("%s: exit %d: %s" % (path, code, err.strip()))
         return None
-    m = re.search(r"^Betti numbers: (\d+) (\d+) (\d+)$", out.stdout + out.stderr, re.M)
+    m = re.search(r"^Betti numbers: (\d+) (\d+) (\d+)$", out + err, re.M)
     if not m:
         failures.append("%s: no Betti line" % path)
         return None
@@ -65,11 +65,7 @@ def betti_of(path):
 def gudhi_betti(vtu):
     import gudhi
     from vtkmodules.util.numpy_support import vtk_to_numpy
-    from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
-    r = vtkXMLUnstructuredGridReader()
-    r.SetFileName(vtu)
-    r.Update()
-    g = r.GetOutput()
+    g = fr.read_grid(vtu)
     types = vtk_to_numpy(g.GetCellTypesArray())
     conn = vtk_to_numpy(g.GetCells().GetConnectivityArray())
     off = vtk_to_numpy(g.GetCells().GetOffsetsArray())
@@ -85,7 +81,7 @@ def gudhi_betti(vtu):
 
 for name, pts in clouds().items():
     path = os.path.join(WORK, name + ".xyz")
-    np.savetxt(path, pts, fmt="%.17g")
+    cl.write_xyz(path, pts)
     b = betti_of(path)
     print("%s (%d points): Betti %s" % (name, len(pts), b))
     if b is not None and b != (1, 0, 0):

@@ -14,51 +14,37 @@ Run: /usr/bin/python3 test_diagram_gudhi.py <path to flowrecon> <work dir>
 
 import math
 import os
-import subprocess
 import sys
 
+import generate_clouds as gen
 import numpy as np
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "Filters", "Python"))  # flowcomplex_io
-sys.path.insert(0, os.path.join(HERE, "..", "..", "Data"))
+from flowrecon_testing import clouds as cl
+from flowrecon_testing import flowcomplex_io as fio
+from flowrecon_testing import run as fr
+from flowrecon_testing.checks import Checker
 
-import flowcomplex_io as fio  # noqa: E402
-import generate_clouds as gen  # noqa: E402
-
-CHK = fio.Checker("test_diagram_gudhi")
+CHK = Checker("test_diagram_gudhi")
 DROP = 1e-9
 TOL = 1e-7
-
-
-def run(flowrecon, *args):
-    p = subprocess.run([flowrecon] + list(args), capture_output=True, text=True)
-    return p.returncode, p.stdout, p.stderr
-
-
-def read_csv(path):
-    with open(path) as f:
-        header = f.readline().strip()
-        rows = [line.strip().split(",") for line in f if line.strip()]
-    return header, [(int(d), float(b), math.inf if e == "inf" else float(e)) for d, b, e in rows]
 
 
 def clouds():
     rng = np.random.default_rng(5)
     yield "cube", rng.uniform(0.0, 1.0, (120, 3))
-    yield "shell", gen.sphere(150, rng) * rng.uniform(1.0, 1.05, (150, 1))
+    yield "shell", cl.shell(150, rng)
     yield "torus", gen.torus(200, rng)
 
 
 def check_cloud(flowrecon, work, name, points):
     xyz = os.path.join(work, name + ".xyz")
-    np.savetxt(xyz, points, fmt="%.17g")
+    cl.write_xyz(xyz, points)
     csv = os.path.join(work, name + "_pd.csv")
-    code, out, err = run(flowrecon, "diagram", xyz, "-o", csv, "--quiet")
+    code, out, err = fr.call(flowrecon, "diagram", xyz, "-o", csv, "--quiet")
     CHK.check(code == 0 and err == "", "%s: diagram exits %d" % (name, code), err)
     if code != 0:
         return
-    header, mine = read_csv(csv)
+    header, mine = fr.read_diagram(csv)
     CHK.check(header == "dimension,birth,death", "%s: CSV header is '%s'" % (name, header))
     diam = fio.diameter(points)
     ref = fio.significant(fio.gudhi_alpha_diagram(points), DROP * diam)
@@ -70,23 +56,19 @@ def check_cloud(flowrecon, work, name, points):
 
     # Through a stored flow complex.
     vtm = os.path.join(work, name + ".vtm")
-    code, _, err = run(flowrecon, "complex", xyz, "-o", vtm, "--quiet")
+    code, _, err = fr.call(flowrecon, "complex", xyz, "-o", vtm, "--quiet")
     CHK.check(code == 0, "%s: complex exits %d" % (name, code), err)
     csv2 = os.path.join(work, name + "_pd_stored.csv")
-    code, _, err = run(flowrecon, "diagram", vtm, "-o", csv2, "--quiet")
-    CHK.check(code == 0 and read_csv(csv2)[1] == mine,
+    code, _, err = fr.call(flowrecon, "diagram", vtm, "-o", csv2, "--quiet")
+    CHK.check(code == 0 and fr.read_diagram(csv2)[1] == mine,
               "%s: the diagram of the stored complex differs" % name, err)
 
     # TTK layout.
     vtu = os.path.join(work, name + "_pd.vtu")
-    code, _, err = run(flowrecon, "diagram", xyz, "-o", vtu, "--quiet")
+    code, _, err = fr.call(flowrecon, "diagram", xyz, "-o", vtu, "--quiet")
     CHK.check(code == 0, "%s: diagram .vtu exits %d" % (name, code), err)
-    from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
     from vtkmodules.util.numpy_support import vtk_to_numpy
-    r = vtkXMLUnstructuredGridReader()
-    r.SetFileName(vtu)
-    r.Update()
-    g = r.GetOutput()
+    g = fr.read_grid(vtu)
     cd = g.GetCellData()
     arrays = {n: cd.GetArray(n) for n in ("PairIdentifier", "PairType", "Persistence", "Birth",
                                           "IsFinite")}

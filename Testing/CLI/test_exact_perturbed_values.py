@@ -27,27 +27,26 @@ import itertools
 import math
 import os
 import re
-import subprocess
 import sys
 from fractions import Fraction
 
 import numpy as np
-from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkIOXML import vtkXMLMultiBlockDataReader, vtkXMLUnstructuredGridReader
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "Filters", "Python"))  # flowcomplex_io
-import flowcomplex_io as fio  # noqa: E402
+from flowrecon_testing import clouds as cl
+from flowrecon_testing import flowcomplex_io as fio
+from flowrecon_testing import run as fr
+from flowrecon_testing.checks import Checker
 
 FLOWRECON, WORK = sys.argv[1], sys.argv[2]
 LARGE = int(sys.argv[sys.argv.index("--large") + 1]) if "--large" in sys.argv else None
 REL = 1e-12
-CHK = fio.Checker("test_exact_perturbed_values")
+CELL_ARRAYS = ("NodeId", "Threshold", "Priority", "CriticalValue")
+CHK = Checker("test_exact_perturbed_values")
 
 
 def grid(n, spacing=1.0, origin=(0.0, 0.0, 0.0)):
     g = np.arange(n, dtype=float) * spacing
-    return np.array(list(itertools.product(g, g, g))) + np.asarray(origin)
+    return cl.grid(g, g, g, indexing="ij") + np.asarray(origin)
 
 
 def lattice_sphere(r2):
@@ -63,7 +62,7 @@ def clouds():
         yield "grid %d^3" % n, grid(n), True
     # Binary spacing and offset: still exact, at another scale (ScaleExponent).
     yield "grid 6^3 spacing 1/4 at 1000", grid(6, 0.25, (1000.0, -1000.0, 500.0)), True
-    yield "grid 4x5x6", np.array(list(itertools.product(range(4), range(5), range(6))), float), True
+    yield "grid 4x5x6", cl.grid(np.arange(4.0), np.arange(5.0), np.arange(6.0), indexing="ij"), True
     yield "cube corners", np.array(list(itertools.product((-1.0, 1.0), repeat=3))), True
     yield "octahedron", np.array([[s * (i == k) for k in range(3)] for i in range(3)
                                   for s in (-1.0, 1.0)]), True
@@ -79,10 +78,7 @@ def clouds():
 
 
 def run(*args):
-    p = subprocess.run([FLOWRECON, *args], capture_output=True, text=True)
-    if p.returncode != 0:
-        raise SystemExit("flowrecon %s failed (%d): %s" % (" ".join(args), p.returncode, p.stderr))
-    return p.stdout
+    return fr.run(FLOWRECON, *args)
 
 
 # ----------------------------------------------------------------- exact values
@@ -133,11 +129,7 @@ def exact_r2(pts):
 
 
 def read_nodes(vtm):
-    r = vtkXMLMultiBlockDataReader()
-    r.SetFileName(vtm)
-    r.Update()
-    res = fio.FlowComplexResult(r.GetOutput())
-    return res
+    return fio.FlowComplexResult(fr.read_multiblock(vtm))
 
 
 def rel(a, b):
@@ -150,31 +142,11 @@ def contains(values, x):
     return any(0 <= j < len(values) and rel(values[j], x) <= REL for j in (i - 1, i))
 
 
-def read_csv(path):
-    with open(path) as f:
-        f.readline()
-        rows = [line.strip().split(",") for line in f if line.strip()]
-    return [(int(d), float(b), math.inf if e == "inf" else float(e)) for d, b, e in rows]
-
-
-def cells(path):
-    r = vtkXMLUnstructuredGridReader()
-    r.SetFileName(path)
-    r.Update()
-    g = r.GetOutput()
-    pts = vtk_to_numpy(g.GetPoints().GetData())
-    off = vtk_to_numpy(g.GetCells().GetOffsetsArray())
-    conn = vtk_to_numpy(g.GetCells().GetConnectivityArray())
-    arrays = {a: vtk_to_numpy(g.GetCellData().GetArray(a)) for a in
-              ("NodeId", "Threshold", "Priority", "CriticalValue")}
-    return [pts[conn[off[c]:off[c + 1]]].tolist() for c in range(g.GetNumberOfCells())], arrays
-
-
 def check(name, points, degenerate):
     CHK.section(name)
     base = os.path.join(WORK, re.sub(r"[^A-Za-z0-9]+", "_", name))
     xyz = base + ".xyz"
-    np.savetxt(xyz, points, fmt="%.17g")
+    cl.write_xyz(xyz, points)
     pts = np.loadtxt(xyz)
     exact = [[Fraction(float(x)) for x in p] for p in pts]
 
@@ -227,7 +199,7 @@ def check(name, points, degenerate):
 
     # The flow complex's own diagram.
     run("diagram", xyz, "-o", base + "_pd.csv", "--quiet")
-    mine = read_csv(base + "_pd.csv")
+    mine = fr.read_diagram(base + "_pd.csv")[1]
     zero = [p for p in mine if not p[2] > p[1]]
     CHK.check(all(p[2] == p[1] for p in zero), "%s: a pair of negative persistence" % name)
     mine = [p for p in mine if p[2] > p[1]]
@@ -253,8 +225,8 @@ def check(name, points, degenerate):
                 run("reconstruct", xyz, "-o", base + "_lazy.vtu", "--tr", tr, "--tp", tp, "--quiet")
                 run("reconstruct", base + "_eager.vtm", "-o", base + "_eager.vtu", "--tr", tr, "--tp",
                     tp, "--quiet")
-                lc, la = cells(base + "_lazy.vtu")
-                ec, ea = cells(base + "_eager.vtu")
+                lc, la = fr.cells(base + "_lazy.vtu", CELL_ARRAYS)
+                ec, ea = fr.cells(base + "_eager.vtu", CELL_ARRAYS)
                 differ = [a for a in la if not np.array_equal(la[a], ea[a])]
                 if lc != ec:
                     differ.append("cell vertices")

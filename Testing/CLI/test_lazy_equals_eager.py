@@ -22,15 +22,14 @@ Usage: test_lazy_equals_eager.py FLOWRECON WORKDIR
 """
 import os
 import re
-import subprocess
 import sys
 
 import numpy as np
-from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
+
+from flowrecon_testing import clouds as cl
+from flowrecon_testing.run import cells, run as run_flowrecon
 
 FLOWRECON, WORK = sys.argv[1], sys.argv[2]
-DATA = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Data")
 ARRAYS = ("NodeId", "Index", "Step", "Priority", "Threshold", "Extension", "Sponsor",
           "CriticalValue", "Multiplicity")
 failures = []
@@ -38,22 +37,12 @@ failures = []
 
 def clouds():
     rng = np.random.default_rng(11)
-    out = {"cube": rng.uniform(0, 1, (500, 3))}
-    s = rng.normal(size=(700, 3))
-    out["sphere"] = s / np.linalg.norm(s, axis=1)[:, None]
-    u, v = rng.uniform(0, 2 * np.pi, (2, 900))
-    out["torus"] = np.c_[(1 + .35 * np.cos(v)) * np.cos(u), (1 + .35 * np.cos(v)) * np.sin(u),
-                         .35 * np.sin(v)]
-    g = np.arange(6.0)
-    out["grid"] = np.array(np.meshgrid(g, g, g[:5])).reshape(3, -1).T
-    out["noisy sphere"] = out["sphere"] * (1 + 0.03 * rng.normal(size=(700, 1)))
-    t = np.linspace(-1.6, 1.6, 50)
-    mix = np.r_[out["sphere"][:400], np.c_[0.01 * t, t, 0.02 * t]]
+    out = cl.basic_clouds(rng, 500, 700, 900)
+    out["noisy sphere"] = cl.noisy(out["sphere"], rng, 0.03)
+    mix = cl.with_segment(out["sphere"][:400], np.linspace(-1.6, 1.6, 50))
     out["sphere and segment, duplicates"] = np.r_[mix, mix[:7]]
-    out["two hemispheres"] = np.loadtxt(os.path.join(DATA, "two_hemispheres.xyz"))[:, :3]
-    u, v = rng.uniform(0, 2 * np.pi, (2, 4000))
-    out["denser torus"] = np.c_[(1 + .35 * np.cos(v)) * np.cos(u),
-                                (1 + .35 * np.cos(v)) * np.sin(u), .35 * np.sin(v)]
+    out["two hemispheres"] = cl.two_hemispheres()
+    out["denser torus"] = cl.chart_torus(4000, rng)
     return out
 
 
@@ -61,43 +50,27 @@ work = {"deferred": 0, "late": 0, "lines": 0, "followed": 0, "eager": 0}
 
 
 def run(*args):
-    p = subprocess.run([FLOWRECON, *args, "--quiet"], capture_output=True, text=True)
-    if p.returncode != 0:
-        raise SystemExit("flowrecon %s failed: %s" % (" ".join(args), p.stderr))
-    m = re.search(r"patches deferred: (\d+) of \d+, walked late: (\d+)", p.stdout)
+    out = run_flowrecon(FLOWRECON, *args, "--quiet")
+    m = re.search(r"patches deferred: (\d+) of \d+, walked late: (\d+)", out)
     if m:
         work["deferred"] += int(m.group(1))
         work["late"] += int(m.group(2))
-        lines = re.search(r"flow lines deferred: (\d+) of \d+, followed late: (\d+)", p.stdout)
+        lines = re.search(r"flow lines deferred: (\d+) of \d+, followed late: (\d+)", out)
         if not lines:
             raise SystemExit("reconstruct --timings: no line on deferred flow lines")
         work["lines"] += int(lines.group(1))
         work["followed"] += int(lines.group(2))
-        if "built again without deferral" in p.stdout:
+        if "built again without deferral" in out:
             work["eager"] += 1
             print("  " + " ".join(args) + ": built again without deferral")
     return m
-
-
-def cells(path, below=np.inf):
-    r = vtkXMLUnstructuredGridReader()
-    r.SetFileName(path)
-    r.Update()
-    g = r.GetOutput()
-    pts = vtk_to_numpy(g.GetPoints().GetData())
-    off = vtk_to_numpy(g.GetCells().GetOffsetsArray())
-    conn = vtk_to_numpy(g.GetCells().GetConnectivityArray())
-    data = {a: vtk_to_numpy(g.GetCellData().GetArray(a)) for a in ARRAYS}
-    keep = np.nonzero(data["Threshold"] < below)[0]
-    verts = [pts[conn[off[c]:off[c + 1]]].tolist() for c in keep]
-    return verts, {a: data[a][keep] for a in ARRAYS}
 
 
 RUNS = ((1.5, None), (1.5, 1.5), (2.0, None), (3.0, None), (3.0, 3.0))
 os.makedirs(WORK, exist_ok=True)
 for name, xyz in clouds().items():
     base = os.path.join(WORK, name.replace(" ", "_").replace(",", ""))
-    np.savetxt(base + ".xyz", xyz, fmt="%.17g")
+    cl.write_xyz(base + ".xyz", xyz)
     # t_p 1.5 makes many more 2-3 cancellations for the deferred flow lines to
     # replay through (one run each).
     for tp in ("0", "1.1", "1.5"):
@@ -113,11 +86,11 @@ for name, xyz in clouds().items():
                 raise SystemExit("reconstruct --timings: no line on deferred patches")
             run("reconstruct", base + "_eager.vtm", "-o", base + "_eager_t.vtu", "--tr", str(t),
                 "--tp", tp)
-            lv, la = cells(base + "_lazy.vtu")
+            lv, la = cells(base + "_lazy.vtu", ARRAYS, np.inf)
             problems = []
             for eager, below, arrays in ((base + "_eager_t.vtu", np.inf, ARRAYS),
                                          (base + "_eager.vtu", t, ARRAYS[:-1])):
-                ev, ea = cells(eager, below)
+                ev, ea = cells(eager, ARRAYS, below)
                 problems += [a for a in arrays if not np.array_equal(ea[a], la[a])]
                 if ev != lv:
                     problems.append("cell vertices")

@@ -21,12 +21,13 @@ distinct points reconstruct to a .vtu of a handful of points (not 10^6).
 Usage: test_permutation.py FLOWRECON WORKDIR [--duplicates]
 """
 import os
-import subprocess
 import sys
 
 import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkIOXML import vtkXMLMultiBlockDataReader, vtkXMLUnstructuredGridReader
+
+from flowrecon_testing import clouds as cl
+from flowrecon_testing import run as fr
 
 FLOWRECON, WORK = sys.argv[1], sys.argv[2]
 os.makedirs(WORK, exist_ok=True)
@@ -36,14 +37,7 @@ failures = []
 
 def clouds():
     rng = np.random.default_rng(2026)
-    out = {"cube": rng.uniform(0, 1, (400, 3))}
-    s = rng.normal(size=(500, 3))
-    out["sphere"] = s / np.linalg.norm(s, axis=1)[:, None]
-    u, v = rng.uniform(0, 2 * np.pi, (2, 600))
-    out["torus"] = np.c_[(1 + .35 * np.cos(v)) * np.cos(u), (1 + .35 * np.cos(v)) * np.sin(u),
-                         .35 * np.sin(v)]
-    g = np.arange(6.0)
-    out["grid 6x6x5"] = np.array(np.meshgrid(g, g, g[:5], indexing="ij")).reshape(3, -1).T
+    out = cl.basic_clouds(rng, 400, 500, 600, indexing="ij")
     base = out["sphere"][:300]
     out["duplicates"] = np.r_[base, base[rng.integers(0, 300, 100)]]
     return out
@@ -55,9 +49,7 @@ def write(path, points):
 
 
 def run(*args):
-    p = subprocess.run([FLOWRECON, *args, "--quiet"], capture_output=True, text=True)
-    if p.returncode != 0 or p.stderr:
-        raise SystemExit("flowrecon %s failed (%d): %s" % (" ".join(args), p.returncode, p.stderr))
+    fr.run(FLOWRECON, *args, "--quiet", quiet=True)
 
 
 def canonical_ids(points):
@@ -71,10 +63,7 @@ def canonical_ids(points):
 
 def nodes(vtm, to_original, canon):
     """NodeId -> (sorted canonical original ids of its Simplex, Index, CriticalValue)."""
-    r = vtkXMLMultiBlockDataReader()
-    r.SetFileName(vtm)
-    r.Update()
-    mb = r.GetOutput()
+    mb = fr.read_multiblock(vtm)
     cp = next(mb.GetBlock(i) for i in range(mb.GetNumberOfBlocks())
               if mb.GetMetaData(i).Get(mb.NAME()) == "CriticalPoints")
     pd = cp.GetPointData()
@@ -91,10 +80,7 @@ def nodes(vtm, to_original, canon):
 
 def cells(vtu, node_of, to_original, canon, unit):
     """Sorted cells: (type, vertex keys, node key, arrays..., sponsor key, multiplicity)."""
-    r = vtkXMLUnstructuredGridReader()
-    r.SetFileName(vtu)
-    r.Update()
-    g = r.GetOutput()
+    g = fr.read_grid(vtu)
     n = g.GetNumberOfCells()
     if n == 0:
         return []
@@ -187,10 +173,7 @@ def check_duplicates():
         f.write("".join(lines[i] for i in pick.tolist()))
     out = os.path.join(WORK, "million_duplicates.vtu")
     run("reconstruct", path, "-o", out, "--tr", "inf", "--tp", "0")
-    r = vtkXMLUnstructuredGridReader()
-    r.SetFileName(out)
-    r.Update()
-    g = r.GetOutput()
+    g = fr.read_grid(out)
     points, ncells = g.GetNumberOfPoints(), g.GetNumberOfCells()
     original = vtk_to_numpy(g.GetPointData().GetArray("vtkOriginalPointIds"))
     samples = sorted(set(int(o) for o in original if o >= 0))

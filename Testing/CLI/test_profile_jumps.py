@@ -15,20 +15,17 @@ Usage: test_profile_jumps.py FLOWRECON WORKDIR
 """
 import os
 import re
-import subprocess
 import sys
 
 import numpy as np
+from flowrecon import vtkFlowComplex, vtkFlowComplexSimplification, vtkFlowReconstruction
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Filters",
-                                "Python"))
-from flowcomplex_io import array, get_block, make_polydata  # noqa: E402
-from flowrecon import (vtkFlowComplex, vtkFlowComplexSimplification,  # noqa: E402
-                       vtkFlowReconstruction)
+from flowrecon_testing import clouds as cl
+from flowrecon_testing import run as fr
+from flowrecon_testing.flowcomplex_io import array, get_block, make_polydata
 
 FLOWRECON, WORK = sys.argv[1], sys.argv[2]
-DATA = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Data")
 TP, TR, K = 1.1, 2.0, 7
 JUMP = re.compile(r"^  step (\d+): (\S+) -> (\S+), node (\d+), index (\d), value (\S+), "
                   r"at \((\S+), (\S+), (\S+)\)$")
@@ -37,27 +34,21 @@ failures = []
 
 def clouds():
     rng = np.random.default_rng(11)
-    u, v = rng.uniform(0, 2 * np.pi, (2, 900))
-    torus = np.c_[(1 + .4 * np.cos(v)) * np.cos(u), (1 + .4 * np.cos(v)) * np.sin(u),
-                  .4 * np.sin(v)]
-    s = rng.normal(size=(700, 3))
-    sphere = s / np.linalg.norm(s, axis=1)[:, None]
+    torus = cl.chart_torus(900, rng, 0.4)
+    sphere = cl.sphere(700, rng)
     return {
         "thinned torus": torus[(torus[:, 0] < 0.6) | (rng.uniform(size=len(torus)) < 0.25)],
-        "noisy sphere": sphere * (1 + 0.03 * rng.normal(size=(len(sphere), 1))),
-        "two hemispheres": np.loadtxt(os.path.join(DATA, "two_hemispheres.xyz"))[:, :3],
+        "noisy sphere": cl.noisy(sphere, rng, 0.03),
+        "two hemispheres": cl.two_hemispheres(),
     }
 
 
 def cli_jumps(path):
-    p = subprocess.run([FLOWRECON, "reconstruct", path, "-o", path + ".vtu", "--tp", str(TP),
-                        "--tr", str(TR), "--tr-max", "inf", "--jumps", str(K), "--quiet"],
-                       capture_output=True, text=True)
-    if p.returncode != 0:
-        raise SystemExit("flowrecon reconstruct failed: " + p.stderr)
-    lines = [l for l in p.stdout.splitlines() if l.startswith("  step ")]
+    out = fr.run(FLOWRECON, "reconstruct", path, "-o", path + ".vtu", "--tp", str(TP),
+                 "--tr", str(TR), "--tr-max", "inf", "--jumps", str(K), "--quiet")
+    lines = [l for l in out.splitlines() if l.startswith("  step ")]
     if not all(JUMP.match(l) for l in lines):
-        raise SystemExit("unexpected jump lines:\n" + p.stdout)
+        raise SystemExit("unexpected jump lines:\n" + out)
     return lines
 
 
@@ -117,7 +108,7 @@ def numpy_jumps(profile, critical_points, k):
 os.makedirs(WORK, exist_ok=True)
 for name, xyz in clouds().items():
     path = os.path.join(WORK, name.replace(" ", "_") + ".xyz")
-    np.savetxt(path, xyz, fmt="%.17g")
+    cl.write_xyz(path, xyz)
     problems = []
     fc, reconstruction = filters(xyz)
     reconstruction.SetNumberOfJumps(K)

@@ -12,14 +12,13 @@ usage: test_threads.py FLOWRECON WORKDIR
 """
 
 import os
-import subprocess
 import sys
 
 import numpy as np
-from vtkmodules.vtkIOXML import vtkXMLMultiBlockDataReader
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Filters", "Python"))
-import flowcomplex_io as fio  # noqa: E402
+from flowrecon_testing import clouds as cl
+from flowrecon_testing import flowcomplex_io as fio
+from flowrecon_testing import run as fr
 
 FLOWRECON, WORK = sys.argv[1], sys.argv[2]
 os.makedirs(WORK, exist_ok=True)
@@ -28,25 +27,20 @@ os.makedirs(WORK, exist_ok=True)
 def clouds():
     rng = np.random.default_rng(20261122)
     yield "cube", rng.random((12000, 3))
-    u, v = rng.random((2, 5000)) * 2 * np.pi
-    yield "torus", np.c_[(1 + 0.35 * np.cos(v)) * np.cos(u), (1 + 0.35 * np.cos(v)) * np.sin(u),
-                         0.35 * np.sin(v)]
+    yield "torus", cl.chart_torus(5000, rng)
     g = np.arange(12, dtype=float)
-    yield "grid", np.array(np.meshgrid(g, g, g, indexing="ij")).reshape(3, -1).T
+    yield "grid", cl.grid(g, g, g, indexing="ij")
 
 
 def complex_of(name, points, threads):
     xyz = os.path.join(WORK, name + ".xyz")
-    np.savetxt(xyz, points, fmt="%.17g")
+    cl.write_xyz(xyz, points)
     out = os.path.join(WORK, "%s_%s.vtm" % (name, threads))
-    args = [FLOWRECON, "complex", xyz, "-o", out, "--quiet"]
+    args = ["complex", xyz, "-o", out, "--quiet"]
     if threads != "default":
         args += ["--threads", threads]
-    subprocess.run(args, check=True)
-    reader = vtkXMLMultiBlockDataReader()
-    reader.SetFileName(out)
-    reader.Update()
-    return reader.GetOutput()
+    fr.run(FLOWRECON, *args)
+    return fr.read_multiblock(out)
 
 
 failures = []

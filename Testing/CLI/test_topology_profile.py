@@ -14,62 +14,46 @@ a solid, a curve, the paper's non-manifold two hemispheres, a sphere with a
 segment, an exact grid (degenerate), a noisy sphere.
 Usage: test_topology_profile.py FLOWRECON WORKDIR
 """
-import csv
 import os
-import subprocess
 import sys
 
 import gudhi
 import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
+
+from flowrecon_testing import clouds as cl
+from flowrecon_testing import run as fr
+from flowrecon_testing.run import printed_betti, read_topology_profile
 
 FLOWRECON, WORK = sys.argv[1], sys.argv[2]
-DATA = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Data")
 failures = []
 
 
 def clouds():
     rng = np.random.default_rng(5)
-    s = rng.normal(size=(600, 3))
-    sphere = s / np.linalg.norm(s, axis=1)[:, None]
-    u, v = rng.uniform(0, 2 * np.pi, (2, 900))
+    sphere = cl.sphere(600, rng)
+    torus = cl.chart_torus(900, rng, 0.4)
     t = np.linspace(0, 2 * np.pi, 160, endpoint=False)
-    segment = np.linspace(-1.7, 1.7, 40)
     g = np.arange(5.0)
     return {
         "sphere": sphere,
-        "torus": np.c_[(1 + .4 * np.cos(v)) * np.cos(u), (1 + .4 * np.cos(v)) * np.sin(u),
-                       .4 * np.sin(v)],
+        "torus": torus,
         "ball": rng.uniform(-1, 1, (700, 3)),
         "trefoil": np.c_[np.sin(t) + 2 * np.sin(2 * t), np.cos(t) - 2 * np.cos(2 * t),
                          -np.sin(3 * t)],
-        "two hemispheres": np.loadtxt(os.path.join(DATA, "two_hemispheres.xyz"))[:, :3],
-        "sphere and segment": np.r_[sphere[:400], np.c_[0.01 * segment, segment, 0.02 * segment]],
-        "grid": np.array(np.meshgrid(g, g, g)).reshape(3, -1).T,
-        "noisy sphere": sphere * (1 + 0.04 * rng.normal(size=(600, 1))),
+        "two hemispheres": cl.two_hemispheres(),
+        "sphere and segment": cl.with_segment(sphere[:400], np.linspace(-1.7, 1.7, 40)),
+        "grid": cl.grid(g, g, g),
+        "noisy sphere": cl.noisy(sphere, rng, 0.04),
     }
 
 
 def run(*args):
-    p = subprocess.run([FLOWRECON, *args], capture_output=True, text=True)
-    if p.returncode != 0:
-        raise SystemExit("flowrecon %s failed: %s" % (" ".join(args), p.stderr))
-    return p.stdout
-
-
-def printed_betti(stdout):
-    lines = [l for l in stdout.splitlines() if l.startswith("Betti numbers: ")]
-    if len(lines) != 1:
-        raise SystemExit("expected one 'Betti numbers:' line in:\n" + stdout)
-    return tuple(int(x) for x in lines[0].split()[2:])
+    return fr.run(FLOWRECON, *args)
 
 
 def gudhi_intervals(path):
-    r = vtkXMLUnstructuredGridReader()
-    r.SetFileName(path)
-    r.Update()
-    grid = r.GetOutput()
+    grid = fr.read_grid(path)
     off = vtk_to_numpy(grid.GetCells().GetOffsetsArray())
     conn = vtk_to_numpy(grid.GetCells().GetConnectivityArray())
     thr = vtk_to_numpy(grid.GetCellData().GetArray("Threshold"))
@@ -86,17 +70,11 @@ def betti_at(intervals, t):
     return tuple(int(sum(1 for b, d in intervals[k] if b < t <= d)) for k in range(3))
 
 
-def read_profile(path):
-    with open(path) as f:
-        rows = list(csv.DictReader(f))
-    return [(float(r["threshold"]), (int(r["b0"]), int(r["b1"]), int(r["b2"]))) for r in rows]
-
-
 os.makedirs(WORK, exist_ok=True)
 checked = 0
 for name, xyz in clouds().items():
     base = os.path.join(WORK, name.replace(" ", "_"))
-    np.savetxt(base + ".xyz", xyz, fmt="%.17g")
+    cl.write_xyz(base + ".xyz", xyz)
     out = run("reconstruct", base + ".xyz", "-o", base + ".vtu", "--tr", "2", "--tp", "1.1", "--tr-max", "4",
               "--topology-profile", base + ".csv")
     intervals, stored = gudhi_intervals(base + ".vtu")
@@ -105,7 +83,7 @@ for name, xyz in clouds().items():
         problems.append("printed %s, GUDHI %s at 2" % (printed_betti(out), betti_at(intervals, 2)))
     if stored != betti_at(intervals, 4):
         problems.append("field data %s, GUDHI %s at 4" % (stored, betti_at(intervals, 4)))
-    profile = read_profile(base + ".csv")
+    profile = read_topology_profile(base + ".csv")
     ends = [t for t, _ in profile[1:]] + [4.0]
     for (start, betti), end in zip(profile, ends):
         # (the middle of two adjacent doubles may round onto the start: skip it)
@@ -120,7 +98,7 @@ for name, xyz in clouds().items():
     run("complex", base + ".xyz", "-o", base + ".vtm", "--quiet")
     out2 = run("reconstruct", base + ".vtm", "-o", base + "_filters.vtu", "--tr", "2", "--tp", "1.1",
                "--tr-max", "4", "--topology-profile", base + "_filters.csv")
-    if read_profile(base + "_filters.csv") != profile or printed_betti(out2) != printed_betti(out):
+    if read_topology_profile(base + "_filters.csv") != profile or printed_betti(out2) != printed_betti(out):
         problems.append("the VTK filters give another profile")
     label = "%s: %d profile rows, Betti numbers at t_r 2 %s" % (name, len(profile),
                                                                 printed_betti(out))

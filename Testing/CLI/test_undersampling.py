@@ -1,7 +1,7 @@
 """Under-sampling warnings: `flowrecon reconstruct` at the paper's t_r 2, t_p 1.1
 prints 'warning: under-sampled near (x, y, z): ...' where the Betti numbers
 change for a t_r just above the chosen one. Clean quasi-uniform samples of a
-sphere, a torus and a genus-2 surface (Data/generate_clouds.py): the right
+sphere, a torus and a genus-2 surface (Apps/Scripts/generate_clouds.py): the right
 Betti numbers and no warning. The same sphere and torus with a known region
 thinned (a polar cap, the top of the tube: half or more of its points removed):
 a wrong answer, at least one warning, and every warning inside the thinned
@@ -9,29 +9,29 @@ region. Usage: test_undersampling.py FLOWRECON WORKDIR
 """
 import os
 import re
-import subprocess
 import sys
 
+import generate_clouds as gc
 import numpy as np
 
+from flowrecon_testing import clouds as cl
+from flowrecon_testing import run as fr
+
 FLOWRECON, WORK = sys.argv[1], sys.argv[2]
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Data"))
-import generate_clouds as gc  # noqa: E402
 
 failures = []
 
 
 def reconstruct(name, points):
     path = os.path.join(WORK, name + ".xyz")
-    np.savetxt(path, points, fmt="%.17g")
-    p = subprocess.run([FLOWRECON, "reconstruct", path, "-o", os.path.join(WORK, name + ".vtu"),
-                        "--tr", "2", "--tp", "1.1"],
-                       capture_output=True, text=True)
-    if p.returncode != 0:
-        raise SystemExit("flowrecon failed on %s: %s" % (name, p.stderr))
-    betti = tuple(int(x) for x in re.search(r"Betti numbers: (\d+) (\d+) (\d+)", p.stdout).groups())
+    cl.write_xyz(path, points)
+    code, out, err = fr.call(FLOWRECON, "reconstruct", path, "-o", os.path.join(WORK, name + ".vtu"),
+                             "--tr", "2", "--tp", "1.1")
+    if code != 0:
+        raise SystemExit("flowrecon failed on %s: %s" % (name, err))
+    betti = fr.printed_betti(out)
     places = [tuple(float(v) for v in m.group(1).split(","))
-              for m in re.finditer(r"warning: under-sampled near \(([^)]*)\)", p.stderr)]
+              for m in re.finditer(r"warning: under-sampled near \(([^)]*)\)", err)]
     return betti, places
 
 

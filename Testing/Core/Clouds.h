@@ -1,5 +1,6 @@
-// Random clouds shared by the C++ tests: uniform in the unit cube, on the unit
-// sphere and on a torus (R = 1, r = 0.35), from a seed.
+// Clouds shared by the C++ tests and the fuzzers: uniform in the unit cube, on the
+// unit sphere, on a torus (R = 1, r = 0.35) and on an icosahedron's faces, from a
+// seed; integer grids (jittered or exact), cospherical integer points, duplicates.
 #ifndef flowrecon_Clouds_h
 #define flowrecon_Clouds_h
 
@@ -96,6 +97,40 @@ inline std::vector<Point3> Icosahedron(int n, std::uint64_t seed)
       p[k] = v[face[0]][k] + a * (v[face[1]][k] - v[face[0]][k]) + b * (v[face[2]][k] - v[face[0]][k]);
     }
   }
+  return c;
+}
+
+/// The k x k x k integer grid, each coordinate moved by up to jitter / 2.
+inline std::vector<Point3> Grid(int k, double jitter, std::uint64_t seed)
+{
+  Rng r(seed);
+  std::vector<Point3> c;
+  for (int i = 0; i < k; ++i)
+    for (int j = 0; j < k; ++j)
+      for (int l = 0; l < k; ++l)
+        c.push_back({ { i + jitter * (r.U() - 0.5), j + jitter * (r.U() - 0.5),
+          l + jitter * (r.U() - 0.5) } });
+  return c;
+}
+
+/// Exactly cospherical points with integer coordinates on the sphere of radius 5.
+inline std::vector<Point3> Cospherical()
+{
+  std::vector<Point3> c;
+  for (int x = -5; x <= 5; ++x)
+    for (int y = -5; y <= 5; ++y)
+      for (int z = -5; z <= 5; ++z)
+        if (x * x + y * y + z * z == 25)
+          c.push_back({ { double(x), double(y), double(z) } });
+  return c;
+}
+
+/// c with every third point given again at the end.
+inline std::vector<Point3> WithDuplicates(std::vector<Point3> c)
+{
+  const std::size_t n = c.size();
+  for (std::size_t i = 0; i < n; i += 3)
+    c.push_back(c[i]);
   return c;
 }
 

@@ -29,7 +29,10 @@ namespace
 {
 
 using Cloud = std::vector<Point3>;
+using clouds::Cospherical;
+using clouds::Grid;
 using clouds::Rng;
+using clouds::WithDuplicates;
 
 int Compared = 0;
 int Grouped = 0; // comparisons where the arcs into each index-2 node were consecutive
@@ -266,38 +269,6 @@ void CheckFallbacks(const FlowComplex& fc)
         std::to_string(lower + 1) + " arc left out)",
       fc.Nodes, arcs, false);
   }
-}
-
-Cloud Grid(int k, double jitter, std::uint64_t seed)
-{
-  Rng r(seed);
-  Cloud c;
-  for (int i = 0; i < k; ++i)
-    for (int j = 0; j < k; ++j)
-      for (int l = 0; l < k; ++l)
-        c.push_back({ { i + jitter * (r.U() - 0.5), j + jitter * (r.U() - 0.5),
-          l + jitter * (r.U() - 0.5) } });
-  return c;
-}
-
-Cloud WithDuplicates(Cloud c)
-{
-  const std::size_t n = c.size();
-  for (std::size_t i = 0; i < n; i += 3)
-    c.push_back(c[i]);
-  return c;
-}
-
-/// Exactly cospherical points with integer coordinates on the sphere of radius 5.
-Cloud Cospherical()
-{
-  Cloud c;
-  for (int x = -5; x <= 5; ++x)
-    for (int y = -5; y <= 5; ++y)
-      for (int z = -5; z <= 5; ++z)
-        if (x * x + y * y + z * z == 25)
-          c.push_back({ { double(x), double(y), double(z) } });
-  return c;
 }
 
 /// A sphere, a segment through it and beyond, and a square sheet touching it: a

@@ -5,6 +5,7 @@
 // characteristic), the result matches a plain re-implementation of the rule,
 // ownership is transitive and ends on survivors.
 #include "Check.h"
+#include "Invariants.h"
 #include "ReconFixtures.h"
 
 #include "FlowComplexBuilder.h"
@@ -410,43 +411,6 @@ PairSet PersistenceOf(const std::vector<Node>& nodes, const std::vector<Arc>& ar
   return s;
 }
 
-/// dd = 0 mod 2 over the odd arcs, with or without the maximum at infinity.
-bool BoundaryOfBoundaryIsZero(
-  const std::vector<Node>& nodes, const std::vector<Arc>& arcs, bool withInfinity)
-{
-  std::map<Id, std::vector<Id>> below;
-  for (const Arc& a : arcs)
-  {
-    if (a.Multiplicity % 2 == 1 && (withInfinity || !nodes[a.Upper].IsInfinity()))
-    {
-      below[a.Upper].push_back(a.Lower);
-    }
-  }
-  for (const auto& entry : below)
-  {
-    std::map<Id, int> parity;
-    for (const Id b : entry.second)
-    {
-      const auto it = below.find(b);
-      if (it != below.end())
-      {
-        for (const Id bb : it->second)
-        {
-          parity[bb] ^= 1;
-        }
-      }
-    }
-    for (const auto& p : parity)
-    {
-      if (p.second != 0)
-      {
-        return false;
-      }
-    }
-  }
-  return true;
-}
-
 void CheckProperties(const std::string& name, const std::vector<Point3>& cloud)
 {
   BuildOptions options;
@@ -455,7 +419,7 @@ void CheckProperties(const std::string& name, const std::vector<Point3>& cloud)
   const FlowComplex fc = BuildFlowComplex(cloud, options, Progress());
   const std::vector<Node>& nodes = fc.Nodes;
   const PairSet original = PersistenceOf(nodes, fc.Arcs, std::vector<bool>(nodes.size(), true));
-  const bool ddInfinity = BoundaryOfBoundaryIsZero(nodes, fc.Arcs, true);
+  const bool ddInfinity = invariants::BoundaryOfBoundaryIsZero(nodes, fc.Arcs, true);
   std::cout << "-- " << name << ": " << nodes.size() << " nodes, " << fc.Arcs.size()
             << " arcs, dd = 0 with infinity: " << ddInfinity << "\n";
   std::size_t previous = 0;
@@ -518,8 +482,8 @@ void CheckProperties(const std::string& name, const std::vector<Point3>& cloud)
     CHECK(least == HUGE_VAL || least > tp);
 
     // Still a chain complex with the same Euler characteristic.
-    CHECK(BoundaryOfBoundaryIsZero(nodes, r.Arcs, false));
-    CHECK(BoundaryOfBoundaryIsZero(nodes, r.Arcs, true) == ddInfinity);
+    CHECK(invariants::BoundaryOfBoundaryIsZero(nodes, r.Arcs, false));
+    CHECK(invariants::BoundaryOfBoundaryIsZero(nodes, r.Arcs, true) == ddInfinity);
     Id euler = 0;
     for (std::size_t i = 0; i < nodes.size(); ++i)
     {

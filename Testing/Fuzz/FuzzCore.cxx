@@ -51,6 +51,8 @@
 //
 // Any InputError (non-finite coordinates, fewer than 4 distinct points,
 // coplanar points, too degenerate) is an acceptable outcome.
+#include "Invariants.h"
+
 #include "AutomaticThresholds.h"
 #include "CappedReconstruction.h"
 #include "CellHomology.h"
@@ -135,42 +137,6 @@ std::vector<Point3> CloudOf(const std::uint8_t* data, std::size_t size, int& fla
   return cloud;
 }
 
-/// dd = 0 mod 2 over the odd arcs whose upper node is finite.
-bool BoundaryOfBoundaryIsZero(const std::vector<Node>& nodes, const std::vector<Arc>& arcs)
-{
-  std::map<Id, std::vector<Id>> below;
-  for (const Arc& a : arcs)
-  {
-    if (a.Multiplicity % 2 == 1 && !nodes[a.Upper].IsInfinity())
-    {
-      below[a.Upper].push_back(a.Lower);
-    }
-  }
-  for (const auto& entry : below)
-  {
-    std::map<Id, int> parity;
-    for (const Id b : entry.second)
-    {
-      const auto it = below.find(b);
-      if (it != below.end())
-      {
-        for (const Id bb : it->second)
-        {
-          parity[bb] ^= 1;
-        }
-      }
-    }
-    for (const auto& p : parity)
-    {
-      if (p.second != 0)
-      {
-        return false;
-      }
-    }
-  }
-  return true;
-}
-
 void CheckComplex(const FlowComplex& fc)
 {
   const auto n = fc.CountByIndex();
@@ -211,50 +177,14 @@ void CheckComplex(const FlowComplex& fc)
     if (fc.Nodes[i].Index == 2)
       REQUIRE(up[i] == 2 && down[i] >= 1);
   }
-  REQUIRE(BoundaryOfBoundaryIsZero(fc.Nodes, fc.Arcs));
+  REQUIRE(invariants::BoundaryOfBoundaryIsZero(fc.Nodes, fc.Arcs, false));
 }
 
 /// Patches are bounded by their Gabriel edges, used as often as the arc's
 /// multiplicity; other edges of a patch are shared by two of its triangles.
 void CheckPatches(const FlowComplex& fc)
 {
-  std::map<Id, std::map<std::pair<Id, Id>, int>> edgeUse;
-  for (std::size_t t = 0; t < fc.Triangles.size(); ++t)
-  {
-    const auto& tr = fc.Triangles[t];
-    for (int k = 0; k < 3; ++k)
-    {
-      const Id a = std::min(tr[k], tr[(k + 1) % 3]), b = std::max(tr[k], tr[(k + 1) % 3]);
-      ++edgeUse[fc.TriangleNode[t]][{ a, b }];
-    }
-  }
-  std::map<std::pair<Id, Id>, Id> gabriel;
-  for (std::size_t i = 0; i < fc.Nodes.size(); ++i)
-    if (fc.Nodes[i].Index == 1)
-      gabriel[{ fc.Nodes[i].Simplex[0], fc.Nodes[i].Simplex[1] }] = static_cast<Id>(i);
-  std::map<std::pair<Id, Id>, int> arcMultiplicity;
-  for (const Arc& a : fc.Arcs)
-    arcMultiplicity[{ a.Lower, a.Upper }] = a.Multiplicity;
-  for (const auto& patch : edgeUse)
-  {
-    for (const auto& e : patch.second)
-    {
-      if (e.first.first < fc.NumberOfInputPoints && e.first.second < fc.NumberOfInputPoints)
-      {
-        const auto g = gabriel.find(e.first);
-        REQUIRE(g != gabriel.end());
-        const int multiplicity = arcMultiplicity[std::make_pair(g->second, patch.first)];
-        REQUIRE(multiplicity == e.second);
-      }
-      else
-      {
-        REQUIRE(e.second == 2);
-      }
-    }
-  }
-  for (std::size_t i = 0; i < fc.Nodes.size(); ++i)
-    if (fc.Nodes[i].Index == 2)
-      REQUIRE(edgeUse.count(static_cast<Id>(i)) == 1);
+  REQUIRE(invariants::PatchesBoundedByGabrielEdges(fc, invariants::PatchEdgeUse(fc)));
 }
 
 /// The reconstruction at t is closed as a set: a face x of a drawn cell u (an
@@ -351,7 +281,7 @@ void CheckSimplification(const FlowComplex& fc, const SimplificationResult& s, d
     REQUIRE(s.Survives[a.Lower] && s.Survives[a.Upper] && a.Multiplicity >= 1);
     REQUIRE(fc.Nodes[a.Upper].Index == fc.Nodes[a.Lower].Index + 1);
   }
-  REQUIRE(BoundaryOfBoundaryIsZero(fc.Nodes, s.Arcs));
+  REQUIRE(invariants::BoundaryOfBoundaryIsZero(fc.Nodes, s.Arcs, false));
 }
 
 void CheckReconstruction(const FlowComplex& fc, const std::vector<Arc>& arcs,

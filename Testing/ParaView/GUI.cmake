@@ -17,7 +17,7 @@ if (FLOWRECON_BUILD_PARAVIEW_PLUGIN AND TARGET FlowRecon)
       COMMAND sh "${_need_x}" "${FLOWRECON_PARAVIEW_GUI}" --dr
               "--script=${CMAKE_CURRENT_LIST_DIR}/gui_pipeline.py")
     set_tests_properties(gui.pipeline PROPERTIES
-      ENVIRONMENT "FLOWRECON_EXIT=1;FLOWRECON_PLUGIN=$<TARGET_FILE:FlowRecon>;FLOWRECON_DATA=${_data_dir}/two_hemispheres.xyz;FLOWRECON_OUT=${CMAKE_CURRENT_BINARY_DIR}/gui_pipeline;FLOWRECON_TEST_DIR=${CMAKE_CURRENT_LIST_DIR}"
+      ENVIRONMENT "FLOWRECON_EXIT=1;FLOWRECON_PLUGIN=$<TARGET_FILE:FlowRecon>;FLOWRECON_DATA=${_data_dir}/two_hemispheres.xyz;FLOWRECON_OUT=${CMAKE_CURRENT_BINARY_DIR}/gui_pipeline"
       PASS_REGULAR_EXPRESSION "gui_pipeline: PASS"
       FAIL_REGULAR_EXPRESSION "gui_pipeline: FAIL"
       SKIP_RETURN_CODE 77
@@ -32,7 +32,7 @@ if (FLOWRECON_BUILD_PARAVIEW_PLUGIN AND TARGET FlowRecon)
       COMMAND sh "${_need_x}" "${FLOWRECON_PARAVIEW_GUI}" --dr
               "--script=${CMAKE_CURRENT_LIST_DIR}/test_apply_gui.py")
     set_tests_properties(gui.apply_defaults PROPERTIES
-      ENVIRONMENT "FLOWRECON_EXIT=1;FLOWRECON_PLUGIN=$<TARGET_FILE:FlowRecon>;FLOWRECON_DATA=${_data_dir}/torus.xyz;FLOWRECON_OUT=${CMAKE_CURRENT_BINARY_DIR}/apply_gui;FLOWRECON_TEST_DIR=${CMAKE_CURRENT_LIST_DIR}"
+      ENVIRONMENT "FLOWRECON_EXIT=1;FLOWRECON_PLUGIN=$<TARGET_FILE:FlowRecon>;FLOWRECON_DATA=${_data_dir}/torus.xyz;FLOWRECON_OUT=${CMAKE_CURRENT_BINARY_DIR}/apply_gui"
       PASS_REGULAR_EXPRESSION "test_apply_gui: PASS"
       FAIL_REGULAR_EXPRESSION "test_apply_gui: FAIL"
       SKIP_RETURN_CODE 77
@@ -71,7 +71,7 @@ if (FLOWRECON_BUILD_PARAVIEW_PLUGIN AND TARGET FlowRecon)
   endif ()
 endif ()
 
-# Data/demo.pvsm (written by Data/make_states.py) loads from the repository root
+# Data/demo.pvsm (written by Apps/Scripts/make_states.py) loads from the repository root
 # with the plugin from PV_PLUGIN_PATH. No rendering: no X server needed.
 find_program(FLOWRECON_PVPYTHON pvpython DOC "ParaView's Python interpreter")
 if (FLOWRECON_BUILD_PARAVIEW_PLUGIN AND TARGET FlowRecon AND FLOWRECON_PVPYTHON)

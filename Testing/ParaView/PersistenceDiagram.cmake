@@ -14,7 +14,7 @@ if (FLOWRECON_BUILD_PARAVIEW_PLUGIN AND TARGET FlowRecon AND TARGET flowrecon AN
   set_tests_properties(pv.persistence_diagram PROPERTIES
     # Nothing is rendered: without DISPLAY no X server can refuse the
     # connection (pv.profile_charts aborted once under xvfb-run -j2).
-    ENVIRONMENT "PYTHONPATH=${FLOWRECON_PYTHONPATH};DISPLAY="
+    ENVIRONMENT "DISPLAY="
     PASS_REGULAR_EXPRESSION "PASS"
     FAIL_REGULAR_EXPRESSION "FAIL"
     LABELS "paraview"

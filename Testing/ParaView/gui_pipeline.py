@@ -2,7 +2,7 @@
 
     FLOWRECON_PLUGIN=<build>/lib/paraview-5.11/plugins/FlowRecon/FlowRecon.so \\
     FLOWRECON_DATA=<repo>/Data/two_hemispheres.xyz FLOWRECON_OUT=<prefix> \\
-    FLOWRECON_TEST_DIR=<repo>/Testing/ParaView \\
+    PYTHONPATH=<repo>/Testing/Python \\
     xvfb-run -a -s "-screen 0 1280x1024x24" paraview --dr --script=gui_pipeline.py
 
 The GUI's own Python loads the plugin (unless PV_PLUGIN_PATH already did), reads the
@@ -16,14 +16,12 @@ the GUI open (interactive use).
 """
 
 import os
-import sys
 
-sys.path.insert(0, os.environ.get("FLOWRECON_TEST_DIR", "."))
-from gui_plugin import load_plugin  # noqa: E402
-from gui_qt import check, run_in_gui, say  # noqa: E402
+from flowrecon_testing.gui_plugin import load_plugin
+from flowrecon_testing.gui_qt import check, run_in_gui, say
 
-from paraview import servermanager  # noqa: E402
-from paraview.simple import *  # noqa: E402,F401,F403
+from paraview import servermanager
+from paraview.simple import *  # noqa: F401,F403
 
 
 def block_names(proxy):

@@ -12,13 +12,11 @@ is written there too).
 """
 
 import os
-import sys
 
-sys.path.insert(0, os.environ.get("FLOWRECON_TEST_DIR", "."))
-from gui_plugin import load_plugin  # noqa: E402
-from gui_qt import Qt, check, run_in_gui, say  # noqa: E402
+from flowrecon_testing.gui_plugin import load_plugin
+from flowrecon_testing.gui_qt import Qt, check, run_in_gui, say
 
-from paraview.simple import *  # noqa: E402,F401,F403
+from paraview.simple import *  # noqa: F401,F403
 
 FILTERS = ("FlowComplex", "FlowComplexSimplification", "FlowReconstruction",
            "PersistenceDiagram")

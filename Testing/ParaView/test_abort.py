@@ -20,13 +20,10 @@ Prints PASS or FAIL.
 import sys
 import time
 
+from flowrecon_testing.checks import fail
+
 ABORT_LATENCY = 3.0  # s; the longest step between two abort polls is ~2 s at 5e4 points
 STOPS = (0.02, 0.25, 0.5, 0.65, 0.85)  # progress at which the abort is requested
-
-
-def fail(message):
-    print("FAIL: " + message, flush=True)
-    sys.exit(1)
 
 
 def main():

@@ -39,21 +39,18 @@ Messages window) and os._exit()s (the GUI has no quit from Python).
 """
 
 import os
-import sys
 import time
 
 from paraview import servermanager
 from paraview.simple import *  # noqa: F401,F403
 
+from flowrecon_testing.gui_plugin import load_plugin
+from flowrecon_testing.gui_qt import Qt, check, run_in_gui, say, x_click
+
 ABORT_AFTER = 1.0     # s into the run when the abort is requested
 ABORT_LATENCY = 3.0   # s from the request to the end of the run (the longest step
                       # between two abort polls of the flow complex on 5e4 points is
                       # about 2 s on this 2-core machine)
-
-
-sys.path.insert(0, os.environ.get("FLOWRECON_TEST_DIR", "."))
-from gui_plugin import load_plugin  # noqa: E402
-from gui_qt import Qt, check, run_in_gui, say, x_click  # noqa: E402
 
 
 def n_cells(proxy):

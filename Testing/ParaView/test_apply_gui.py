@@ -4,12 +4,12 @@ the real GUI:
 
     FLOWRECON_PLUGIN=<build>/lib/paraview-5.11/plugins/FlowRecon/FlowRecon.so \\
     FLOWRECON_DATA=<repo>/Data/torus.xyz FLOWRECON_OUT=<prefix> \\
-    FLOWRECON_TEST_DIR=<repo>/Testing/ParaView \\
+    PYTHONPATH=<repo>/Testing/Python \\
     xvfb-run -a -s "-screen 0 1280x1024x24" paraview --dr --script=test_apply_gui.py
 
 The filters are made by pqFiltersMenuReaction::createFilter (what the menu does) and
 applied by a click on the Properties panel's Apply button (pqApplyBehavior), both
-reached through ctypes (gui_qt.py). test_default_display.py checks the same defaults
+reached through ctypes (flowrecon_testing/gui_qt.py). test_default_display.py checks the same defaults
 through Python's Show(); this is the GUI's own path:
   * Flow Complex and Flow Complex Simplification: shown in the render view with the
     blocks CriticalPoints and GabrielEdges, coloured by the cell array Index, one
@@ -30,16 +30,14 @@ Prints "test_apply_gui: PASS"/"FAIL" with os.write and os._exit()s.
 """
 
 import os
-import sys
 
 import numpy as np
 
-sys.path.insert(0, os.environ.get("FLOWRECON_TEST_DIR", "."))
-from gui_plugin import load_plugin  # noqa: E402
-from gui_qt import Qt, check, run_in_gui, say  # noqa: E402
+from flowrecon_testing.gui_plugin import load_plugin
+from flowrecon_testing.gui_qt import Qt, check, run_in_gui, say
 
-from paraview import servermanager  # noqa: E402
-from paraview.simple import *  # noqa: E402,F401,F403
+from paraview import servermanager
+from paraview.simple import *  # noqa: F401,F403
 
 
 def legends(view):

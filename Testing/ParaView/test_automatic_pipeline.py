@@ -22,13 +22,12 @@ import re
 import subprocess
 import sys
 
-PLUGIN, FLOWRECON, WORK = sys.argv[1:4]
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Data"))
-import generate_clouds as gc  # noqa: E402
+import generate_clouds as gc
+from paraview import servermanager
+from paraview.simple import Delete, LoadPlugin, OpenDataFile
+from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
 
-from paraview import servermanager  # noqa: E402
-from paraview.simple import Delete, LoadPlugin, OpenDataFile  # noqa: E402
-from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader  # noqa: E402
+PLUGIN, FLOWRECON, WORK = sys.argv[1:4]
 
 LoadPlugin(PLUGIN, remote=False, ns=globals())
 os.makedirs(WORK, exist_ok=True)

@@ -31,18 +31,16 @@ import math
 import os
 import sys
 
+import generate_clouds as gen
 import numpy as np
-
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "..", "Data"))
-import generate_clouds as gen  # noqa: E402
-
-from paraview import servermanager, simple  # noqa: E402
-from paraview.modules.vtkRemotingViews import (  # noqa: E402
+from paraview import servermanager, simple
+from paraview.modules.vtkRemotingViews import (
     vtkSMParaViewPipelineControllerWithRendering, vtkSMPVRepresentationProxy)
 
+from flowrecon_testing import clouds as cl
+from flowrecon_testing.checks import check, finish
+
 PLUGIN, WORK = sys.argv[1:3]
-from checks import check, failures, finish  # noqa: E402,F401
 
 controller = vtkSMParaViewPipelineControllerWithRendering()
 
@@ -259,7 +257,7 @@ def reconstruction(work):
     base = gen.make("sphere_qu", size=1500)
     keep = (base[:, 2] <= 0.7) | (np.random.default_rng(3).uniform(size=len(base)) > 0.5)
     xyz = os.path.join(work, "sphere_thinned.xyz")
-    np.savetxt(xyz, base[keep], fmt="%.17g")
+    cl.write_xyz(xyz, base[keep])
     reader = simple.OpenDataFile(xyz)
     reader.UpdatePipeline()
     cloud_bounds = reader.GetDataInformation().GetBounds()
@@ -365,7 +363,7 @@ def main():
     os.makedirs(WORK, exist_ok=True)
     simple.LoadPlugin(PLUGIN, remote=False, ns=globals())
     xyz = os.path.join(WORK, "torus.xyz")
-    np.savetxt(xyz, gen.torus(300, np.random.default_rng(4)), fmt="%.17g")
+    cl.write_xyz(xyz, gen.torus(300, np.random.default_rng(4)))
     reader = simple.OpenDataFile(xyz)
     reader.UpdatePipeline()
     cloud_bounds = reader.GetDataInformation().GetBounds()

@@ -22,16 +22,12 @@ import subprocess
 import sys
 
 import numpy as np
+from paraview import servermanager, simple
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkCommonCore import vtkCommand
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "..", "Data"))
-import generate_clouds as gen  # noqa: E402
-
-from paraview import servermanager, simple  # noqa: E402
-from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
-from vtkmodules.vtkCommonCore import vtkCommand  # noqa: E402
-
-from checks import check, failures, finish  # noqa: E402,F401
+from flowrecon_testing import clouds as cl
+from flowrecon_testing.checks import check, finish
 
 PLUGIN, WORK = sys.argv[1:3]
 CLI = sys.argv[3] if len(sys.argv) > 3 else None  # the flowrecon program
@@ -101,7 +97,7 @@ def pipeline(reader, defer, cap):
 
 def compare_cloud(name, points, ratio, least):
     xyz = os.path.join(WORK, name + ".xyz")
-    np.savetxt(xyz, points, fmt="%.17g")
+    cl.write_xyz(xyz, points)
     reader = simple.OpenDataFile(xyz)
     eager = pipeline(reader, 0.0, ratio)
     lazy = pipeline(reader, ratio, ratio)

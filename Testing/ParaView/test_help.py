@@ -27,10 +27,7 @@ import zlib
 
 from paraview import servermanager, simple
 
-
-def fail(message):
-    print("FAIL: " + message)
-    sys.exit(1)
+from flowrecon_testing.checks import fail
 
 
 def qch_files(path):

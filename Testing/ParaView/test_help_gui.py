@@ -13,11 +13,11 @@ Flow Complex. The events (QtTesting XML, as ParaView's own GUI tests) select eac
 source in the Pipeline Browser, press the Properties panel's "?" and check the help
 window's page: its title is the proxy's label and its address
 qthelp://flowrecon.org/FlowRecon/<group>.<proxy>.html (Qt writes the host in lower case).
-Also used by test_states_gui.py (run_paraview).
 """
 import os
-import subprocess
 import sys
+
+from flowrecon_testing.paraview_gui import gui_errors, run_paraview, say
 
 HELP_BROWSER = "pqClientMainWindow/pqHelpWindow/1QTextBrowser0"
 PIPELINE = "pqClientMainWindow/pipelineBrowserDock/pipelineBrowser"
@@ -41,47 +41,6 @@ simple.FlowReconstruction(Input=simp)
 simple.PersistenceDiagram(Input=fc)
 simple.SetActiveSource(fc)
 '''
-
-
-def say(message):
-    sys.stdout.write(message + "\n")
-    sys.stdout.flush()
-
-
-def run_paraview(paraview, plugin_dir, outdir, events, args=(), settings=None, cwd=None,
-                 timeout=240):
-    """Run the GUI with the QtTesting events (a list of XML lines) in a fresh settings
-    folder; return (exit code, output)."""
-    config = os.path.join(outdir, "home", ".config", "ParaView")
-    os.makedirs(config, exist_ok=True)
-    with open(os.path.join(config, "ParaView5.11.0.ini"), "w") as f:
-        f.write("[General]\nGeneralSettings.ShowWelcomeDialog=0\n")
-    user_settings = os.path.join(config, "ParaView-UserSettings.json")
-    if os.path.exists(user_settings):
-        os.remove(user_settings)
-    if settings is not None:
-        with open(user_settings, "w") as f:
-            f.write(settings)
-    xml = os.path.join(outdir, "events.xml")
-    with open(xml, "w") as f:
-        f.write('<?xml version="1.0" ?>\n<pqevents>\n%s\n</pqevents>\n' % "\n".join(events))
-    env = dict(os.environ, HOME=os.path.join(outdir, "home"),
-               XDG_CONFIG_HOME=os.path.join(outdir, "home", ".config"),
-               PV_PLUGIN_PATH=plugin_dir)
-    cmd = [paraview] + list(args) + ["--test-script=" + xml, "--exit"]
-    say("running: %s (in %s)" % (" ".join(cmd), cwd or os.getcwd()))
-    try:
-        result = subprocess.run(cmd, env=env, cwd=cwd, stdout=subprocess.PIPE,
-                                stderr=subprocess.STDOUT, timeout=timeout)
-    except subprocess.TimeoutExpired as e:
-        return 124, (e.output or b"").decode(errors="replace") + "\n(timed out)"
-    return result.returncode, result.stdout.decode(errors="replace")
-
-
-def gui_errors(output):
-    """Lines of the GUI's output that report a failure (test checks, VTK errors)."""
-    return [line for line in output.splitlines()
-            if "critical:" in line or "ERR|" in line or "FATL|" in line]
 
 
 def main():

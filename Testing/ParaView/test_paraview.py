@@ -14,6 +14,8 @@ import os
 import sys
 import tempfile
 
+from flowrecon_testing.checks import fail
+
 BLOCKS = {
     "CriticalPoints": ("vtkPolyData", "point", ("NodeId", "Index", "CriticalValue")),
     "HasseDiagram": ("vtkPolyData", "cell", ("Multiplicity", "Ratio")),
@@ -21,11 +23,6 @@ BLOCKS = {
     "UnstableManifolds": ("vtkPolyData", "cell", ("NodeId", "TargetNodeId")),
     "GabrielEdges": ("vtkPolyData", "cell", ("NodeId", "Index", "CriticalValue")),
 }
-
-
-def fail(message):
-    print("FAIL: " + message, flush=True)
-    sys.exit(1)
 
 
 def main():

@@ -16,7 +16,7 @@ that is not a flow complex, a simplified complex) gives a VTK error and empty
 output, never a crash; an empty multiblock gives empty outputs and no error.
 
 Run: pvpython test_persistence_diagram_filter.py PLUGIN FLOWRECON WORKDIR
-with PYTHONPATH holding the build's `flowrecon` package.
+with PYTHONPATH holding the build's `flowrecon` package, Testing/Python and Apps/Scripts.
 """
 
 import math
@@ -24,21 +24,18 @@ import os
 import subprocess
 import sys
 
+import generate_clouds as gen
 import numpy as np
+from paraview import servermanager
+from paraview import simple
+from vtkmodules.util.numpy_support import vtk_to_numpy
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "Filters", "Python"))  # flowcomplex_io
-sys.path.insert(0, os.path.join(HERE, "..", "..", "Data"))
-
-import flowcomplex_io as fio  # noqa: E402
-import generate_clouds as gen  # noqa: E402
-
-from paraview import servermanager  # noqa: E402
-from paraview import simple  # noqa: E402
-from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
+from flowrecon_testing import clouds as cl
+from flowrecon_testing import flowcomplex_io as fio
+from flowrecon_testing.checks import Checker
 
 PLUGIN, FLOWRECON, WORK = sys.argv[1:4]
-CHK = fio.Checker("test_persistence_diagram_filter")
+CHK = Checker("test_persistence_diagram_filter")
 TTK = ("PairIdentifier", "PairType", "Persistence", "Birth", "IsFinite")
 DROP = 1e-9
 TOL = 1e-7
@@ -218,7 +215,7 @@ def check_diagram(name, points, pairs, cli_grid, grid, tp):
 
 def check_cloud(name, points, manifolds):
     xyz = os.path.join(WORK, name + ".xyz")
-    np.savetxt(xyz, points, fmt="%.17g")
+    cl.write_xyz(xyz, points)
     pairs, cli_grid = cli_pairs(xyz)
     reader = simple.OpenDataFile(xyz)
     fc = FlowComplex(Input=reader, ComputeStableManifolds=manifolds)  # noqa: F821

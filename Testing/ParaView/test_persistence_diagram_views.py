@@ -16,18 +16,15 @@ Run (needs X): pvpython --force-offscreen-rendering test_persistence_diagram_vie
 import os
 import sys
 
+import generate_clouds as gen
 import numpy as np
+from paraview import simple
+from paraview.modules.vtkRemotingViews import vtkSMParaViewPipelineControllerWithRendering
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "..", "Data"))
-import generate_clouds as gen  # noqa: E402
-
-from paraview import simple  # noqa: E402
-from paraview.modules.vtkRemotingViews import (  # noqa: E402
-    vtkSMParaViewPipelineControllerWithRendering)
+from flowrecon_testing import clouds as cl
+from flowrecon_testing.checks import check, finish
 
 PLUGIN, WORK = sys.argv[1:3]
-from checks import check, failures, finish  # noqa: E402,F401
 
 
 def picture(view, path):
@@ -79,7 +76,7 @@ def main():
     simple.LoadPlugin(PLUGIN, remote=False, ns=globals())
     rng = np.random.default_rng(11)
     xyz = os.path.join(WORK, "torus.xyz")
-    np.savetxt(xyz, gen.torus(400, rng), fmt="%.17g")
+    cl.write_xyz(xyz, gen.torus(400, rng))
     reader = simple.OpenDataFile(xyz)
     fc = FlowComplex(Input=reader, ComputeStableManifolds=0)  # noqa: F821
     pd = PersistenceDiagram(Input=fc)  # noqa: F821

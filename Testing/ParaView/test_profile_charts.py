@@ -28,19 +28,15 @@ import subprocess
 import sys
 
 import numpy as np
+from paraview import servermanager, simple
+from paraview.modules.vtkRemotingViews import vtkSMParaViewPipelineControllerWithRendering
+from vtkmodules.util.numpy_support import vtk_to_numpy
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "..", "Data"))
-import generate_clouds as gen  # noqa: E402
-
-from paraview import servermanager, simple  # noqa: E402
-from paraview.modules.vtkRemotingViews import (  # noqa: E402
-    vtkSMParaViewPipelineControllerWithRendering)
-from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
+from flowrecon_testing.checks import check, finish
+from flowrecon_testing.paraview_pipeline import torus_profiles
 
 PLUGIN, FLOWRECON, WORK = sys.argv[1:4]
 TMAX = 4.0
-from checks import check, failures, finish  # noqa: E402,F401
 
 
 def cli(xyz, tr):
@@ -144,16 +140,8 @@ def chart_settings(rep):
 def main():
     os.makedirs(WORK, exist_ok=True)
     simple.LoadPlugin(PLUGIN, remote=False, ns=globals())
-    xyz = os.path.join(WORK, "torus.xyz")
-    np.savetxt(xyz, gen.torus(600, np.random.default_rng(4)), fmt="%.17g")
-    reader = simple.OpenDataFile(xyz)
     # Given thresholds (t_p 1.1, t_r set below), as the CLI's --tp 1.1 --tr T.
-    simplified = FlowComplexSimplification(  # noqa: F821 (defined by LoadPlugin)
-        Input=FlowComplex(Input=reader, ComputeStableManifolds=0),  # noqa: F821
-        AutomaticPersistenceThreshold=0)
-    recon = FlowReconstruction(Input=simplified, MaximumThreshold=TMAX,  # noqa: F821
-                               AutomaticReconstructionThreshold=0)
-    recon.UpdatePipeline()
+    xyz, recon = torus_profiles(globals(), WORK, TMAX)
 
     controller = vtkSMParaViewPipelineControllerWithRendering()
     preferred = [controller.GetPreferredViewType(recon.SMProxy, k) for k in range(5)]

@@ -16,18 +16,14 @@ import os
 import sys
 
 import numpy as np
+from paraview import simple
+from paraview.modules.vtkRemotingViews import vtkSMParaViewPipelineControllerWithRendering
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "..", "Data"))
-import generate_clouds as gen  # noqa: E402
-
-from paraview import simple  # noqa: E402
-from paraview.modules.vtkRemotingViews import (  # noqa: E402
-    vtkSMParaViewPipelineControllerWithRendering)
+from flowrecon_testing.checks import check, failures, finish
+from flowrecon_testing.paraview_pipeline import torus_profiles
 
 PLUGIN, WORK = sys.argv[1:3]
 SIZE = [800, 600]
-from checks import check, failures, finish  # noqa: E402,F401
 
 
 def picture(view, name):
@@ -71,15 +67,7 @@ def drawn(rgb):
 def main():
     os.makedirs(WORK, exist_ok=True)
     simple.LoadPlugin(PLUGIN, remote=False, ns=globals())
-    xyz = os.path.join(WORK, "torus.xyz")
-    np.savetxt(xyz, gen.torus(600, np.random.default_rng(4)), fmt="%.17g")
-    reader = simple.OpenDataFile(xyz)
-    recon = FlowReconstruction(  # noqa: F821 (defined by LoadPlugin)
-        Input=FlowComplexSimplification(  # noqa: F821
-            Input=FlowComplex(Input=reader, ComputeStableManifolds=0),  # noqa: F821
-            AutomaticPersistenceThreshold=0),
-        MaximumThreshold=4.0, AutomaticReconstructionThreshold=0)
-    recon.UpdatePipeline()
+    recon = torus_profiles(globals(), WORK, 4.0)[1]
 
     controller = vtkSMParaViewPipelineControllerWithRendering()
     views = {k: controller.ShowInPreferredView(recon.SMProxy, k, None) for k in (1, 3)}

@@ -17,40 +17,22 @@ step it came after (a state or a filter). Prints PASS or FAIL.
 """
 import glob
 import os
-import subprocess
 import sys
+
+from flowrecon_testing.paraview_gui import fresh_home, run_gui, say
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 MARKERS = ("warning:", "critical:", "ERR|", "WARN|", "Could not find icon")
 
 
-def say(message):
-    sys.stdout.write(message + "\n")
-    sys.stdout.flush()
-
-
-def run_gui(paraview, plugin, root, outdir, states):
-    config = os.path.join(outdir, "home", ".config", "ParaView")
-    os.makedirs(config, exist_ok=True)
-    with open(os.path.join(config, "ParaView5.11.0.ini"), "w") as f:
-        f.write("[General]\nGeneralSettings.ShowWelcomeDialog=0\n")
-    settings = os.path.join(config, "ParaView-UserSettings.json")
-    if os.path.exists(settings):
-        os.remove(settings)
-    env = dict(os.environ, HOME=os.path.join(outdir, "home"),
-               XDG_CONFIG_HOME=os.path.join(outdir, "home", ".config"),
-               FLOWRECON_EXIT="1", FLOWRECON_PLUGIN=plugin, FLOWRECON_TEST_DIR=HERE,
+def run(paraview, plugin, root, outdir, states):
+    env = fresh_home(outdir)
+    env.update(FLOWRECON_EXIT="1", FLOWRECON_PLUGIN=plugin,
                FLOWRECON_DATA=os.path.join(root, "Data", "torus.xyz"),
                FLOWRECON_STATES=os.pathsep.join(states))
     env.pop("PV_PLUGIN_PATH", None)  # the script loads the plugin
     cmd = [paraview, "--dr", "--script=" + os.path.join(HERE, "gui_quiet.py")]
-    say("running: %s (in %s)" % (" ".join(cmd), root))
-    try:
-        result = subprocess.run(cmd, env=env, cwd=root, stdout=subprocess.PIPE,
-                                stderr=subprocess.STDOUT, timeout=400)
-    except subprocess.TimeoutExpired as e:
-        return 124, (e.output or b"").decode(errors="replace") + "\n(timed out)"
-    return result.returncode, result.stdout.decode(errors="replace")
+    return run_gui(cmd, env, root, 400)
 
 
 def messages(output):
@@ -74,7 +56,7 @@ def main():
         sys.exit(1)
     failed = False
     for what, run_states in (("the filters from the menu", []), ("the example states", states)):
-        rc, output = run_gui(paraview, plugin, root, outdir, run_states)
+        rc, output = run(paraview, plugin, root, outdir, run_states)
         found = messages(output)
         if rc != 0 or "gui_quiet: PASS" not in output:
             say(output)

@@ -30,15 +30,12 @@ import tempfile
 from paraview import servermanager, simple
 from paraview.modules.vtkRemotingServerManager import vtkSMParaViewPipelineController
 
+from flowrecon_testing.checks import fail
+
 EXPECTED_STATES = {"demo", "torus", "bunny"}
 CLOUDS = {"demo": "two_hemispheres.xyz", "torus": "torus.xyz", "bunny": "bunny.xyz"}
 BETTI = {"torus": {"Reconstruction (automatic t_r)": (1, 2, 1)}}
 USE_DATA_DIRECTORY = 1  # "Search files under specified directory"
-
-
-def fail(message):
-    print("FAIL: " + message)
-    sys.exit(1)
 
 
 def load_like_the_gui(state):

@@ -25,8 +25,7 @@ import os
 import sys
 import tempfile
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from test_help_gui import gui_errors, run_paraview, say  # noqa: E402
+from flowrecon_testing.paraview_gui import gui_errors, run_paraview, say
 
 MAIN = "pqClientMainWindow"
 OPTIONS = "LoadStateOptionsDialog"

@@ -17,15 +17,15 @@ import re
 import subprocess
 import sys
 
+import generate_clouds as gc
 import numpy as np
+from paraview import servermanager
+from paraview.simple import LoadPlugin, OpenDataFile
+from vtkmodules.util.numpy_support import vtk_to_numpy
+
+from flowrecon_testing import clouds as cl
 
 PLUGIN, FLOWRECON, WORK = sys.argv[1:4]
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Data"))
-import generate_clouds as gc  # noqa: E402
-
-from paraview import servermanager  # noqa: E402
-from paraview.simple import LoadPlugin, OpenDataFile  # noqa: E402
-from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
 
 LoadPlugin(PLUGIN, remote=False, ns=globals())
 os.makedirs(WORK, exist_ok=True)
@@ -106,7 +106,7 @@ rng = np.random.default_rng(3)
 thinned = base[(base[:, 2] <= 0.7) | (rng.uniform(size=len(base)) > 0.6)]
 for name, points in (("clean", base), ("thinned", thinned)):
     path = os.path.join(WORK, name + ".xyz")
-    np.savetxt(path, points, fmt="%.17g")
+    cl.write_xyz(path, points)
     cb, cplaces, crows = cli(path)
     pb, ppts, prows, recon, simplified = paraview(path)
     print("%s: CLI Betti %s, %d warnings, %d profile rows; ParaView Betti %s, %d under-sampled "

@@ -23,11 +23,10 @@ import re
 import subprocess
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import check, finish  # noqa: E402
+from paraview import servermanager
+from paraview.simple import LoadPlugin, OpenDataFile, OutputPort  # noqa: F401
 
-from paraview import servermanager  # noqa: E402
-from paraview.simple import LoadPlugin, OpenDataFile, OutputPort  # noqa: E402,F401
+from flowrecon_testing.checks import check, finish
 
 PLUGIN, FLOWRECON, DATA, WORK = sys.argv[1:5]
 LoadPlugin(PLUGIN, remote=False, ns=globals())

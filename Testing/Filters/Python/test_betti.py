@@ -2,7 +2,7 @@
 """Homotopy type of reconstructions (docs/design.md §3): the Betti numbers over Z/2 of
 the output of vtkFlowReconstruction, at the DEFAULT parameters (t_p and t_r
 chosen from the data: the filters' defaults, not set here), equal those of the sampled set,
-on quasi-uniform samples made by Data/generate_clouds.py (farthest-point
+on quasi-uniform samples made by Apps/Scripts/generate_clouds.py (farthest-point
 subsamples of dense i.i.d. samples, or evenly spaced curve samples: the paper's
 guarantee assumes a roughly uniform sampling).
 
@@ -22,23 +22,17 @@ The Betti numbers come from GUDHI: a SimplexTree holding every output cell
 persistence() / betti_numbers(); an independent Z/2 reduction is kept as a check
 of the GUDHI side on a small complex.
 
-Run: PYTHONPATH=<build>/lib/python3/dist-packages /usr/bin/python3 test_betti.py
+Run: PYTHONPATH=<build>/lib/python3/dist-packages:Testing/Python:Apps/Scripts /usr/bin/python3 test_betti.py
      [--only NAME,...] [--scan]   (--scan: on a failure, also the t_r giving the truth)
 """
 
 import argparse
-import os
 import sys
 import time
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-DATA = os.path.join(HERE, "..", "..", "..", "Data")
-sys.path.insert(0, DATA)
+import generate_clouds as gc
 
-import numpy as np  # noqa: E402
-
-import generate_clouds as gc  # noqa: E402
-from experiments import cells_of, polydata  # noqa: E402  (shared plumbing)
+from flowrecon_testing.flowcomplex_io import cells_of, make_polydata
 
 # shape of generate_clouds.py -> true Betti numbers (b0, b1, b2), stated here again
 # (not read from the generator) so that the test states its expectation itself.
@@ -65,7 +59,7 @@ def import_modules():
         import gudhi
     except ImportError as e:
         sys.exit("test_betti: cannot import %s; run with /usr/bin/python3 and "
-                 "PYTHONPATH=<build>/lib/python3/dist-packages" % e)
+                 "PYTHONPATH=<build>/lib/python3/dist-packages:Testing/Python:Apps/Scripts" % e)
     return flowrecon, gudhi
 
 
@@ -106,7 +100,7 @@ def betti_z2(cells):
 def reconstruct(flowrecon, points):
     """Flow complex -> simplification -> reconstruction, all at their defaults."""
     fc = flowrecon.vtkFlowComplex()
-    fc.SetInputData(polydata(points))
+    fc.SetInputData(make_polydata(points))
     simp = flowrecon.vtkFlowComplexSimplification()
     simp.SetInputConnection(fc.GetOutputPort())
     rec = flowrecon.vtkFlowReconstruction()
@@ -125,7 +119,7 @@ def scan(flowrecon, simp, truth):
         tr = round(1.0 + 0.05 * k, 2)
         rec.SetReconstructionThreshold(tr)
         rec.Update()
-        if betti_gudhi(cells_of(rec.GetOutput())) == truth:
+        if betti_gudhi(cells_of(rec.GetOutput())[1]) == truth:
             good.append(tr)
     return good
 
@@ -167,7 +161,7 @@ def main():
         simp, rec = reconstruct(flowrecon, points)
         grid = rec.GetOutput()
         t2 = time.perf_counter()
-        cells = cells_of(grid)
+        cells = cells_of(grid)[1]
         b = betti_gudhi(cells)
         t3 = time.perf_counter()
         status = "ok" if b == truth else "FAILED"

@@ -20,10 +20,9 @@ ones (jittered and exact grids, cospherical points, duplicates, right angles):
 - random input is not perturbed; degenerate input is, and the report says so;
   duplicates are merged and reported.
 
-Run: PYTHONPATH=<build>/lib/python3/dist-packages /usr/bin/python3 test_invariants.py
+Run: PYTHONPATH=<build>/lib/python3/dist-packages:Testing/Python:Apps/Scripts /usr/bin/python3 test_invariants.py
 """
 
-import os
 import sys
 
 import numpy as np
@@ -31,31 +30,17 @@ from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import connected_components, minimum_spanning_tree
 from scipy.spatial import cKDTree
 from scipy.spatial.distance import cdist
+import generate_clouds as gen
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
-sys.path.insert(0, os.path.join(HERE, "..", "..", "..", "Data"))
+from flowrecon_testing import flowcomplex_io as fio
+from flowrecon_testing.clouds import random_cloud
+from flowrecon_testing.checks import Checker
 
-import flowcomplex_io as fio  # noqa: E402
-import generate_clouds as gen  # noqa: E402
-
-CHK = fio.Checker("test_invariants")
+CHK = Checker("test_invariants")
+CUBE = (-1.0, 1.0)  # the random cubes' side
 
 
 # --------------------------------------------------------------------------- inputs
-
-
-def random_cloud(kind, n, seed):
-    rng = np.random.default_rng(seed)
-    if kind == "cube":
-        return rng.uniform(-1.0, 1.0, (n, 3))
-    if kind == "sphere":  # a thin shell: exactly spherical samples are nearly cospherical
-        return gen.sphere(n, rng) * rng.uniform(1.0, 1.05, (n, 1))
-    if kind == "unit sphere":  # on the sphere up to rounding: a stress test of exactness
-        return gen.sphere(n, rng)
-    if kind == "torus":
-        return gen.torus(n, rng)
-    raise ValueError(kind)
 
 
 def random_inputs():
@@ -63,7 +48,7 @@ def random_inputs():
     for kind in ("cube", "sphere", "torus"):
         for n, seeds in ((20, (1, 2, 3)), (50, (4, 5)), (200, (6, 7)), (600, (8,)), (2000, (9,))):
             for s in seeds:
-                out.append(("%s n=%d seed=%d" % (kind, n, s), random_cloud(kind, n, 100 * s + n)))
+                out.append(("%s n=%d seed=%d" % (kind, n, s), random_cloud(kind, n, 100 * s + n, CUBE)))
     # nearly cospherical (every sample on the unit sphere up to rounding): critical
     # values near the centre tie in double precision, so arcs there may only be
     # non-decreasing, and the filter may or may not call the input degenerate
@@ -109,7 +94,7 @@ def structured_inputs():
     pts = lattice(6)
     sel = np.random.default_rng(5).choice(len(pts), 60, replace=False)
     out.append(("60 random points of a 6x6x6 lattice", pts[np.sort(sel)], "perturbed"))
-    base = random_cloud("cube", 100, 77)
+    base = random_cloud("cube", 100, 77, CUBE)
     rep = np.random.default_rng(78).choice(100, 20, replace=False)
     out.append(("100 random points + 20 exact duplicates", np.vstack((base, base[rep])),
                 "duplicates"))

@@ -18,24 +18,20 @@
     piecewise-linear state machine of §3 over all samples, floating point), must
     reach their own index-2 critical point before any other critical point.
 
-Run: PYTHONPATH=<build>/lib/python3/dist-packages /usr/bin/python3 test_oracles.py
+Run: PYTHONPATH=<build>/lib/python3/dist-packages:Testing/Python:Apps/Scripts /usr/bin/python3 test_oracles.py
 """
 
 import itertools
 import math
-import os
 import sys
 
 import numpy as np
+import generate_clouds as gen
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
-sys.path.insert(0, os.path.join(HERE, "..", "..", "..", "Data"))
+from flowrecon_testing import flowcomplex_io as fio
+from flowrecon_testing.checks import Checker
 
-import flowcomplex_io as fio  # noqa: E402
-import generate_clouds as gen  # noqa: E402
-
-CHK = fio.Checker("test_oracles")
+CHK = Checker("test_oracles")
 
 # --------------------------------------------------------------------------- brute force
 

@@ -13,42 +13,22 @@ agree per dimension as multisets within 1e-7 (relative).
 Before that, the reduction itself is checked against GUDHI on GUDHI's own alpha
 filtration, so a failure below points at the filter, not at this test.
 
-Run: PYTHONPATH=<build>/lib/python3/dist-packages /usr/bin/python3 test_persistence_gudhi.py
+Run: PYTHONPATH=<build>/lib/python3/dist-packages:Testing/Python:Apps/Scripts /usr/bin/python3 test_persistence_gudhi.py
 """
 
 import math
-import os
 import sys
 import time
 
-import numpy as np
+import generate_clouds as gen
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
-sys.path.insert(0, os.path.join(HERE, "..", "..", "..", "Data"))
+from flowrecon_testing import flowcomplex_io as fio
+from flowrecon_testing.clouds import random_cloud
+from flowrecon_testing.checks import Checker
 
-import flowcomplex_io as fio  # noqa: E402
-import generate_clouds as gen  # noqa: E402
-
-CHK = fio.Checker("test_persistence_gudhi")
+CHK = Checker("test_persistence_gudhi")
 DROP = 1e-9   # pairs shorter than DROP * diameter are ignored
 TOL = 1e-7    # births and deaths must agree within TOL * diameter
-
-
-def cloud(kind, n, seed):
-    rng = np.random.default_rng(seed)
-    if kind == "cube":
-        return rng.uniform(0.0, 1.0, (n, 3))
-    if kind == "sphere":  # a thin shell (exactly spherical samples are nearly cospherical)
-        return gen.sphere(n, rng) * rng.uniform(1.0, 1.05, (n, 1))
-    if kind == "unit sphere":
-        return gen.sphere(n, rng)
-    if kind == "torus":
-        return gen.torus(n, rng)
-    if kind == "grid":
-        k = int(round(n ** (1.0 / 3.0)))
-        return gen.grid(k, 1e-3, rng)
-    raise ValueError(kind)
 
 
 def alpha_diagram_by_reduction(points):
@@ -97,18 +77,19 @@ def check_filter(label, P):
 
 def main():
     CHK.section("oracle self-check: our reduction vs GUDHI on the alpha filtration")
-    for label, P in (("cube n=80", cloud("cube", 80, 1)), ("torus n=300", cloud("torus", 300, 2)),
-                     ("jittered 4x4x4 grid", cloud("grid", 64, 3))):
+    for label, P in (("cube n=80", random_cloud("cube", 80, 1)),
+                     ("torus n=300", random_cloud("torus", 300, 2)),
+                     ("jittered 4x4x4 grid", random_cloud("grid", 64, 3))):
         CHK.run("self-check %s" % label, check_reduction_self, label, P)
     cases = []
     for kind, sizes in (("cube", (50, 200, 800)), ("sphere", (60, 300, 1500)),
                         ("torus", (100, 500, 1500))):
         for i, n in enumerate(sizes):
-            cases.append(("%s n=%d" % (kind, n), cloud(kind, n, 7000 + 31 * i + n)))
-    cases.append(("cube n=120 seed 2", cloud("cube", 120, 99)))
-    cases.append(("unit sphere n=300 (near-cospherical)", cloud("unit sphere", 300, 5)))
+            cases.append(("%s n=%d" % (kind, n), random_cloud(kind, n, 7000 + 31 * i + n)))
+    cases.append(("cube n=120 seed 2", random_cloud("cube", 120, 99)))
+    cases.append(("unit sphere n=300 (near-cospherical)", random_cloud("unit sphere", 300, 5)))
     cases.append(("jittered 5x5x5 grid (Data generator)", gen.make("grid5_jittered")))
-    cases.append(("jittered 6x6x6 grid", cloud("grid", 216, 11)))
+    cases.append(("jittered 6x6x6 grid", random_cloud("grid", 216, 11)))
     for label, P in cases:
         CHK.run("filter vs GUDHI: %s" % label, check_filter, label, P)
     return CHK.finish()

@@ -5,28 +5,25 @@ docs/data-contract.md and Filters/vtkFlowComplex.h (block names and order, data 
 array names and types, the maximum at infinity, cell kinds per index, input ids
 of the samples, options, vtkTable input, unstable manifolds vs 2->3 arcs).
 
-Run: PYTHONPATH=<build>/lib/python3/dist-packages /usr/bin/python3 test_python_use.py
+Run: PYTHONPATH=<build>/lib/python3/dist-packages:Testing/Python:Apps/Scripts /usr/bin/python3 test_python_use.py
 """
 
-import os
 import sys
 
 import numpy as np
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
-
-import flowrecon  # noqa: E402  (the package under test)
-from vtkmodules.util.numpy_support import numpy_to_vtk  # noqa: E402
-from vtkmodules.vtkCommonCore import vtkMath  # noqa: E402
-from vtkmodules.vtkCommonDataModel import (  # noqa: E402
+import flowrecon  # the package under test
+from vtkmodules.util.numpy_support import numpy_to_vtk
+from vtkmodules.vtkCommonCore import vtkMath
+from vtkmodules.vtkCommonDataModel import (
     VTK_LINE, VTK_POLY_LINE, VTK_TETRA, VTK_TRIANGLE, VTK_VERTEX,
     vtkMultiBlockDataSet, vtkTable)
-from vtkmodules.vtkFiltersSources import vtkPointSource  # noqa: E402
+from vtkmodules.vtkFiltersSources import vtkPointSource
 
-import flowcomplex_io as fio  # noqa: E402
+from flowrecon_testing import flowcomplex_io as fio
+from flowrecon_testing.checks import Checker
 
-CHK = fio.Checker("test_python_use")
+CHK = Checker("test_python_use")
 
 EXPECTED_BLOCKS = [
     ("CriticalPoints", "vtkPolyData", {"point": ["NodeId", "Index", "CriticalValue"]}),

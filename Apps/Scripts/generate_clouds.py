@@ -77,7 +77,7 @@ tree                    5       (1, 0, 0)    a random branching tree (depth 5, 2
                                              curves, contractible; size = depth
 =======================  =====  ===========  ============================================
 
-Shapes added for the t_r / t_p study (``Data/tr_study.py``).
+Shapes added for the t_r / t_p study (``Benchmarks/Study/tr_study.py``).
 ``_qu``: farthest points of 30x i.i.d. candidates as above; ``_pd``: a Poisson-disk
 (dart-throwing) subsample of 20x i.i.d. candidates (at most 10^7), quasi-uniform like
 ``_qu`` but linear in the candidates, for 10^5-10^6 points (``poisson_disk``); ``_dv``:
@@ -119,7 +119,7 @@ plane_grid_jittered      1000   (1, 0, 0)    25 x 40 planar grid of spacing 1 in
                                              every coordinate moved by +-1e-12: a square
 =======================  =====  ===========  ============================================
 
-Shapes added for the topology study (``Data/topology_study.py``: right / flagged /
+Shapes added for the topology study (``Benchmarks/Study/topology_study.py``: right / flagged /
 silent answers by class, a class being a sampling x a shape family). ``_qu`` and
 ``_pd`` as above; the Poisson-disk radius of the tori rows is first guessed from an
 approximate area (``torus_row_area``), then rescaled as for every ``_pd`` shape:
@@ -150,7 +150,7 @@ Command line::
     generate_clouds.py [OUTDIR] [--shapes NAME[,NAME...]] [--size NAME=N ...]
                        [--seed-offset K] [--check] [--list]
 
-OUTDIR defaults to the folder of this script (the Data/ folder). Without
+OUTDIR defaults to the repository's Data/ folder. Without
 ``--shapes`` every shape is written. ``--size`` overrides a default size (for
 grid5_jittered and grid4_exact N is the number of points per axis, for tree the
 depth).
@@ -544,7 +544,7 @@ def tree(depth, rng, step=0.02):
 
 
 # --------------------------------------------------------------------------- study shapes
-# Shapes added for the t_r / t_p study (Data/tr_study.py): thin parts,
+# Shapes added for the t_r / t_p study (Benchmarks/Study/tr_study.py): thin parts,
 # a genus-4 surface, density-varying samples, Poisson-disk quasi-uniform samples (for
 # large n, where farthest_points is too slow) and regular lattices.
 
@@ -812,7 +812,7 @@ def plane_grid_jittered(n, rng, jitter=1e-12):
 
 
 # --------------------------------------------------------------------------- topology study
-# Shapes added for Data/topology_study.py (the classes sampling x shape family): a genus-3
+# Shapes added for Benchmarks/Study/topology_study.py (the classes sampling x shape family): a genus-3
 # surface, a circle, a solid cube, Poisson-disk variants of the other families and a
 # Fibonacci lattice on the sphere (see the fourth table of the module docstring).
 
@@ -917,7 +917,7 @@ SHAPES = {
     "vase_qu": (vase_qu, 3000, 209, (1, 2, 0)),
     "plate3_qu": (plate3_qu, 8000, 210, (1, 6, 1)),
     "tree": (tree, 5, 211, (1, 0, 0)),
-    # added for Data/tr_study.py (see the third table above)
+    # added for Benchmarks/Study/tr_study.py (see the third table above)
     "thin_tube": (thin_tube, 4000, 301, (1, 2, 1)),
     "thin_tube_qu": (thin_tube_qu, 4000, 302, (1, 2, 1)),
     "thin_plate": (thin_plate, 2000, 303, (1, 0, 1)),
@@ -934,7 +934,7 @@ SHAPES = {
     "lattice_shell": (lattice_shell, 15, 313, (1, 0, 1)),
     "latlong_sphere": (latlong_sphere, 30, 314, (1, 0, 1)),
     "plane_grid_jittered": (plane_grid_jittered, 1000, 315, (1, 0, 0)),
-    # added for Data/topology_study.py (see the fourth table above)
+    # added for Benchmarks/Study/topology_study.py (see the fourth table above)
     "genus3": (genus3, 3000, 401, (1, 6, 1)),
     "genus3_qu": (genus3_qu, 3000, 402, (1, 6, 1)),
     "genus3_pd": (genus3_pd, 3000, 403, (1, 6, 1)),
@@ -977,9 +977,10 @@ def read_xyz(path):
 
 
 def main(argv=None):
-    here = os.path.dirname(os.path.abspath(__file__))
+    data = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Data")
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("outdir", nargs="?", default=here, help="output folder (default: %(default)s)")
+    ap.add_argument("outdir", nargs="?", default=os.path.normpath(data),
+                    help="output folder (default: %(default)s)")
     ap.add_argument("--shapes", default=",".join(SHAPES), help="comma-separated shape names")
     ap.add_argument("--size", action="append", default=[], metavar="NAME=N",
                     help="size of one shape (repeatable)")

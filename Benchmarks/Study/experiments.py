@@ -19,7 +19,8 @@ compared with the true ones, and the time of each stage. Written into OUTDIR:
 
 Run (the Debian interpreter, the build-tree package)::
 
-    PYTHONPATH=build/lib/python3/dist-packages /usr/bin/python3 Data/experiments.py \\
+    PYTHONPATH=build/lib/python3/dist-packages:Apps/Scripts /usr/bin/python3 \\
+        Benchmarks/Study/experiments.py \\
         [OUTDIR] [--only NAME,...] [--png-dir Data/experiments] [--npm-prefix build/npm]
 
 OUTDIR defaults to build/experiments. The bunny needs the npm package, installed
@@ -37,11 +38,9 @@ import time
 
 import numpy as np
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-REPO = os.path.dirname(HERE)
-sys.path.insert(0, HERE)
+import generate_clouds as gc
 
-import generate_clouds as gc  # noqa: E402
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
 INF = float("inf")
 TR_SCAN = [round(1.0 + 0.05 * k, 2) for k in range(1, 61)]  # 1.05 .. 4.0
@@ -50,7 +49,7 @@ TR_SCAN = [round(1.0 + 0.05 * k, 2) for k in range(1, 61)]  # 1.05 .. 4.0
 #          [(t_p, t_r, why)])
 EXPERIMENTS = [
     ("two_hemispheres", "Two intersecting hemispheres (Data/two_hemispheres.xyz, i.i.d.)",
-     ("file", os.path.join(HERE, "two_hemispheres.xyz")), (1, 0, 0),
+     ("file", os.path.join(REPO, "Data", "two_hemispheres.xyz")), (1, 0, 0),
      [(1.1, 2.0, "defaults"), (0.0, 1.9, "paper Fig. 3(a), 4(a)"), (0.0, 2.1, "paper Fig. 4(b)"),
       (1.05, 2.5, "paper Fig. 3(c,d)")]),
     ("two_hemispheres_qu", "Two intersecting hemispheres, quasi-uniform (3,000 pts)",
@@ -372,7 +371,7 @@ def main(argv=None):
         import matplotlib  # noqa: F401
     except ImportError as e:
         sys.exit("experiments.py: %s (run with /usr/bin/python3 and "
-                 "PYTHONPATH=<build>/lib/python3/dist-packages)" % e)
+                 "PYTHONPATH=<build>/lib/python3/dist-packages:Apps/Scripts)" % e)
     names = [n for n in args.only.split(",") if n] or [e[0] for e in EXPERIMENTS]
     known = {e[0]: e for e in EXPERIMENTS}
     unknown = [n for n in names if n not in known]

@@ -5,7 +5,7 @@ FlatnessScales): the median of lambda_min / lambda_mid over the k nearest sample
 the test uses. Probes are kept away from the cube's faces, so that the figure is a
 volume's, not a boundary's.
 
-    /usr/bin/python3 Data/flatness_reference.py [--points 200000] [--probes 4000]
+    /usr/bin/python3 Benchmarks/Study/flatness_reference.py [--points 200000] [--probes 4000]
 """
 import argparse
 

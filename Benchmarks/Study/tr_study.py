@@ -5,7 +5,7 @@ quasi-uniformly (generate_clouds.py) at several sizes, the t_r window in which
 `flowrecon reconstruct` (t_p 1.1) has the true Betti numbers, from one topology
 profile up to 3. Prints a Markdown table: the first window (from, to], or none.
 
-  /usr/bin/python3 Data/tr_study.py build/bin/flowrecon WORKDIR [--sizes 1000 4000 16000]
+  PYTHONPATH=Apps/Scripts /usr/bin/python3 Benchmarks/Study/tr_study.py build/bin/flowrecon WORKDIR [--sizes 1000 4000 16000]
 
 Options (the defaults give the first table of Data/EXPERIMENTS.md, "The t_r
 window and the number of points", unchanged):

@@ -5,7 +5,7 @@ torus.pvsm and bunny.pvsm. Each reads its cloud with the plugin's own reader
 (automatic t_p) -> Flow Reconstruction twice: at the automatic t_r (shown) and at a
 given t_r (hidden, for comparison).
 
-    pvpython Data/make_states.py build/lib/paraview-5.11/plugins/FlowRecon/FlowRecon.so [NAME...]
+    pvpython Apps/Scripts/make_states.py build/lib/paraview-5.11/plugins/FlowRecon/FlowRecon.so [NAME...]
 
 (NAME: demo, torus, bunny; default all; no X server needed, nothing is rendered).
 
@@ -29,8 +29,8 @@ import sys
 
 from paraview import simple
 
-DATA_DIR = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(DATA_DIR)
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+DATA_DIR = os.path.join(ROOT, "Data")
 
 # name: cloud, (t_r shown: None = automatic, t_r hidden for comparison), up axis,
 # view direction

@@ -4,7 +4,7 @@ reconstruct` gets the Betti numbers right, by class (a class = a sampling x a sh
 family), with the old fixed defaults, with the automatic defaults, and whether SOME
 (t_p, t_r) gives the truth.
 
-  /usr/bin/python3 Data/topology_study.py OUTDIR [--large] [--only REGEX]
+  PYTHONPATH=Apps/Scripts /usr/bin/python3 Benchmarks/Study/topology_study.py OUTDIR [--large] [--only REGEX]
       [--sizes 1000,10000] [--configs fixed,auto,oracle] [--jobs N]
       [--flowrecon build/bin/flowrecon] [--report-only] [--fresh]
 
@@ -96,10 +96,8 @@ import tempfile
 import time
 import zlib
 
+import generate_clouds as gc
 import numpy as np
-
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import generate_clouds as gc  # noqa: E402
 
 # --------------------------------------------------------------------------- the study
 
@@ -538,7 +536,7 @@ def report(results):
     out = ["# Topology study: right / flagged / silent by class", ""]
     tps = meta.get("oracle_tp", list(ORACLE_TP))
     out.append(
-        "Made by `Data/topology_study.py` (%s). Truth = the Betti numbers of the sampled set; "
+        "Made by `Benchmarks/Study/topology_study.py` (%s). Truth = the Betti numbers of the sampled set; "
         "a fixed (`--tp 1.1 --tr 2`) or auto (no `--tr`/`--tp`) answer is *right*, "
         "*flagged* (wrong, with a `warning:` line), *silent* (wrong, no warning) or an "
         "*error*. Auto better / worse / other change: right only with auto / right only "

@@ -1,9 +1,9 @@
 #!/usr/bin/python3
 """Candidate rules for choosing t_r and t_p, compared on the topology study's
-profiles (Data/topology_study.py OUTDIR: the oracle runs' OUTDIR/runs/ID.oracle.tpP.csv,
+profiles (Benchmarks/Study/topology_study.py OUTDIR: the oracle runs' OUTDIR/runs/ID.oracle.tpP.csv,
 threshold,b0,b1,b2 up to t_r 8) against each cloud's truth.
 
-  /usr/bin/python3 Data/threshold_rules.py OUTDIR [--show RULE] [--cap C]
+  PYTHONPATH=Apps/Scripts /usr/bin/python3 Benchmarks/Study/threshold_rules.py OUTDIR [--show RULE] [--cap C]
 
 Every rule sees the profiles of t_p 1.1 and 0 cut at the cap C (5: what `flowrecon
 reconstruct` computes at its defaults), cuts them into windows of constant Betti
@@ -25,10 +25,8 @@ import glob
 import math
 import os
 import re
-import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import generate_clouds as gc  # noqa: E402
+import generate_clouds as gc
 
 LOWEST, TPS = 1.5, ("1.1", "0")
 CAP = 5.0  # set by --cap

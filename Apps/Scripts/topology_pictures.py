@@ -4,7 +4,7 @@ Betti numbers against t_r for a clean torus (2 000 quasi-uniform points) and
 for a sphere (3 000 quasi-uniform points) whose polar cap z > 0.7 lost half of
 its points, and that sphere with the places `flowrecon reconstruct` warns about.
 
-  /usr/bin/python3 Data/topology_pictures.py build/bin/flowrecon OUTDIR
+  /usr/bin/python3 Apps/Scripts/topology_pictures.py build/bin/flowrecon OUTDIR
   (docs/concepts.md shows the copies Data/pictures/topology_profiles.png and
   Data/pictures/undersampled_sphere.png)
 """

@@ -4,7 +4,7 @@ already did."""
 
 import os
 
-from gui_qt import check
+from flowrecon_testing.gui_qt import check
 
 
 def load_plugin(ns, names=("FlowComplex",)):

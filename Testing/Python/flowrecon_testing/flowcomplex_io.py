@@ -1,12 +1,12 @@
-"""Shared helpers of the Python tests: run vtkFlowComplex on a numpy point array and
-turn its output multiblock into plain numpy / Python structures, following the
-data contract of Filters/vtkFlowComplex.h and docs/data-contract.md; plus the Z/2
-persistence of a Hasse diagram and a tolerant comparison of persistence diagrams.
+"""Run vtkFlowComplex on a numpy point array and turn its output multiblock into
+plain numpy / Python structures, following the data contract of
+Filters/vtkFlowComplex.h and docs/data-contract.md; plus the Z/2 persistence of a
+Hasse diagram and a tolerant comparison of persistence diagrams.
 
 Nothing here decides what the right answer is: the tests take their expected
 values from independent oracles (brute force, GUDHI, the reference document).
 
-Run with /usr/bin/python3 and PYTHONPATH=<build>/lib/python3/dist-packages.
+Needs the build's `flowrecon` package on PYTHONPATH (CTest puts it there).
 """
 
 import hashlib
@@ -556,50 +556,3 @@ def gudhi_alpha_diagram(points):
 def diameter(points):
     p = np.asarray(points, dtype=float)
     return float(np.linalg.norm(p.max(axis=0) - p.min(axis=0)))
-
-
-# --------------------------------------------------------------------------- test runner
-
-
-class Checker:
-    """Collects failed checks (so one run reports all of them) and exits non-zero."""
-
-    def __init__(self, title):
-        self.title = title
-        self.failures = []
-        self.passed = 0
-        self.section_name = ""
-
-    def section(self, name):
-        self.section_name = name
-        print("-- %s" % name, flush=True)
-
-    def check(self, condition, message, details=None):
-        if condition:
-            self.passed += 1
-            return True
-        text = "[%s] %s" % (self.section_name, message)
-        if details:
-            text += "\n" + str(details)
-        self.failures.append(text)
-        print("FAIL " + text, flush=True)
-        return False
-
-    def run(self, name, func, *args, **kwargs):
-        """Runs func, turning an exception into a failure of this section."""
-        self.section(name)
-        try:
-            func(*args, **kwargs)
-        except Exception:  # report and go on with the other sections
-            import traceback
-            self.check(False, "exception in %s" % name, traceback.format_exc())
-
-    def finish(self):
-        print("%s: %d checks passed, %d failed" % (self.title, self.passed, len(self.failures)))
-        if self.failures:
-            print("FAILURES:")
-            for f in self.failures:
-                print(" * " + f.replace("\n", "\n   "))
-            return 1
-        print("PASS")
-        return 0

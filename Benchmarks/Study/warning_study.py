@@ -8,7 +8,7 @@ numbers change for some t_r in [2, 2F) (what `flowrecon reconstruct
 instead. Prints a Markdown table (Data/EXPERIMENTS.md, "Under-sampling
 warnings").
 
-  /usr/bin/python3 Data/warning_study.py build/bin/flowrecon WORKDIR [T_R]
+  PYTHONPATH=Apps/Scripts /usr/bin/python3 Benchmarks/Study/warning_study.py build/bin/flowrecon WORKDIR [T_R]
 
 T_R (default 2) evaluates another default t_r the same way.
 """
