@@ -3,7 +3,7 @@
 #include "FlowComplexConversion.h"
 #include "FlowReconNames.h"
 #include "Interrupt.h"
-#include "MessageCapture.h"
+#include "VtkMessageCapture.h"
 #include "OutputFiles.h"
 #include "vtkFlowComplex.h"
 #include "vtkPointCloudReader.h"
@@ -85,13 +85,13 @@ void RunFilter(vtkAlgorithm* filter, const std::string& input, const FlowComplex
 {
   vtkSmartPointer<ProgressLine> progress = ProgressLine::Make(options.Label, options.Quiet);
   filter->AddObserver(vtkCommand::ProgressEvent, progress);
-  ClearVtkError();
+  RunMessages().Clear();
   const int ok = filter->GetExecutive()->Update();
   progress->Finish();
   ThrowIfInterrupted();
   if (!ok)
   {
-    const std::string error = FirstVtkError();
+    const std::string error = RunMessages().FirstError();
     throw Failure(input + ": " + (error.empty() ? std::string(what) + " failed" : error));
   }
 }

@@ -506,7 +506,7 @@ void CheckFile(const std::string& file, int depth)
   vtkXMLDataElement* root = parser->Parse() ? parser->GetRootElement() : nullptr;
   if (!root)
   {
-    const std::string why = capture.First();
+    const std::string why = OneLine(capture.First());
     Fail(file, 0, "cannot read VTK XML file" + (why.empty() ? std::string() : " (" + why + ")"));
   }
   ParsedXml xml;
