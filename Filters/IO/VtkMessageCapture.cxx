@@ -9,7 +9,6 @@
 #include "vtkOutputWindow.h"
 
 #include <algorithm>
-#include <cstring>
 #include <string_view>
 
 namespace flowrecon
@@ -65,7 +64,8 @@ public:
     }
     // VTK built without NDEBUG (Debian's is) aborts after this message when an
     // array cannot be allocated; throw what its release builds throw instead.
-    if (text && std::strstr(text, "Unable to allocate "))
+    // (Only VTK's own message: a reader's error may quote it.)
+    if (t.rfind("Unable to allocate ", 0) == 0)
     {
       throw VtkAllocationFailure(t);
     }
