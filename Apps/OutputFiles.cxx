@@ -2,8 +2,8 @@
 
 #include "CliError.h"
 #include "Interrupt.h"
-#include "VtkMessageCapture.h"
 #include "ProgressLine.h"
+#include "VtkMessageCapture.h"
 
 #include "vtkDataArray.h"
 #include "vtkTable.h"

@@ -20,10 +20,10 @@
 #include <cmath>
 #include <csignal>
 #include <cstdio>
+#include <fcntl.h>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <fcntl.h>
 #include <poll.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -79,7 +79,7 @@ Outcome Run(const std::string& file, const std::function<std::string()>& read)
   }
 }
 
-std::string Result(const std::string& file, Outcome outcome)
+std::string Result(const std::string& file, const char* kind, Outcome outcome)
 {
   if (outcome.Kind == 'M')
   {
@@ -89,6 +89,10 @@ std::string Result(const std::string& file, Outcome outcome)
   if (outcome.Kind == 'E')
   {
     throw ReadError(outcome.Text);
+  }
+  if (outcome.Kind != 'R')
+  {
+    Fail(file, 0, std::string("cannot read ") + kind + " file (" + outcome.Text + ")");
   }
   return std::move(outcome.Text);
 }
@@ -101,89 +105,75 @@ bool InProcess()
   return value && *value && std::strcmp(value, "0") != 0;
 }
 
-void WriteAll(int fd, const char* data, std::size_t size)
+void WriteAll(int fd, const std::string& bytes)
 {
-  while (size > 0)
+  for (std::size_t done = 0; done < bytes.size();)
   {
-    const ssize_t n = write(fd, data, size);
-    if (n < 0 && errno == EINTR)
-    {
-      continue;
-    }
-    if (n <= 0)
+    const ssize_t n = write(fd, bytes.data() + done, bytes.size() - done);
+    if (n <= 0 && errno != EINTR)
     {
       return; // the parent is gone
     }
-    data += n;
-    size -= static_cast<std::size_t>(n);
+    done += n > 0 ? static_cast<std::size_t>(n) : 0;
   }
 }
-
-// A frame: its kind, its length (8 bytes, this machine's order) and its text.
-void Send(int fd, const Outcome& outcome)
-{
-  char header[9] = { outcome.Kind };
-  const std::uint64_t size = outcome.Text.size();
-  std::memcpy(header + 1, &size, 8);
-  WriteAll(fd, header, sizeof(header));
-  WriteAll(fd, outcome.Text.data(), outcome.Text.size());
-}
-
-// What a child may take: memory and seconds without input or output.
-struct Limits
-{
-  double Memory;
-  double Stall;
-};
 
 // The bytes a reader of `file` takes in: the file and, for a composite or
 // parallel XML file, the files it names (file="..." or Source="...").
 double InputBytes(const std::string& file)
 {
+  namespace fs = std::filesystem;
   std::error_code error;
-  const std::uintmax_t size = std::filesystem::file_size(file, error);
+  const auto size = fs::file_size(file, error);
   double bytes = error ? 0.0 : static_cast<double>(size);
-  const std::string extension = Lower(std::filesystem::path(file).extension().string());
-  if (error || (extension != ".vtm" && extension != ".vthb" && extension.compare(0, 4, ".pvt") != 0))
+  const std::string extension = Lower(fs::path(file).extension().string());
+  if (error ||
+    (extension != ".vtm" && extension != ".vthb" && extension.compare(0, 4, ".pvt") != 0))
   {
     return bytes;
   }
-  std::ifstream in(file, std::ios::binary);
   std::string text(static_cast<std::size_t>(std::min<std::uintmax_t>(size, 1 << 24)), '\0');
-  in.read(&text[0], static_cast<std::streamsize>(text.size()));
-  for (const char* key : { "file", "Source" })
+  std::ifstream(file, std::ios::binary).read(&text[0], static_cast<std::streamsize>(text.size()));
+  for (const std::string key : { "file", "Source" })
   {
     for (std::size_t at = text.find(key); at != std::string::npos; at = text.find(key, at + 1))
     {
-      const std::size_t equals = text.find_first_not_of(" \t\r\n", at + std::strlen(key));
+      const std::size_t equals = text.find_first_not_of(" \t\r\n", at + key.size());
       const std::size_t quote = text.find_first_not_of(" \t\r\n", equals + 1);
       if (equals < text.size() && text[equals] == '=' && quote < text.size() &&
         (text[quote] == '"' || text[quote] == '\''))
       {
-        const std::size_t end = text.find(text[quote], quote + 1);
-        const auto named = std::filesystem::path(file).parent_path() /
-          text.substr(quote + 1, end == std::string::npos ? 0 : end - quote - 1);
-        const std::uintmax_t more = std::filesystem::file_size(named, error);
-        bytes += error ? 0.0 : static_cast<double>(more);
+        const std::size_t end = std::min(text.find(text[quote], quote + 1), text.size());
+        const auto named = fs::file_size(
+          fs::path(file).parent_path() / text.substr(quote + 1, end - quote - 1), error);
+        bytes += error ? 0.0 : static_cast<double>(named);
       }
     }
   }
   return bytes;
 }
 
-// Memory: what this process could still allocate, and at most 1 GB plus 1100
-// times the input (zlib, the strongest compressor VTK's XML writers use for
-// point data, expands at most 1032 times): a count VTK believes makes it
-// allocate and fill that much. Stall: 10 s plus 1 s per 100 MB of input.
+// What a child may take. Memory: what this process could still allocate, and
+// at most 1 GB plus 1100 times the input (zlib, the strongest compressor VTK's
+// XML writers use for point data, expands at most 1032 times): a count VTK
+// believes makes it allocate and fill that much. Time without input or output:
+// 10 s plus 1 s per 100 MB of input.
+struct Limits
+{
+  double Memory;
+  double Stall;
+};
+
 Limits LimitsOf(const std::string& file)
 {
   const double input = InputBytes(file);
   return { std::min(AvailableMemory(), 1e9 + 1100 * input), 10 + input / 1e8 };
 }
 
-// The child ends with the caller and reports no crash to a fuzzer; its
-// address space may grow by `memory`. Returns the limit to restore.
-rlimit EnterChild(double memory)
+// The child ends with the caller, reports no crash to a fuzzer, prints nothing
+// (a C library's crash report: the caller reports in one line) and may grow
+// its address space by `memory`. Returns the limit and stderr to restore.
+std::pair<rlimit, int> EnterChild(double memory)
 {
 #ifdef __linux__
   prctl(PR_SET_PDEATHSIG, SIGKILL);
@@ -194,32 +184,23 @@ rlimit EnterChild(double memory)
     __sanitizer_set_death_callback(nullptr);
   }
 #endif
+  const int stderrCopy = dup(2);
+  const int null = open("/dev/null", O_WRONLY);
+  dup2(null, 2);
+  close(null);
   rlimit limit{};
   getrlimit(RLIMIT_AS, &limit);
   const rlimit saved = limit;
   long long pages = 0;
   std::ifstream("/proc/self/statm") >> pages; // the address space in use
-  const double cap = static_cast<double>(pages) * static_cast<double>(sysconf(_SC_PAGESIZE)) + memory;
+  const double cap =
+    static_cast<double>(pages) * static_cast<double>(sysconf(_SC_PAGESIZE)) + memory;
   if (pages > 0 && std::isfinite(memory) && cap < static_cast<double>(limit.rlim_cur))
   {
     limit.rlim_cur = static_cast<rlim_t>(cap);
     setrlimit(RLIMIT_AS, &limit);
   }
-  return saved;
-}
-
-// Sends the child's messages (a C library's crash report) to /dev/null, since
-// the caller reports in one line; returns a copy of the former stderr.
-int Silence()
-{
-  const int former = dup(2);
-  const int null = open("/dev/null", O_WRONLY);
-  if (null >= 0)
-  {
-    dup2(null, 2);
-    close(null);
-  }
-  return former;
+  return { saved, stderrCopy };
 }
 
 int Reap(pid_t pid)
@@ -244,87 +225,71 @@ long long Activity(pid_t pid)
   return sum;
 }
 
-// Reads the child's frames from `fd` until it ends or, `goesOn`, says 'D';
-// stops a child that neither reads nor writes for `stall` seconds (VTK 9.2's
-// legacy reader loops forever on 256 blanks).
+// Reads what the child sends on `fd` (a kind, then its text) until it ends or,
+// `goesOn`, sends 'D'; stops a child that neither reads nor writes for `stall`
+// seconds (VTK 9.2's legacy reader loops forever on 256 blanks).
 Outcome Watch(pid_t pid, int fd, double stall, bool goesOn)
 {
   using Clock = std::chrono::steady_clock;
   auto last = Clock::now();
   long long seen = -2;
-  Outcome outcome;
-  std::string header; // a frame's kind and length
-  std::uint64_t length = 0;
+  const double room = AvailableMemory();
+  std::string in;
   for (;;)
   {
     pollfd ready{ fd, POLLIN, 0 };
     const int polled = poll(&ready, 1, 1000);
-    if (polled == 0 || (polled < 0 && errno == EINTR))
-    {
-      const long long activity = Activity(pid);
-      if (activity != seen)
-      {
-        seen = activity;
-        last = Clock::now();
-      }
-      else if (activity >= 0 && std::chrono::duration<double>(Clock::now() - last).count() > stall)
-      {
-        kill(pid, SIGKILL);
-        Reap(pid);
-        return { 'F', "VTK's reader hangs: no input or output for " + std::to_string(int(stall)) + " s" };
-      }
-      continue;
-    }
     char buffer[1 << 16];
-    const ssize_t n = polled < 0 ? -1 : read(fd, buffer, sizeof(buffer));
-    if (n < 0 && errno == EINTR)
-    {
-      continue;
-    }
-    if (n <= 0)
+    const ssize_t n = polled > 0 ? read(fd, buffer, sizeof(buffer)) : -1;
+    if (n == 0)
     {
       break; // the child has ended
     }
-    for (const char* p = buffer; p < buffer + n;)
+    if (n > 0)
     {
-      if (header.empty() && *p == 'D' && goesOn)
+      in.append(buffer, static_cast<std::size_t>(n));
+      if (goesOn && in == "D")
       {
         return { 'D' };
       }
-      if (header.size() < 9)
+      if (in.size() <= room)
       {
-        header += *p++;
-        if (header.size() == 9)
-        {
-          std::memcpy(&length, header.data() + 1, 8);
-          if (length > AvailableMemory() || std::string("REM").find(header[0]) == std::string::npos)
-          {
-            kill(pid, SIGKILL);
-            Reap(pid);
-            return { 'F', "VTK's reader sent garbled data" };
-          }
-          outcome = { header[0] };
-          outcome.Text.reserve(length);
-        }
         continue;
       }
-      const std::size_t take = std::min<std::size_t>(buffer + n - p, length - outcome.Text.size());
-      outcome.Text.append(p, take);
-      p += take;
+    }
+    const long long activity = Activity(pid);
+    if (n < 0 && activity != seen)
+    {
+      seen = activity;
+      last = Clock::now();
+    }
+    else if (n > 0 ||
+      (activity >= 0 && std::chrono::duration<double>(Clock::now() - last).count() > stall))
+    {
+      kill(pid, SIGKILL);
+      Reap(pid);
+      return { 'F',
+        n > 0 ? "VTK's reader sent more than fits"
+              : "VTK's reader hangs: no input or output for " + std::to_string(int(stall)) + " s" };
     }
   }
   const int status = Reap(pid);
-  if (header.size() == 9 && outcome.Text.size() == length)
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 0 && !in.empty() &&
+    std::string("REM").find(in[0]) != std::string::npos)
   {
-    return outcome;
+    const char kind = in[0];
+    in.erase(0, 1);
+    return { kind, std::move(in) };
   }
   if (WIFSIGNALED(status))
   {
     const int signal = WTERMSIG(status);
-    return { 'F', signal == SIGKILL ? std::string("VTK's reader was killed")
-                                    : std::string("VTK's reader crashed: ") + strsignal(signal) };
+    return { 'F',
+      signal == SIGKILL ? std::string("VTK's reader was killed")
+                        : std::string("VTK's reader crashed: ") + strsignal(signal) };
   }
-  return { 'X', "VTK's reader ended with exit status " + std::to_string(WEXITSTATUS(status)), status };
+  return { 'X', "VTK's reader ended with exit status " + std::to_string(WEXITSTATUS(status)),
+    status };
 }
 
 // While the child goes on, signals sent to this process are for it (a
@@ -349,6 +314,27 @@ extern "C" void Forward(int signal, siginfo_t* info, void*)
   _exit(WIFEXITED(status) ? WEXITSTATUS(status) : 1);
 }
 
+// A pipe whose ends close on exec (a host's other children must not hold
+// them) and a child; pid -1 when either cannot be made.
+pid_t Fork(int fds[2])
+{
+  if (InProcess() || pipe(fds) != 0)
+  {
+    return -1;
+  }
+  fcntl(fds[0], F_SETFD, FD_CLOEXEC);
+  fcntl(fds[1], F_SETFD, FD_CLOEXEC);
+  std::cout.flush(); // or both processes would write what is buffered
+  std::fflush(nullptr);
+  const pid_t pid = fork();
+  close(pid == 0 ? fds[0] : fds[1]);
+  if (pid < 0)
+  {
+    close(fds[0]);
+  }
+  return pid;
+}
+
 #endif
 
 } // namespace
@@ -358,38 +344,24 @@ std::string ReadIsolated(
 {
 #ifdef FLOWRECON_CHILD_READ
   int fds[2];
-  if (!InProcess() && pipe(fds) == 0)
+  const Limits limits = LimitsOf(file);
+  const pid_t pid = Fork(fds);
+  if (pid == 0)
   {
-    fcntl(fds[0], F_SETFD, FD_CLOEXEC);
-    fcntl(fds[1], F_SETFD, FD_CLOEXEC);
-    const Limits limits = LimitsOf(file);
-    const pid_t pid = fork();
-    if (pid == 0)
-    {
-      close(fds[0]);
-      EnterChild(limits.Memory);
-      Silence();
-      Send(fds[1], Run(file, read));
-      _exit(0);
-    }
-    close(fds[1]);
-    Outcome outcome;
-    if (pid > 0)
-    {
-      outcome = Watch(pid, fds[0], limits.Stall, false);
-    }
+    EnterChild(limits.Memory);
+    const Outcome outcome = Run(file, read);
+    WriteAll(fds[1], std::string(1, outcome.Kind));
+    WriteAll(fds[1], outcome.Text);
+    _exit(0);
+  }
+  if (pid > 0)
+  {
+    Outcome outcome = Watch(pid, fds[0], limits.Stall, false);
     close(fds[0]);
-    if (outcome.Kind == 'F' || outcome.Kind == 'X')
-    {
-      Fail(file, 0, std::string("cannot read ") + kind + " file (" + outcome.Text + ")");
-    }
-    if (pid > 0)
-    {
-      return Result(file, std::move(outcome));
-    }
+    return Result(file, kind, std::move(outcome));
   }
 #endif
-  return Result(file, Run(file, read));
+  return Result(file, kind, Run(file, read));
 }
 
 void ReadThenGoOnInChild(
@@ -397,67 +369,52 @@ void ReadThenGoOnInChild(
 {
 #ifdef FLOWRECON_CHILD_READ
   int fds[2];
-  if (!InProcess() && pipe(fds) == 0)
+  const Limits limits = LimitsOf(file);
+  const pid_t pid = Fork(fds);
+  if (pid == 0)
   {
-    fcntl(fds[0], F_SETFD, FD_CLOEXEC);
-    fcntl(fds[1], F_SETFD, FD_CLOEXEC);
-    const Limits limits = LimitsOf(file);
-    std::cout.flush(); // or both processes would write what is buffered
-    std::fflush(nullptr);
-    const pid_t pid = fork();
-    if (pid == 0)
+    const auto saved = EnterChild(limits.Memory);
+    const auto done = [&]() {
+      setrlimit(RLIMIT_AS, &saved.first);
+      dup2(saved.second, 2);
+      close(saved.second);
+      WriteAll(fds[1], "D");
+      close(fds[1]);
+    };
+    try
     {
-      close(fds[0]);
-      const rlimit limit = EnterChild(limits.Memory);
-      const int stderrCopy = Silence();
-      const auto done = [&]() {
-        setrlimit(RLIMIT_AS, &limit);
-        dup2(stderrCopy, 2);
-        close(stderrCopy);
-        WriteAll(fds[1], "D", 1);
-        close(fds[1]);
-      };
-      try
-      {
-        read();
-      }
-      catch (...)
-      {
-        done();
-        throw;
-      }
+      read();
+    }
+    catch (...)
+    {
       done();
-      return;
+      throw;
     }
-    close(fds[1]);
-    if (pid > 0)
+    done();
+    return;
+  }
+  if (pid > 0)
+  {
+    Child = pid;
+    struct sigaction forward = {}, former[4];
+    forward.sa_sigaction = Forward;
+    forward.sa_flags = SA_SIGINFO | SA_RESTART;
+    const int signals[4] = { SIGINT, SIGTERM, SIGHUP, SIGQUIT };
+    for (int i = 0; i < 4; ++i)
     {
-      Child = pid;
-      struct sigaction forward = {}, former[4];
-      forward.sa_sigaction = Forward;
-      forward.sa_flags = SA_SIGINFO | SA_RESTART;
-      const int signals[4] = { SIGINT, SIGTERM, SIGHUP, SIGQUIT };
-      for (int i = 0; i < 4; ++i)
-      {
-        sigaction(signals[i], &forward, &former[i]);
-      }
-      const Outcome outcome = Watch(pid, fds[0], limits.Stall, true);
-      close(fds[0]);
-      if (outcome.Kind == 'D')
-      {
-        EndAs(Reap(pid));
-      }
-      if (outcome.Kind == 'X')
-      {
-        EndAs(outcome.Status);
-      }
-      for (int i = 0; i < 4; ++i)
-      {
-        sigaction(signals[i], &former[i], nullptr);
-      }
-      Fail(file, 0, std::string("cannot read ") + kind + " file (" + outcome.Text + ")");
+      sigaction(signals[i], &forward, &former[i]);
     }
+    const Outcome outcome = Watch(pid, fds[0], limits.Stall, true);
     close(fds[0]);
+    if (outcome.Kind == 'D' || outcome.Kind == 'X')
+    {
+      EndAs(outcome.Kind == 'D' ? Reap(pid) : outcome.Status);
+    }
+    for (int i = 0; i < 4; ++i)
+    {
+      sigaction(signals[i], &former[i], nullptr);
+    }
+    Result(file, kind, outcome);
   }
 #endif
   read();

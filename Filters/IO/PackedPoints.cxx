@@ -72,14 +72,14 @@ void PutVariant(Packer& out, const vtkVariant& v)
   const unsigned type = v.GetType();
   const bool isUnsigned = type == VTK_UNSIGNED_CHAR || type == VTK_UNSIGNED_SHORT ||
     type == VTK_UNSIGNED_INT || type == VTK_UNSIGNED_LONG || type == VTK_UNSIGNED_LONG_LONG;
-  const char kind = v.IsString() ? 's'
+  const char kind = v.IsString()  ? 's'
     : v.IsFloat() || v.IsDouble() ? 'd'
     : !v.IsNumeric()              ? 'n'
     : isUnsigned                  ? 'u'
                                   : 'i';
   out.Put(kind);
   out.Put(type);
-  kind == 's' ? out.PutText(v.ToString().c_str())
+  kind == 's'     ? out.PutText(v.ToString().c_str())
     : kind == 'd' ? out.Put(v.ToDouble())
     : kind == 'u' ? out.Put(v.ToTypeUInt64())
     : kind == 'i' ? out.Put(v.ToTypeInt64())
@@ -150,8 +150,8 @@ std::string PackPoints(const std::vector<double>& xyz, vtkPointData* pointData)
   return std::move(out.Bytes);
 }
 
-void UnpackPoints(
-  const std::string& file, const std::string& bytes, std::vector<double>& xyz, vtkPointData* pointData)
+void UnpackPoints(const std::string& file, const std::string& bytes, std::vector<double>& xyz,
+  vtkPointData* pointData)
 {
   Unpacker in{ file, bytes };
   const auto coordinates = in.Get<std::uint64_t>();

@@ -18,8 +18,8 @@ std::string PackPoints(const std::vector<double>& xyz, vtkPointData* pointData);
 
 /// The packed points into `xyz` and their arrays into `pointData`; throws
 /// ReadError naming `file` if the bytes do not hold them.
-void UnpackPoints(
-  const std::string& file, const std::string& bytes, std::vector<double>& xyz, vtkPointData* pointData);
+void UnpackPoints(const std::string& file, const std::string& bytes, std::vector<double>& xyz,
+  vtkPointData* pointData);
 
 } // namespace reader
 } // namespace flowrecon

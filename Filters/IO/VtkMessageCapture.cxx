@@ -74,7 +74,8 @@ public:
   {
     const std::string t = VtkMessageText(text);
     this->Keep(t);
-    if (!t.empty() && std::find(this->Warnings.begin(), this->Warnings.end(), t) == this->Warnings.end())
+    if (!t.empty() &&
+      std::find(this->Warnings.begin(), this->Warnings.end(), t) == this->Warnings.end())
     {
       this->Warnings.push_back(t);
     }
@@ -168,7 +169,8 @@ void UpdateCaptured(const std::string& file, vtkAlgorithm* reader, const char* k
   if (!ok || reader->GetErrorCode() != 0 || !first.empty() || !reader->GetOutputDataObject(0))
   {
     Fail(file, 0,
-      std::string("cannot read ") + kind + " file" + (first.empty() ? std::string() : " (" + first + ")"));
+      std::string("cannot read ") + kind + " file" +
+        (first.empty() ? std::string() : " (" + first + ")"));
   }
 }
 

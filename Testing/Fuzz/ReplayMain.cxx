@@ -1,8 +1,8 @@
 // Replays a libFuzzer target's committed inputs without libFuzzer (any
 // compiler): the files given and those of the folders given (README.md
-// excepted; a path that does not exist is skipped), in name order, each once. A finding is a crash, a sanitizer
-// report or an abort of the target, as under libFuzzer; ctest's timeout stands
-// for libFuzzer's.
+// excepted; a path that does not exist is skipped), in name order, each once. A finding is a crash,
+// a sanitizer report or an abort of the target, as under libFuzzer; ctest's timeout stands for
+// libFuzzer's.
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>

@@ -83,24 +83,32 @@ int main(int argc, char* argv[])
 
   // What would end the caller ends the child: one line each. (A crash under
   // AddressSanitizer ends the child with its own exit status.)
-  ExpectRefusal([]() -> std::string { std::abort(); }, ": cannot read test file (VTK's reader crashed: Aborted)");
-  ExpectRefusal([]() -> std::string {
-    std::raise(SIGSEGV);
-    return std::string();
-  }, ": cannot read test file (VTK's reader ");
-  ExpectRefusal([]() -> std::string { _exit(3); }, ": cannot read test file (VTK's reader ended with exit status 3)");
+  ExpectRefusal([]() -> std::string { std::abort(); },
+    ": cannot read test file (VTK's reader crashed: Aborted)");
+  ExpectRefusal(
+    []() -> std::string {
+      std::raise(SIGSEGV);
+      return std::string();
+    },
+    ": cannot read test file (VTK's reader ");
+  ExpectRefusal([]() -> std::string { _exit(3); },
+    ": cannot read test file (VTK's reader ended with exit status 3)");
   // More than 1 GB + 1100 times the input (15 bytes).
-  ExpectRefusal([]() {
-    std::vector<char> huge(std::size_t(3) << 30, 1);
-    return std::string(huge.data(), 1);
-  }, ": out of memory");
+  ExpectRefusal(
+    []() {
+      std::vector<char> huge(std::size_t(3) << 30, 1);
+      return std::string(huge.data(), 1);
+    },
+    ": out of memory");
   ExpectRefusal([]() -> std::string { throw std::bad_alloc(); }, ": out of memory");
   // A loop without input or output is stopped after 10 s.
-  ExpectRefusal([]() -> std::string {
-    for (volatile unsigned long i = 0;; i = i + 1)
-    {
-    }
-  }, ": cannot read test file (VTK's reader hangs: no input or output for 10 s)");
+  ExpectRefusal(
+    []() -> std::string {
+      for (volatile unsigned long i = 0;; i = i + 1)
+      {
+      }
+    },
+    ": cannot read test file (VTK's reader hangs: no input or output for 10 s)");
   CHECK(getpid() == caller);
 
   // FLOWRECON_READ_IN_PROCESS: the read runs here (to debug a reader).
