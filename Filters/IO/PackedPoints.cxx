@@ -29,10 +29,14 @@ struct Packer
   {
     this->Bytes.append(reinterpret_cast<const char*>(&value), sizeof(value));
   }
-  void PutText(const char* text) // -1 for none
+  void PutText(const std::string& text) // NUL bytes included
   {
-    this->Put<std::int64_t>(text ? static_cast<std::int64_t>(std::strlen(text)) : -1);
-    this->Bytes.append(text ? text : "");
+    this->Put<std::int64_t>(static_cast<std::int64_t>(text.size()));
+    this->Bytes.append(text);
+  }
+  void PutText(const char* text) // length -1 for none
+  {
+    text ? this->PutText(std::string(text)) : this->Put<std::int64_t>(-1);
   }
 };
 
@@ -79,7 +83,7 @@ void PutVariant(Packer& out, const vtkVariant& v)
                                   : 'i';
   out.Put(kind);
   out.Put(type);
-  kind == 's'     ? out.PutText(v.ToString().c_str())
+  kind == 's'     ? out.PutText(v.ToString())
     : kind == 'd' ? out.Put(v.ToDouble())
     : kind == 'u' ? out.Put(v.ToTypeUInt64())
     : kind == 'i' ? out.Put(v.ToTypeInt64())
@@ -129,7 +133,7 @@ std::string PackPoints(const std::vector<double>& xyz, vtkPointData* pointData)
     {
       for (vtkIdType v = 0; v < values; ++v)
       {
-        out.PutText(strings->GetValue(v).c_str());
+        out.PutText(strings->GetValue(v));
       }
     }
     else if (auto* variants = vtkVariantArray::SafeDownCast(array))
