@@ -7,7 +7,7 @@
 #include "FlowComplexConversion.h"
 #include "FlowComplexFromVTK.h"
 #include "FlowReconNames.h"
-#include "MessageCapture.h"
+#include "VtkMessageCapture.h"
 #include "OutputFiles.h"
 #include "PhaseClock.h"
 #include "ReconstructionReport.h"
@@ -180,7 +180,7 @@ Reconstruction FromComplex(const Arguments& args, vtkMultiBlockDataSet* complex,
   r.Topology = vtkTable::SafeDownCast(reconstruction->GetOutputDataObject(3));
   r.Limit = reconstruction->GetMaximumThreshold();
   clock("flow complex file, simplification, reconstruction");
-  for (const std::string& w : VtkWarnings())
+  for (const std::string& w : RunMessages().Warnings())
   {
     std::cerr << "warning: " << w << "\n";
   }
