@@ -23,6 +23,8 @@
 
 namespace flowrecon
 {
+struct Patch;
+
 namespace internal
 {
 
@@ -87,6 +89,13 @@ private:
   void TraceUnstableManifolds(); ///< BuildUnstableManifolds.cpp: ends of 2-3 arcs
   void AssembleHasseDiagram();   ///< BuildHasseDiagram.cpp: nodes, 2-3 arcs
   void BuildStableCones();       ///< BuildStableCones.cpp: index 3
+
+  // The steps of WalkStablePatches.
+  struct PatchBatch;
+  void WalkPatches(std::size_t begin, PatchBatch& batch) const; ///< one chunk, in parallel
+  void MergePatches(PatchBatch& batch);            ///< its 1-2 arcs (and geometry), in order
+  void ReserveArcsFor(const PatchBatch& batch);    ///< room for its arcs, or a refusal
+  void AppendPatchGeometry(std::size_t i, const Patch& patch); ///< the triangles of patch i
 
   void ScaleBack();
   void LowerPendingBounds();
