@@ -97,6 +97,12 @@ private:
   void ReserveArcsFor(const PatchBatch& batch);    ///< room for its arcs, or a refusal
   void AppendPatchGeometry(std::size_t i, const Patch& patch); ///< the triangles of patch i
 
+  // The steps of TraceUnstableManifolds.
+  struct FlowLineWalk;
+  std::vector<std::int32_t> MaximumOfCells() const; ///< per Delaunay cell: its maximum, or -1
+  void RecordFlowLines(FlowLineWalk& walk);         ///< with polylines, in facet order
+  void TraceFlowLines(std::size_t i, FlowLineWalk& walk); ///< the two of index-2 point i
+
   void ScaleBack();
   void LowerPendingBounds();
   /// The node of a critical simplex (ids into coords): from coords, or in a
