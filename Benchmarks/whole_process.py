@@ -10,7 +10,7 @@ ratios. Prints a Markdown table.
 
   /usr/bin/python3 Benchmarks/whole_process.py [--sizes 1e5 1e6]
       [--shapes cube sphere torus bunny] [--runs 3] [--warmup 1]
-      [--afsr-timeout 1800] [--diagram] [--work DIR]
+      [--timeout 1800] [--diagram] [--work DIR]
 
 Clouds (seeded, i.i.d.): uniform in a cube; uniform on a sphere; area-uniform on
 a torus surface (R 1, r 0.35); area-uniform on the Stanford bunny's triangles
@@ -19,7 +19,8 @@ Betti numbers `reconstruct` prints with the thresholds it chose, and for the
 advancing front its surface's Euler characteristic, components and boundary
 edges; "Betti numbers" is the time of `--timings`' "Betti numbers from the Hasse
 diagram" (both t_p candidates), "share" its part of the run's phases. An
-advancing front run past --afsr-timeout is stopped and shown as "–".
+advancing front or `reconstruct` run past --timeout is stopped, shown as "–" and
+not run again on that cloud.
 --diagram adds `flowrecon diagram` against GUDHI's alpha-complex persistence
 (simplex tree + compute_persistence over Z/2) of the same points.
 """
@@ -187,11 +188,16 @@ def ratio(a, b):
     return "%.1f" % median(pairs) if pairs else "–"
 
 
+def stopped(error, timeout):
+    return "– (%s after %g s)" % (error, timeout) if error == "timeout" else "– (%s)" % error
+
+
 def whole_process(shape, n, xyz, args):
-    """One cloud: the three processes in turn, round after round."""
+    """One cloud: the three processes in turn, round after round; a peer that fails
+    or runs past --timeout is left out of the later rounds."""
     delaunay, afsr, ours, betti, share = [], [], [], [], []
     peaks = {"delaunay": [], "afsr": [], "ours": []}
-    answer, afsr_answer, afsr_error, error = "?", "–", None, None
+    answer, afsr_error, error = "?", None, None
     off, vtu = xyz[:-4] + "_afsr.off", xyz[:-4] + ".vtu"
     for round_ in range(args.warmup + args.runs):
         keep = round_ >= args.warmup
@@ -201,32 +207,28 @@ def whole_process(shape, n, xyz, args):
             peaks["delaunay"].append(kb)
         if afsr_error is None:
             t, kb, _, afsr_error = timed([os.path.join(BIN, "AdvancingFrontBaseline"), xyz, off],
-                                         timeout=args.afsr_timeout)
+                                         timeout=args.timeout)
             if keep:
                 afsr.append(t)
                 peaks["afsr"].append(kb)
-        t, kb, out, error = timed([os.path.join(BIN, "flowrecon"), "reconstruct", xyz, "-o", vtu,
-                                   "--timings"])
-        if error:
-            break
-        if keep:
-            ours.append(t)
-            peaks["ours"].append(kb)
-            b, s = betti_seconds(out)
-            betti.append(b)
-            share.append(s)
-            answer = flowrecon_answer(shape, out)
+        if error is None:
+            t, kb, out, error = timed([os.path.join(BIN, "flowrecon"), "reconstruct", xyz, "-o",
+                                       vtu, "--timings"], timeout=args.timeout)
+            if keep and error is None:
+                ours.append(t)
+                peaks["ours"].append(kb)
+                b, s = betti_seconds(out)
+                betti.append(b)
+                share.append(s)
+                answer = flowrecon_answer(shape, out)
     if afsr_error is None:
         afsr_answer = off_answer(shape, off)
     else:
-        afsr_answer = "– (%s after %g s)" % (afsr_error, args.afsr_timeout) \
-            if afsr_error == "timeout" else "– (%s)" % afsr_error
-        afsr = []
+        afsr_answer, afsr, peaks["afsr"] = stopped(afsr_error, args.timeout), [], []
+    if error is not None:
+        answer, ours, peaks["ours"], betti, share = stopped(error, args.timeout), [], [], [], []
     for path in (off, vtu):
         os.remove(path) if os.path.exists(path) and n > 2e6 else None
-    if error:
-        return "| %s | %d | %s | %s | %s | %s | | | | | | |" % (
-            shape, n, error, afsr_answer, span(delaunay), span(afsr))
     return "| %s | %d | %s | %s | %s | %s | %s | %s | %s | %s / %s / %s | %s | %s |" % (
         shape, n, answer, afsr_answer, span(delaunay), span(afsr), span(ours),
         ratio(ours, delaunay), ratio(ours, afsr),
@@ -240,8 +242,8 @@ def main():
     ap.add_argument("--shapes", nargs="+", default=["cube", "sphere", "torus", "bunny"])
     ap.add_argument("--runs", type=int, default=3, help="measured rounds per cloud")
     ap.add_argument("--warmup", type=int, default=1, help="rounds run first and not counted")
-    ap.add_argument("--afsr-timeout", type=float, default=1800,
-                    help="seconds after which an advancing front run is stopped")
+    ap.add_argument("--timeout", type=float, default=1800,
+                    help="seconds after which an advancing front or reconstruct run is stopped")
     ap.add_argument("--diagram", action="store_true")
     ap.add_argument("--work", default=os.path.join(ROOT, "build", "bench"))
     args = ap.parse_args()
