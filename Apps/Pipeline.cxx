@@ -22,13 +22,28 @@
 #include "vtkXMLMultiBlockDataReader.h"
 
 #include <cmath>
+#include <csignal>
+#include <cstring>
 #include <filesystem>
+#include <iostream>
 
 namespace flowrecon::cli
 {
 
 namespace
 {
+
+// The line for a command whose process died of `signal` where it could not
+// speak (in the child that went on after reading a stored flow complex).
+void SayDeath(int signal)
+{
+  std::cerr << "flowrecon: "
+            << (signal == SIGKILL
+                   ? std::string("killed (SIGKILL), as the system does when memory runs out")
+                   : "crashed (" + std::string(strsignal(signal)) +
+                     "); please report it with the input")
+            << std::endl;
+}
 
 // The output of `reader` run on `file`, whose own error message is the failure.
 vtkDataObject* Read(vtkPointCloudReader* reader, const std::string& file)
@@ -94,7 +109,7 @@ vtkSmartPointer<vtkMultiBlockDataSet> LoadStoredFlowComplex(const std::string& f
     // VTK's reader crashes on some corrupt files: it reads in a child process
     // that then goes on with the command, watched by this one (IsolatedRead.h).
     reader::ReadThenGoOnInChild(
-      file, "VTK XML", [&]() { reader::UpdateCaptured(file, reader, "VTK XML"); });
+      file, "VTK XML", [&]() { reader::UpdateCaptured(file, reader, "VTK XML"); }, SayDeath);
   }
   catch (const reader::ReadError& e)
   {

@@ -295,13 +295,23 @@ Outcome Watch(pid_t pid, int fd, double stall, bool goesOn)
 // While the child goes on, signals sent to this process are for it (a
 // terminal's Ctrl-C reaches both already).
 pid_t Child = 0;
+volatile std::sig_atomic_t Forwarded = 0;
 
 extern "C" void Forward(int signal, siginfo_t* info, void*)
 {
   if (info->si_code == SI_USER || info->si_code == SI_QUEUE)
   {
+    Forwarded = signal;
     kill(Child, signal);
   }
+}
+
+// Signals someone asked for (Ctrl-C, kill, a closed pipe) need no word; the
+// others mean the command crashed or was killed, which its child cannot say.
+bool Unasked(int signal)
+{
+  return signal != Forwarded && signal != SIGINT && signal != SIGTERM && signal != SIGHUP &&
+    signal != SIGPIPE;
 }
 
 [[noreturn]] void EndAs(int status)
@@ -364,8 +374,8 @@ std::string ReadIsolated(
   return Result(file, kind, Run(file, read));
 }
 
-void ReadThenGoOnInChild(
-  const std::string& file, const char* kind, const std::function<void()>& read)
+void ReadThenGoOnInChild(const std::string& file, const char* kind,
+  const std::function<void()>& read, const std::function<void(int)>& died)
 {
 #ifdef FLOWRECON_CHILD_READ
   int fds[2];
@@ -408,7 +418,12 @@ void ReadThenGoOnInChild(
     close(fds[0]);
     if (outcome.Kind == 'D' || outcome.Kind == 'X')
     {
-      EndAs(outcome.Kind == 'D' ? Reap(pid) : outcome.Status);
+      const int status = outcome.Kind == 'D' ? Reap(pid) : outcome.Status;
+      if (WIFSIGNALED(status) && Unasked(WTERMSIG(status)) && died)
+      {
+        died(WTERMSIG(status));
+      }
+      EndAs(status);
     }
     for (int i = 0; i < 4; ++i)
     {

@@ -34,9 +34,12 @@ std::string ReadIsolated(
 /// threads): runs `read` in a child process under the same limits, which then
 /// goes on with the program while this one waits and ends as it ends; returns
 /// in the child only. Throws ReadError here when the child crashes or stalls
-/// inside `read`; read's own exceptions are the child's.
-void ReadThenGoOnInChild(
-  const std::string& file, const char* kind, const std::function<void()>& read);
+/// inside `read`; read's own exceptions are the child's. When the child, gone
+/// on, dies of a signal this process did not forward (a crash, the system's
+/// out-of-memory killer), `died(signal)` runs here before this process dies of
+/// the same signal: the child can no longer say why it ended.
+void ReadThenGoOnInChild(const std::string& file, const char* kind,
+  const std::function<void()>& read, const std::function<void(int)>& died);
 
 } // namespace reader
 } // namespace flowrecon

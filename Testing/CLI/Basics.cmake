@@ -126,6 +126,14 @@ if (FLOWRECON_TIMEOUT_PROGRAM)
   set_tests_properties(cli.Interrupt PROPERTIES TIMEOUT 120)
 endif ()
 
+# The child that goes on after reading a stored flow complex dies of a signal:
+# the waiting parent says so in one line (needs Linux's /proc to find the child).
+if (CMAKE_SYSTEM_NAME STREQUAL "Linux")
+  add_test(NAME cli.ChildDeath
+    COMMAND sh "${CMAKE_CURRENT_LIST_DIR}/RunChildDeath.sh" "$<TARGET_FILE:flowrecon>" "${_w}")
+  set_tests_properties(cli.ChildDeath PROPERTIES TIMEOUT 300)
+endif ()
+
 # Under an address-space limit a run that would not fit stops with the memory
 # guard's one line (estimate, what is available, what to do), not an abort.
 add_test(NAME cli.MemoryGuard
