@@ -2,7 +2,9 @@
 
 #include "vtkClientServerInterpreter.h"
 #include "vtkClientServerInterpreterInitializer.h"
+#include "vtkClientServerStream.h"
 #include "vtkFlowReconDisplayInitializationHelper.h"
+#include "vtkFlowReconWarningLabelRepresentation.h"
 #include "vtkSMSettings.h"
 
 namespace
@@ -12,9 +14,25 @@ vtkObjectBase* NewHelper(void*)
   return vtkFlowReconDisplayInitializationHelper::New();
 }
 
+vtkObjectBase* NewWarningLabels(void*)
+{
+  return vtkFlowReconWarningLabelRepresentation::New();
+}
+
+// The label representation adds no method to vtkDataLabelRepresentation: its
+// commands are that class's (what a wrapped subclass would forward to).
+int WarningLabelsCommand(vtkClientServerInterpreter* interpreter, vtkObjectBase* object,
+  const char* method, const vtkClientServerStream& message, vtkClientServerStream& result, void*)
+{
+  return interpreter->CallCommandFunction(
+    "vtkDataLabelRepresentation", object, method, message, result);
+}
+
 void RegisterHelper(vtkClientServerInterpreter* interpreter)
 {
   interpreter->AddNewInstanceFunction("vtkFlowReconDisplayInitializationHelper", NewHelper);
+  interpreter->AddNewInstanceFunction("vtkFlowReconWarningLabelRepresentation", NewWarningLabels);
+  interpreter->AddCommandFunction("vtkFlowReconWarningLabelRepresentation", WarningLabelsCommand);
 }
 
 // Settings ".array_lookup_tables.<array>": vtkSMTransferFunctionManager applies
