@@ -3,6 +3,7 @@
 #include "vtkDataArray.h"
 #include "vtkDataSet.h"
 #include "vtkLabeledDataMapper.h"
+#include "vtkMath.h"
 #include "vtkMaskPoints.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -13,8 +14,6 @@
 #include <map>
 #include <sstream>
 #include <string>
-#include <tuple>
-#include <utility>
 #include <vector>
 
 vtkStandardNewMacro(vtkFlowReconWarningLabelRepresentation);
@@ -41,23 +40,44 @@ vtkStringArray* vtkFlowReconWarningLabelRepresentation::NewLabels(vtkDataSet* wa
   vtkDataArray* threshold = pd ? pd->GetArray("Threshold") : nullptr;
   vtkDataArray* dimension = pd ? pd->GetArray("Dimension") : nullptr;
   vtkDataArray* change = pd ? pd->GetArray("Change") : nullptr;
-  vtkDataArray* node = pd ? pd->GetArray("NodeId") : nullptr;
+  vtkDataArray* spacing = pd ? pd->GetArray("Spacing") : nullptr;
   if (!threshold || !dimension || !change)
   {
     return nullptr;
   }
   const vtkIdType n = warnings->GetNumberOfPoints();
-  // One label per place (node and t_r), on its first point: the sum of the
-  // changes of each dimension there.
-  using Place = std::pair<double, double>;
-  std::map<Place, vtkIdType> first;
-  std::map<vtkIdType, std::map<int, long long>> sums;
+  // One label per place, on its first point: a point within the sphere of an
+  // earlier one (radius Spacing, as drawn) joins its label, whose text would
+  // otherwise be drawn over (a handful of places; past a few thousand, one per point).
+  const bool cluster = spacing && n <= 2000;
+  std::vector<vtkIdType> owners;
+  std::map<vtkIdType, std::map<double, std::map<int, long long>>> sums;
   for (vtkIdType i = 0; i < n; ++i)
   {
-    const Place place{ node ? node->GetComponent(i, 0) : static_cast<double>(i),
-      threshold->GetComponent(i, 0) };
-    const vtkIdType owner = first.emplace(place, i).first->second;
-    sums[owner][static_cast<int>(dimension->GetComponent(i, 0))] +=
+    double x[3];
+    warnings->GetPoint(i, x);
+    vtkIdType owner = i;
+    for (const vtkIdType j : owners)
+    {
+      if (!cluster)
+      {
+        break;
+      }
+      double y[3];
+      warnings->GetPoint(j, y);
+      const double d2 = vtkMath::Distance2BetweenPoints(x, y);
+      const double r = spacing->GetComponent(j, 0);
+      if (d2 <= r * r)
+      {
+        owner = j;
+        break;
+      }
+    }
+    if (owner == i)
+    {
+      owners.push_back(i);
+    }
+    sums[owner][threshold->GetComponent(i, 0)][static_cast<int>(dimension->GetComponent(i, 0))] +=
       static_cast<long long>(std::llround(change->GetComponent(i, 0)));
   }
   auto* labels = vtkStringArray::New();
@@ -71,15 +91,21 @@ vtkStringArray* vtkFlowReconWarningLabelRepresentation::NewLabels(vtkDataSet* wa
       labels->SetValue(i, "");
       continue;
     }
+    // "t_r 2.54: b1 -1, b2 -1", a line per t_r, the nearest first.
     std::ostringstream text;
     text.precision(3);
-    text << "t_r " << threshold->GetComponent(i, 0) << ":";
-    const char* separator = " ";
-    for (const auto& dimensionSum : it->second)
+    const char* line = "";
+    for (const auto& atThreshold : it->second)
     {
-      text << separator << "b" << dimensionSum.first << " " << std::showpos << dimensionSum.second
-           << std::noshowpos;
-      separator = ", ";
+      text << line << "t_r " << atThreshold.first << ":";
+      const char* separator = " ";
+      for (const auto& dimensionSum : atThreshold.second)
+      {
+        text << separator << "b" << dimensionSum.first << " " << std::showpos
+             << dimensionSum.second << std::noshowpos;
+        separator = ", ";
+      }
+      line = "\n";
     }
     labels->SetValue(i, text.str());
   }

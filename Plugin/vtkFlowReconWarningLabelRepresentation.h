@@ -13,10 +13,12 @@ class vtkStringArray;
  *
  * The Under Sampling output of Flow Reconstruction (and of Reconstruct Point
  * Cloud) has one point per change of the Betti numbers just above t_r, with
- * the point data Threshold, Dimension, Change and NodeId. This representation
- * labels each place "t_r 2.31: b1 -1" (the t_r above which the k-th Betti
- * number changes, and by how much; the changes of one node at one t_r in one
- * label, on its first point) and draws nothing else. It is ParaView's
+ * the point data Threshold, Dimension, Change, Spacing and NodeId. This
+ * representation labels each place "t_r 2.31: b1 -1" (the t_r above which the
+ * k-th Betti number changes, and by how much) and draws nothing else. The
+ * points within the sphere (radius Spacing) of an earlier one share its
+ * label, on that point, a line per t_r: their texts would be drawn over
+ * each other. It is ParaView's
  * vtkDataLabelRepresentation (properties, delivery, rendering) with the label
  * text made from those arrays, which no label format of one array can say.
  *
@@ -33,8 +35,8 @@ public:
   vtkTypeMacro(vtkFlowReconWarningLabelRepresentation, vtkDataLabelRepresentation);
 
   /// The label of each point of `warnings` ("" for a point whose change is
-  /// told on an earlier point), in a string array named Label; nullptr when
-  /// the arrays are missing.
+  /// told on an earlier point's label), in a string array named Label;
+  /// nullptr when the arrays are missing.
   static vtkStringArray* NewLabels(vtkDataSet* warnings);
 
 protected:
