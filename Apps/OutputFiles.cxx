@@ -2,8 +2,8 @@
 
 #include "CliError.h"
 #include "Interrupt.h"
-#include "MessageCapture.h"
 #include "ProgressLine.h"
+#include "VtkMessageCapture.h"
 
 #include "vtkDataArray.h"
 #include "vtkTable.h"
@@ -79,7 +79,7 @@ void WriteXML(vtkXMLWriter* writer, vtkDataObject* data, const std::string& path
   writer->EncodeAppendedDataOff();
   writer->SetCompressorTypeToLZ4();
   writer->AddObserver(vtkCommand::ProgressEvent, ProgressLine::Make()); // Ctrl-C
-  ClearVtkError();
+  RunMessages().Clear();
   errno = 0;
   const int written = writer->Write();
   if (InterruptRequested())
@@ -90,7 +90,7 @@ void WriteXML(vtkXMLWriter* writer, vtkDataObject* data, const std::string& path
   }
   if (!written || writer->GetErrorCode() != 0)
   {
-    const std::string error = FirstVtkError();
+    const std::string error = RunMessages().FirstError();
     throw WriteFailure(path, error.empty() ? "unknown error" : error);
   }
 }

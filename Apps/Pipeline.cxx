@@ -3,12 +3,16 @@
 #include "FlowComplexConversion.h"
 #include "FlowReconNames.h"
 #include "Interrupt.h"
-#include "MessageCapture.h"
+#include "IsolatedRead.h"
 #include "OutputFiles.h"
+#include "PointCloudParsing.h" // reader::ReadError
+#include "VtkMessageCapture.h"
 #include "vtkFlowComplex.h"
 #include "vtkPointCloudReader.h"
 
 #include "vtkCommand.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkDataSet.h"
 #include "vtkExecutive.h"
 #include "vtkFieldData.h"
 #include "vtkMultiBlockDataSet.h"
@@ -16,6 +20,9 @@
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkXMLMultiBlockDataReader.h"
+
+#include <cmath>
+#include <filesystem>
 
 namespace flowrecon::cli
 {
@@ -35,6 +42,28 @@ vtkDataObject* Read(vtkPointCloudReader* reader, const std::string& file)
   return reader->GetOutputDataObject(0);
 }
 
+// A stored complex's points must be finite, as a cloud's are: the core
+// triangulates its samples again.
+void RequireFinitePoints(const std::string& file, vtkMultiBlockDataSet* data)
+{
+  vtkSmartPointer<vtkCompositeDataIterator> it;
+  it.TakeReference(data->NewIterator());
+  vtkIdType next = 0;
+  for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+  {
+    auto* leaf = vtkDataSet::SafeDownCast(it->GetCurrentDataObject());
+    for (vtkIdType id = 0; leaf && id < leaf->GetNumberOfPoints(); ++id, ++next)
+    {
+      double p[3];
+      leaf->GetPoint(id, p);
+      if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+      {
+        throw Failure(file + ": point " + std::to_string(next) + " has a non-finite coordinate");
+      }
+    }
+  }
+}
+
 } // namespace
 
 std::vector<Point3> ReadSamples(const std::string& file)
@@ -51,20 +80,42 @@ std::vector<Point3> ReadSamples(const std::string& file)
 
 vtkSmartPointer<vtkMultiBlockDataSet> LoadStoredFlowComplex(const std::string& file)
 {
-  if (ExtensionOf(file) != ".vtm")
+  // A missing, special or empty file is the point cloud reader's to name.
+  std::error_code error;
+  if (ExtensionOf(file) != ".vtm" || !std::filesystem::is_regular_file(file, error) ||
+    std::filesystem::file_size(file, error) == 0)
   {
     return nullptr;
   }
-  {
-    vtkNew<vtkPointCloudReader> check;
-    Read(check, file);
-  }
   vtkNew<vtkXMLMultiBlockDataReader> reader;
   reader->SetFileName(file.c_str());
-  reader->Update();
+  try
+  {
+    // VTK's reader crashes on some corrupt files: it reads in a child process
+    // that then goes on with the command, watched by this one (IsolatedRead.h).
+    reader::ReadThenGoOnInChild(
+      file, "VTK XML", [&]() { reader::UpdateCaptured(file, reader, "VTK XML"); });
+  }
+  catch (const reader::ReadError& e)
+  {
+    throw Failure(e.what());
+  }
+  catch (const VtkAllocationFailure& e)
+  {
+    throw Failure(file + ": out of memory (" + reader::OneLine(e.what()) + ")");
+  }
+  catch (const std::bad_alloc&)
+  {
+    throw Failure(file + ": out of memory");
+  }
   vtkSmartPointer<vtkMultiBlockDataSet> data =
     vtkMultiBlockDataSet::SafeDownCast(reader->GetOutputDataObject(0));
-  return CriticalPointsBlock(data) ? data : nullptr;
+  if (!CriticalPointsBlock(data))
+  {
+    return nullptr;
+  }
+  RequireFinitePoints(file, data);
+  return data;
 }
 
 vtkDataObject* CriticalPointsBlock(vtkDataObject* data)
@@ -85,13 +136,13 @@ void RunFilter(vtkAlgorithm* filter, const std::string& input, const FlowComplex
 {
   vtkSmartPointer<ProgressLine> progress = ProgressLine::Make(options.Label, options.Quiet);
   filter->AddObserver(vtkCommand::ProgressEvent, progress);
-  ClearVtkError();
+  RunMessages().Clear();
   const int ok = filter->GetExecutive()->Update();
   progress->Finish();
   ThrowIfInterrupted();
   if (!ok)
   {
-    const std::string error = FirstVtkError();
+    const std::string error = RunMessages().FirstError();
     throw Failure(input + ": " + (error.empty() ? std::string(what) + " failed" : error));
   }
 }

@@ -35,8 +35,9 @@ struct FlowComplexOptions
 /// The points of the cloud `file`.
 std::vector<Point3> ReadSamples(const std::string& file);
 
-/// A .vtm written by 'complex', or nullptr when `file` is a point cloud. The
-/// point cloud reader runs first: it rejects corrupt files VTK would crash on.
+/// A .vtm written by 'complex', or nullptr when `file` is a point cloud. Read in
+/// a child process that goes on with the command (ReadThenGoOnInChild): a
+/// corrupt file that crashes VTK's reader gets one line, from this process.
 vtkSmartPointer<vtkMultiBlockDataSet> LoadStoredFlowComplex(const std::string& file);
 
 /// The CriticalPoints block of a flow complex (it carries the report in its

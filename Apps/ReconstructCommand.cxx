@@ -7,7 +7,7 @@
 #include "FlowComplexConversion.h"
 #include "FlowComplexFromVTK.h"
 #include "FlowReconNames.h"
-#include "MessageCapture.h"
+#include "VtkMessageCapture.h"
 #include "OutputFiles.h"
 #include "PhaseClock.h"
 #include "ReconstructionReport.h"
@@ -180,7 +180,7 @@ Reconstruction FromComplex(const Arguments& args, vtkMultiBlockDataSet* complex,
   r.Topology = vtkTable::SafeDownCast(reconstruction->GetOutputDataObject(3));
   r.Limit = reconstruction->GetMaximumThreshold();
   clock("flow complex file, simplification, reconstruction");
-  for (const std::string& w : VtkWarnings())
+  for (const std::string& w : RunMessages().Warnings())
   {
     std::cerr << "warning: " << w << "\n";
   }
@@ -216,11 +216,43 @@ Reconstruction FromComplex(const Arguments& args, vtkMultiBlockDataSet* complex,
 // topology profile is searched for its most stable Betti numbers.
 constexpr double AutomaticCap = 5;
 
-int RunReconstruct(const Arguments& args)
+namespace
+{
+
+// What `reconstruct` is asked for, beyond the settings of the run.
+struct Request
+{
+  CloudReconstructionSettings Settings;
+  double Jumps = 0;  // --jumps
+  Id CellBudget = 0; // --betti-max-cells
+};
+
+// The cap of the run, and the threshold below which nodes are drawn.
+void SetCapAndDrawn(const Arguments& args, double trmax, bool automatic,
+  CloudReconstructionSettings& settings)
+{
+  const double tr = settings.ReconstructionThreshold;
+  if (settings.AutomaticReconstruction)
+  {
+    settings.Cap = std::max(AutomaticCap, trmax);
+    settings.DrawThreshold = std::max(trmax, 1.0); // raised to the chosen t_r's needs
+    return;
+  }
+  // Drawn: what is written, what the profile shows, and the warnings' window.
+  const double tdraw = settings.DrawThreshold = std::max(
+    !args.TopologyProfile.empty() && !args.TrMax.Given ? std::max(tr, 4.0) : trmax,
+    tr * settings.UnderSamplingWindow);
+  // The cap of the output-sensitive reconstruction of a cloud: every t_r a
+  // user would try, as the profile shows them.
+  settings.Cap = std::max(tdraw, args.TrMax.Given ? trmax : automatic ? AutomaticCap : 4.0);
+}
+
+// The options, checked in this order (the first error is the one reported).
+Request ReadRequest(const Arguments& args)
 {
   const std::string& command = args.Command;
-  const std::string output = OutputPath(args.Output, command, { ".vtu" });
-  CloudReconstructionSettings settings;
+  Request request;
+  CloudReconstructionSettings& settings = request.Settings;
   settings.AutomaticReconstruction = IsAutomatic(args.Tr);
   settings.AutomaticPersistence = IsAutomatic(args.Tp);
   const bool automatic = settings.AutomaticReconstruction || settings.AutomaticPersistence;
@@ -242,7 +274,7 @@ int RunReconstruct(const Arguments& args)
                 "the topology",
       command);
   }
-  const double jumps = Number(args.Jumps, 0, command);
+  const double jumps = request.Jumps = Number(args.Jumps, 0, command);
   if (args.Jumps.Given && (!(jumps >= 1) || jumps != std::floor(jumps) || std::isinf(jumps)))
   {
     throw Usage("option '--jumps' needs a positive integer", command);
@@ -261,7 +293,7 @@ int RunReconstruct(const Arguments& args)
   {
     RequireDirectory(args.TopologyProfile);
   }
-  double window = Number(args.WarnWindow, 1.1, command);
+  const double window = Number(args.WarnWindow, 1.1, command);
   if (!(window >= 1) || std::isinf(window))
   {
     throw Usage("--warn-window must be a finite number >= 1", command);
@@ -269,27 +301,92 @@ int RunReconstruct(const Arguments& args)
   settings.Topology = !args.NoBetti;
   // A stored complex's Betti numbers come from its drawn cells: the homology
   // of millions of tetrahedra costs about twice the rest, hence a budget.
-  const Id cellBudget = CountOption(args, args.BettiMaxCells, 4000000, "a count >= 0 or 'inf'");
+  request.CellBudget = CountOption(args, args.BettiMaxCells, 4000000, "a count >= 0 or 'inf'");
   if (args.NoBetti && (!args.TopologyProfile.empty() || args.WarnWindow.Given))
   {
     throw Usage("--no-betti excludes --topology-profile and --warn-window", command);
   }
-  settings.UnderSamplingWindow = window = args.NoBetti ? 1 : window;
-  if (settings.AutomaticReconstruction)
-  {
-    settings.Cap = std::max(AutomaticCap, trmax);
-    settings.DrawThreshold = std::max(trmax, 1.0); // raised to the chosen t_r's needs
-  }
-  else
-  {
-    // Drawn: what is written, what the profile shows, and the warnings' window.
-    const double tdraw = settings.DrawThreshold = std::max(
-      !args.TopologyProfile.empty() && !args.TrMax.Given ? std::max(tr, 4.0) : trmax, tr * window);
-    // The cap of the output-sensitive reconstruction of a cloud: every t_r a
-    // user would try, as the profile shows them.
-    settings.Cap = std::max(tdraw, args.TrMax.Given ? trmax : automatic ? AutomaticCap : 4.0);
-  }
+  settings.UnderSamplingWindow = args.NoBetti ? 1 : window;
+  SetCapAndDrawn(args, trmax, automatic, settings);
   settings.Advice = "lower --tr (or --tr-max)";
+  return request;
+}
+
+// The summary line, then "Betti numbers: b0 b1 b2" at t_r (scripts read this
+// line), the thresholds chosen and their warnings; the topology profile.
+void ReportResult(const Arguments& args, const Reconstruction& r, const std::string& output,
+  bool automaticTr, bool tpChosen, const std::vector<std::string>& choiceWarnings)
+{
+  if (!args.Quiet)
+  {
+    std::cout << output << ": " << r.Grid->GetNumberOfCells() << " cells, "
+              << StepsBelow(r.Profile, r.Tr) << " of " << r.Profile->GetNumberOfRows()
+              << " steps at t_r " << r.Tr << "\n";
+  }
+  std::array<long long, 3> betti;
+  if (!BettiNumbersAt(r.Topology, r.Tr, betti))
+  {
+    return;
+  }
+  if (!args.Quiet)
+  {
+    std::cout << "Betti numbers: " << betti[0] << " " << betti[1] << " " << betti[2] << "\n";
+    if (r.Automatic)
+    {
+      std::cout << DescribeChoice(r.Choice, r.Tps, automaticTr, tpChosen) << "\n";
+      for (const std::string& w : choiceWarnings)
+      {
+        std::cerr << "warning: " << w << "\n";
+      }
+    }
+  }
+  if (!args.TopologyProfile.empty())
+  {
+    WriteCsv(r.Topology, { names::Threshold, "b0", "b1", "b2" }, "threshold,b0,b1,b2",
+      args.TopologyProfile);
+  }
+}
+
+// The places where the topology changes just above t_r: the nearest t_r
+// first, at most 10 lines.
+void WarnUnderSampled(const Reconstruction& r)
+{
+  const std::vector<UnderSampledPlace> places = UnderSampledPlaces(r.UnderSampling);
+  for (std::size_t k = 0; k < places.size() && k < 10; ++k)
+  {
+    std::cerr << "warning: " << Describe(places[k]) << "\n";
+  }
+  if (places.size() > 10)
+  {
+    std::cerr << "warning: and " << (places.size() - 10)
+              << " more places where the topology changes just above t_r\n";
+  }
+}
+
+// --jumps: the largest jumps of the profile, and the nodes that made them.
+void PrintJumps(const Reconstruction& r, double jumps)
+{
+  std::cout << "largest jumps of the profile (step: threshold before -> after, node, index, "
+               "critical value, location):\n";
+  for (const ProfileJumpNode& j : LargestProfileJumps(r.Profile, static_cast<std::size_t>(jumps)))
+  {
+    const bool known = j.Node >= 0 && j.Node < static_cast<Id>(r.Nodes.size());
+    const Point3 x = known ? r.Nodes[j.Node].Location : Point3{ { 0, 0, 0 } };
+    std::cout << "  step " << j.Jump.Step << ": " << j.Jump.Before << " -> " << j.Jump.After
+              << ", node " << j.Node << ", index " << j.Index << ", value "
+              << (known ? r.Nodes[j.Node].Value : std::nan("")) << ", at (" << x[0] << ", "
+              << x[1] << ", " << x[2] << ")\n";
+  }
+}
+
+} // namespace
+
+int RunReconstruct(const Arguments& args)
+{
+  const std::string& command = args.Command;
+  const std::string output = OutputPath(args.Output, command, { ".vtu" });
+  const Request request = ReadRequest(args);
+  const CloudReconstructionSettings& settings = request.Settings;
   FlowComplexOptions options;
   options.Quiet = args.Quiet;
   options.Label = command;
@@ -300,7 +397,7 @@ int RunReconstruct(const Arguments& args)
   vtkSmartPointer<vtkMultiBlockDataSet> complex = LoadStoredFlowComplex(args.Input);
   PhaseClock clock;
   const Reconstruction r = complex
-    ? FromComplex(args, complex, settings, cellBudget, options, clock, args.Jumps.Given)
+    ? FromComplex(args, complex, settings, request.CellBudget, options, clock, args.Jumps.Given)
     : FromCloud(args.Input, settings, options, clock);
   const bool tpChosen = settings.AutomaticPersistence && r.Tps.size() > 1;
   const std::vector<std::string> choiceWarnings = r.Automatic
@@ -329,62 +426,14 @@ int RunReconstruct(const Arguments& args)
       { names::Step, names::NodeId, names::Index, names::Priority, names::Threshold },
       "Step,NodeId,Index,Priority,Threshold", args.Profile);
   }
+  ReportResult(args, r, output, settings.AutomaticReconstruction, tpChosen, choiceWarnings);
   if (!args.Quiet)
   {
-    std::cout << output << ": " << r.Grid->GetNumberOfCells() << " cells, "
-              << StepsBelow(r.Profile, r.Tr) << " of " << r.Profile->GetNumberOfRows()
-              << " steps at t_r " << r.Tr << "\n";
-  }
-  // "Betti numbers: b0 b1 b2" at t_r (scripts read this line).
-  std::array<long long, 3> betti;
-  if (BettiNumbersAt(r.Topology, r.Tr, betti))
-  {
-    if (!args.Quiet)
-    {
-      std::cout << "Betti numbers: " << betti[0] << " " << betti[1] << " " << betti[2] << "\n";
-      if (r.Automatic)
-      {
-        std::cout << DescribeChoice(r.Choice, r.Tps, settings.AutomaticReconstruction, tpChosen)
-                  << "\n";
-        for (const std::string& w : choiceWarnings)
-        {
-          std::cerr << "warning: " << w << "\n";
-        }
-      }
-    }
-    if (!args.TopologyProfile.empty())
-    {
-      WriteCsv(r.Topology, { names::Threshold, "b0", "b1", "b2" },
-        "threshold,b0,b1,b2", args.TopologyProfile);
-    }
-  }
-  if (!args.Quiet)
-  {
-    // The nearest t_r first, at most 10 lines.
-    const std::vector<UnderSampledPlace> places = UnderSampledPlaces(r.UnderSampling);
-    for (std::size_t k = 0; k < places.size() && k < 10; ++k)
-    {
-      std::cerr << "warning: " << Describe(places[k]) << "\n";
-    }
-    if (places.size() > 10)
-    {
-      std::cerr << "warning: and " << (places.size() - 10)
-                << " more places where the topology changes just above t_r\n";
-    }
+    WarnUnderSampled(r);
   }
   if (args.Jumps.Given)
   {
-    std::cout << "largest jumps of the profile (step: threshold before -> after, node, index, "
-                 "critical value, location):\n";
-    for (const ProfileJumpNode& j : LargestProfileJumps(r.Profile, static_cast<std::size_t>(jumps)))
-    {
-      const bool known = j.Node >= 0 && j.Node < static_cast<Id>(r.Nodes.size());
-      const Point3 x = known ? r.Nodes[j.Node].Location : Point3{ { 0, 0, 0 } };
-      std::cout << "  step " << j.Jump.Step << ": " << j.Jump.Before << " -> " << j.Jump.After
-                << ", node " << j.Node << ", index " << j.Index << ", value "
-                << (known ? r.Nodes[j.Node].Value : std::nan("")) << ", at (" << x[0] << ", "
-                << x[1] << ", " << x[2] << ")\n";
-    }
+    PrintJumps(r, request.Jumps);
   }
   return 0;
 }

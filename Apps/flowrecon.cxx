@@ -12,14 +12,15 @@
 // (Commands.h, one file per command), and main. Exit codes: 0 success, 1 bad
 // input or failed computation, 2 usage error, 130 interrupted (Ctrl-C). Errors
 // are one line on stderr (cli::Error); VTK's own messages are captured, never
-// printed (MessageCapture.h).
+// printed (VtkMessageCapture.h).
 
 #include "CliError.h"
 #include "CommandLine.h"
 #include "Commands.h"
 #include "Interrupt.h"
-#include "MessageCapture.h"
+#include "VtkMessageCapture.h"
 
+#include "vtkLogger.h"
 #include "vtkVersion.h"
 
 #include <tbb/global_control.h>
@@ -216,7 +217,9 @@ int main(int argc, char* argv[])
       threads = std::make_unique<tbb::global_control>(
         tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(n));
     }
-    CaptureVtkMessages();
+    // VTK's logger prints errors to stderr by itself, besides the output window.
+    vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+    flowrecon::RunMessages();
     return commands.at(command)(args);
   }
   catch (const Error& e)

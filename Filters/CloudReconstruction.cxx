@@ -127,103 +127,90 @@ std::string WorkReport(const CappedReconstruction& r, Id linesDeferred, Id lines
   return work.str();
 }
 
-} // namespace
-
-CloudReconstructionReport ReconstructCloud(const std::vector<Point3>& samples,
-  const CloudReconstructionSettings& settings, const CloudReconstructionOutputs& outputs,
-  const Progress& progress, const std::function<void(const char*)>& phaseDone)
+/// The seconds of the topology of each t_p (--timings).
+std::string ListTopologyTimes(const std::vector<Candidate>& candidates)
 {
-  const bool automatic = settings.AutomaticPersistence || settings.AutomaticReconstruction;
-  if (automatic && !settings.Topology)
+  std::ostringstream each;
+  for (const Candidate& c : candidates)
   {
-    throw InputError("automatic thresholds need the topology");
+    each << (each.tellp() > 0 ? ", " : "") << "t_p " << c.Tp << ": " << std::fixed
+         << std::setprecision(3) << c.TopologySeconds << std::defaultfloat;
   }
-  const std::vector<double> tps = settings.AutomaticPersistence
-    ? settings.PersistenceCandidates
-    : std::vector<double>{ settings.PersistenceThreshold };
-  if (tps.empty())
+  return each.str();
+}
+
+/// ReconstructCloud's phases and what they hand on.
+class CloudRun
+{
+public:
+  CloudRun(const std::vector<Point3>& samples, const CloudReconstructionSettings& settings,
+    const CloudReconstructionOutputs& outputs, const Progress& progress,
+    const std::function<void(const char*)>& phaseDone)
+    : Samples(samples)
+    , Settings(settings)
+    , Outputs(outputs)
+    , Report(progress)
+    , PhaseDone(phaseDone)
+    , Automatic(settings.AutomaticPersistence || settings.AutomaticReconstruction)
+    , Tps(settings.AutomaticPersistence ? settings.PersistenceCandidates
+                                        : std::vector<double>{ settings.PersistenceThreshold })
+    , Tr(settings.ReconstructionThreshold)
   {
-    throw InputError("automatic thresholds: no t_p candidate");
+    if (this->Automatic && !settings.Topology)
+    {
+      throw InputError("automatic thresholds need the topology");
+    }
+    if (this->Tps.empty())
+    {
+      throw InputError("automatic thresholds: no t_p candidate");
+    }
+    this->Options.StableManifolds = false;
+    this->Options.UnstableManifolds = false;
   }
-  BuildOptions options;
-  options.StableManifolds = false;
-  options.UnstableManifolds = false;
-  CloudReconstructionReport report;
-  Candidate chosen;
-  double tr = settings.ReconstructionThreshold;
-  Id linesDeferred = 0, linesFollowed = 0;
-  std::string topologyTimes;
+
+  void BuildAndChoose(); ///< [0, 0.7]: the flow complex, a run per t_p, the choice
+  void SetThresholds();  ///< t_r and t_p used; what is written and drawn
+  void Draw();           ///< [0.7, 0.9]: the cells of the nodes below the drawn threshold
+  void WriteOutputs();   ///< [0.95, 1]: the grid, the profile, the topology and warnings
+
+  CloudReconstructionReport Result;
+
+private:
+  void BuildAndRun(bool defer);
+  std::vector<Candidate> RunEach(CappedBuild& build, std::unique_ptr<ExteriorRegions>& regions,
+    std::vector<std::unique_ptr<ExteriorRegions>>& seen);
+  /// The share of the progress of run k.
+  Progress RunRange(std::size_t k) const
+  {
+    const double share = 0.3 / static_cast<double>(this->Tps.size());
+    return this->Report.Range(
+      0.4 + share * static_cast<double>(k), 0.4 + share * static_cast<double>(k + 1));
+  }
+
+  const std::vector<Point3>& Samples;
+  const CloudReconstructionSettings& Settings;
+  const CloudReconstructionOutputs& Outputs;
+  const Progress& Report;
+  const std::function<void(const char*)>& PhaseDone;
+  const bool Automatic; ///< a threshold is chosen
+  const std::vector<double> Tps;
+  BuildOptions Options;
+  Candidate Chosen;
+  double Tr;                 ///< t_r, given or chosen
+  std::string TopologyTimes; ///< for the work report
+  double Output = 0;        ///< the grid holds the cells below it
+  double Window = 0;        ///< under-sampling reported in [t_r, Window t_r)
+  double DrawThreshold = 0; ///< the nodes below it are drawn
+};
+
+void CloudRun::BuildAndChoose()
+{
   for (bool defer = true;; defer = false)
   {
     try
     {
-      // One build serves every t_p: its lines are deferred from the largest.
-      CappedBuild build = BuildBelow(samples, options, *std::max_element(tps.begin(), tps.end()),
-        settings.Cap, defer, progress.Range(0, 0.4), settings.Topology);
-      phaseDone("flow complex");
-      // The drawing makes the points again from the samples, and nothing here
-      // reads the representatives: a copy of the cloud less until then.
-      build.Complex.Points = std::vector<Point3>();
-      build.Complex.Representative = std::vector<Id>();
-      std::vector<Candidate> candidates;
-      candidates.reserve(tps.size());
-      std::unique_ptr<ExteriorRegions> regions;
-      const double share = 0.3 / static_cast<double>(tps.size());
-      auto range = [&](std::size_t k) {
-        return progress.Range(0.4 + share * static_cast<double>(k), 0.4 + share * static_cast<double>(k + 1));
-      };
-      // With several t_p, two runs (insertions, lines, arcs) held together
-      // were most of the peak: a run before the last keeps only its bars and
-      // is run again if chosen, so the build stays whole until the choice.
-      const bool one = tps.size() == 1;
-      std::vector<std::unique_ptr<ExteriorRegions>> seen(tps.size()); // the regions run k started from
-      for (std::size_t k = 0; k < tps.size(); ++k)
-      {
-        const bool last = k + 1 == tps.size();
-        if (!last && regions)
-        {
-          seen[k] = std::make_unique<ExteriorRegions>(*regions);
-        }
-        candidates.push_back(Run(build, tps[k], one, settings, regions, range(k)));
-        if (!last)
-        {
-          candidates.back().R = CappedReconstruction();
-        }
-      }
-      std::ostringstream each;
-      for (const Candidate& c : candidates)
-      {
-        each << (each.tellp() > 0 ? ", " : "") << "t_p " << c.Tp << ": " << std::fixed
-             << std::setprecision(3) << c.TopologySeconds << std::defaultfloat;
-      }
-      topologyTimes = each.str();
-      std::size_t pick = 0;
-      if (automatic)
-      {
-        report.Choice = Choose(candidates, settings);
-        report.Automatic = true;
-        pick = report.Choice.Candidate;
-        tr = report.Choice.ReconstructionThreshold;
-      }
-      if (!one && pick + 1 == candidates.size())
-      {
-        MoveNodes(build.Complex, candidates[pick].R.Complex);
-      }
-      else if (!one)
-      {
-        candidates.back().R = CappedReconstruction();
-        candidates[pick] = Run(build, tps[pick], true, settings, seen[pick], range(pick));
-      }
-      phaseDone(tps.size() > 1 ? "simplification, reconstruction queue, Betti numbers (each t_p)"
-                               : "simplification, reconstruction queue, Betti numbers");
-      if (automatic)
-      {
-        const CappedReconstruction& p = candidates[pick].R;
-        CheckFilled(report.Choice, samples, MaximaBelow(p.Complex.Nodes, p.Carriers, p.Run, tr));
-      }
-      chosen = std::move(candidates[pick]);
-      candidates.clear();
-      break;
+      this->BuildAndRun(defer);
+      return;
     }
     catch (const Degenerate&)
     {
@@ -233,30 +220,112 @@ CloudReconstructionReport ReconstructCloud(const std::vector<Point3>& samples,
       }
     }
   }
-  CappedReconstruction& r = chosen.R;
-  report.PersistenceThreshold = chosen.Tp;
-  report.ReconstructionThreshold = tr;
-  const double output = settings.AutomaticReconstruction ? std::max(settings.OutputThreshold, tr)
-                                                         : settings.OutputThreshold;
-  const double window = std::max(1.0, std::min(settings.UnderSamplingWindow, settings.Cap / tr));
-  const double tdraw = std::min(settings.Cap,
-    settings.AutomaticReconstruction ? std::max(output, tr * window) : settings.DrawThreshold);
+}
+
+void CloudRun::BuildAndRun(bool defer)
+{
+  const CloudReconstructionSettings& settings = this->Settings;
+  // One build serves every t_p: its lines are deferred from the largest.
+  CappedBuild build = BuildBelow(this->Samples, this->Options,
+    *std::max_element(this->Tps.begin(), this->Tps.end()), settings.Cap, defer,
+    this->Report.Range(0, 0.4), settings.Topology);
+  this->PhaseDone("flow complex");
+  // The drawing makes the points again from the samples, and nothing here
+  // reads the representatives: a copy of the cloud less until then.
+  build.Complex.Points = std::vector<Point3>();
+  build.Complex.Representative = std::vector<Id>();
+  std::unique_ptr<ExteriorRegions> regions;
+  std::vector<std::unique_ptr<ExteriorRegions>> seen(this->Tps.size()); // the regions run k started from
+  std::vector<Candidate> candidates = this->RunEach(build, regions, seen);
+  this->TopologyTimes = ListTopologyTimes(candidates);
+  std::size_t pick = 0;
+  if (this->Automatic)
+  {
+    this->Result.Choice = Choose(candidates, settings);
+    this->Result.Automatic = true;
+    pick = this->Result.Choice.Candidate;
+    this->Tr = this->Result.Choice.ReconstructionThreshold;
+  }
+  const bool one = this->Tps.size() == 1;
+  if (!one && pick + 1 == candidates.size())
+  {
+    MoveNodes(build.Complex, candidates[pick].R.Complex);
+  }
+  else if (!one)
+  {
+    candidates.back().R = CappedReconstruction();
+    candidates[pick] = Run(build, this->Tps[pick], true, settings, seen[pick], this->RunRange(pick));
+  }
+  this->PhaseDone(this->Tps.size() > 1
+      ? "simplification, reconstruction queue, Betti numbers (each t_p)"
+      : "simplification, reconstruction queue, Betti numbers");
+  if (this->Automatic)
+  {
+    const CappedReconstruction& p = candidates[pick].R;
+    CheckFilled(this->Result.Choice, this->Samples, MaximaBelow(p.Complex.Nodes, p.Carriers, p.Run, this->Tr));
+  }
+  this->Chosen = std::move(candidates[pick]);
+  candidates.clear();
+}
+
+/// With several t_p, two runs (insertions, lines, arcs) held together were
+/// most of the peak: a run before the last keeps only its bars and is run
+/// again if chosen, so the build stays whole until the choice.
+std::vector<Candidate> CloudRun::RunEach(CappedBuild& build,
+  std::unique_ptr<ExteriorRegions>& regions, std::vector<std::unique_ptr<ExteriorRegions>>& seen)
+{
+  std::vector<Candidate> candidates;
+  candidates.reserve(this->Tps.size());
+  const bool one = this->Tps.size() == 1;
+  for (std::size_t k = 0; k < this->Tps.size(); ++k)
+  {
+    const bool last = k + 1 == this->Tps.size();
+    if (!last && regions)
+    {
+      seen[k] = std::make_unique<ExteriorRegions>(*regions);
+    }
+    candidates.push_back(Run(build, this->Tps[k], one, this->Settings, regions, this->RunRange(k)));
+    if (!last)
+    {
+      candidates.back().R = CappedReconstruction();
+    }
+  }
+  return candidates;
+}
+
+void CloudRun::SetThresholds()
+{
+  const CloudReconstructionSettings& settings = this->Settings;
+  this->Result.PersistenceThreshold = this->Chosen.Tp;
+  this->Result.ReconstructionThreshold = this->Tr;
+  this->Output = settings.AutomaticReconstruction ? std::max(settings.OutputThreshold, this->Tr)
+                                                  : settings.OutputThreshold;
+  this->Window = std::max(1.0, std::min(settings.UnderSamplingWindow, settings.Cap / this->Tr));
+  this->DrawThreshold = std::min(settings.Cap,
+    settings.AutomaticReconstruction ? std::max(this->Output, this->Tr * this->Window)
+                                     : settings.DrawThreshold);
+}
+
+void CloudRun::Draw()
+{
+  CappedReconstruction& r = this->Chosen.R;
+  Id linesDeferred = 0, linesFollowed = 0;
   for (bool again = false;; again = true)
   {
     try
     {
-      const std::vector<Id> draw = NodesToDraw(r.Complex.Nodes, r.Carriers, r.Run, tdraw);
+      const std::vector<Id> draw = NodesToDraw(r.Complex.Nodes, r.Carriers, r.Run, this->DrawThreshold);
       CompleteCones(r, draw);
       // What only the queue needed goes before the drawing, the largest phase.
-      linesDeferred = r.Lines ? r.Lines->LinesDeferred() : chosen.LinesDeferred;
-      linesFollowed = r.Lines ? r.Lines->LinesFollowed() : chosen.LinesFollowed;
+      linesDeferred = r.Lines ? r.Lines->LinesDeferred() : this->Chosen.LinesDeferred;
+      linesFollowed = r.Lines ? r.Lines->LinesFollowed() : this->Chosen.LinesFollowed;
       r.Lines.reset();
       r.Simplification = SimplificationResult();
       // Their lists sat in tbbmalloc's pools, which the drawing's vectors
       // (glibc's heap) cannot reuse: hand them back first.
       ReleaseFreedMemory();
-      DrawStableManifolds(samples, options, draw, r.Complex, progress.Range(0.7, 0.9),
-        settings.Advice, &r.Cones, r.Triangulation.get());
+      DrawStableManifolds(this->Samples, this->Options, draw, r.Complex, this->Report.Range(0.7, 0.9),
+        this->Settings.Advice, &r.Cones, r.Triangulation.get());
       break;
     }
     catch (const Degenerate&)
@@ -266,22 +335,30 @@ CloudReconstructionReport ReconstructCloud(const std::vector<Point3>& samples,
       {
         throw InputError("input too degenerate (a tie in a stable manifold)");
       }
-      CappedBuild eager = BuildBelow(samples, options, chosen.Tp, settings.Cap, false,
-        progress.Range(0, 0.4), settings.Topology);
+      CappedBuild eager = BuildBelow(this->Samples, this->Options, this->Chosen.Tp, this->Settings.Cap,
+        false, this->Report.Range(0, 0.4), this->Settings.Topology);
       std::unique_ptr<ExteriorRegions> regions;
-      chosen = Run(eager, chosen.Tp, true, settings, regions, progress.Range(0.4, 0.7));
+      this->Chosen =
+        Run(eager, this->Chosen.Tp, true, this->Settings, regions, this->Report.Range(0.4, 0.7));
     }
   }
-  report.Work = WorkReport(r, linesDeferred, linesFollowed, chosen) +
-    (topologyTimes.empty() ? "" : "\nBetti numbers from the Hasse diagram (s): " + topologyTimes);
+  this->Result.Work = WorkReport(r, linesDeferred, linesFollowed, this->Chosen) +
+    (this->TopologyTimes.empty() ? "" : "\nBetti numbers from the Hasse diagram (s): " + this->TopologyTimes);
   r.Triangulation.reset();
   // The triangulation is the largest block until here (~0.7 KB per point, in
   // tbbmalloc's pools): the VTK arrays below need that memory back.
   ReleaseFreedMemory();
+  this->PhaseDone("drawing");
+}
+
+void CloudRun::WriteOutputs()
+{
+  const CloudReconstructionSettings& settings = this->Settings;
+  CappedReconstruction& r = this->Chosen.R;
   FlowComplex& fc = r.Complex;
-  phaseDone("drawing");
-  report.TopologyError = settings.Topology ? chosen.TopologyError : "not asked for";
-  progress(0.95, "output");
+  CloudReconstructionReport& report = this->Result;
+  report.TopologyError = settings.Topology ? this->Chosen.TopologyError : "not asked for";
+  this->Report(0.95, "output");
   {
     const CellsByNode triangles = PositionsByRow(fc.TriangleNode, fc.Nodes.size());
     const CellsByNode tetrahedra = PositionsByRow(fc.TetrahedronNode, fc.Nodes.size());
@@ -292,7 +369,7 @@ CloudReconstructionReport ReconstructCloud(const std::vector<Point3>& samples,
     fc.NodePoint = std::vector<Id>();
     r.Cones = std::vector<Arc>();
     // No sponsor arrows: nothing here reads them (millions at 10^6 points).
-    ReconstructionToVTK(fc, r.Carriers, r.Run, output, triangles, tetrahedra, outputs.Grid,
+    ReconstructionToVTK(fc, r.Carriers, r.Run, this->Output, triangles, tetrahedra, this->Outputs.Grid,
       nullptr, nullptr, settings.Advice);
   }
   // The geometry is in the grid now: the profile and the rest read nodes and
@@ -302,24 +379,39 @@ CloudReconstructionReport ReconstructCloud(const std::vector<Point3>& samples,
   fc.Tetrahedra = std::vector<std::array<Id, 4>>();
   fc.Arcs = std::vector<Arc>();
   r.Carriers = std::vector<Id>();
-  ReconstructionToVTK(fc, r.Carriers, r.Run, output, {}, {}, nullptr, outputs.Profile, nullptr,
-    settings.Advice);
+  ReconstructionToVTK(fc, r.Carriers, r.Run, this->Output, {}, {}, nullptr, this->Outputs.Profile,
+    nullptr, settings.Advice);
   if (report.TopologyError.empty())
   {
-    TopologyToVTK(chosen.Bars, output, settings.Cap, outputs.Grid, outputs.Topology);
+    TopologyToVTK(this->Chosen.Bars, this->Output, settings.Cap, this->Outputs.Grid, this->Outputs.Topology);
     // A short stable window: its end is where the topology changes next.
-    double warn = window;
-    if (report.Automatic && report.Choice.Short() && report.Choice.Window.To > tr)
+    double warn = this->Window;
+    if (report.Automatic && report.Choice.Short() && report.Choice.Window.To > this->Tr)
     {
-      warn = std::max(warn, report.Choice.Window.To / tr * (1 + 1e-9));
+      warn = std::max(warn, report.Choice.Window.To / this->Tr * (1 + 1e-9));
     }
-    UnderSamplingToVTK(TopologyChangesAbove(chosen.Bars, tr, warn), {}, fc, outputs.UnderSampling);
+    UnderSamplingToVTK(TopologyChangesAbove(this->Chosen.Bars, this->Tr, warn), {}, fc,
+      this->Outputs.UnderSampling);
   }
-  ThresholdsToVTK(report.PersistenceThreshold, tr, settings.AutomaticPersistence,
-    settings.AutomaticReconstruction, report.Automatic ? &report.Choice.Window : nullptr, outputs.Grid);
+  ThresholdsToVTK(report.PersistenceThreshold, this->Tr, settings.AutomaticPersistence,
+    settings.AutomaticReconstruction, report.Automatic ? &report.Choice.Window : nullptr,
+    this->Outputs.Grid);
   report.Nodes = std::move(fc.Nodes);
-  phaseDone("VTK output");
-  return report;
+  this->PhaseDone("VTK output");
+}
+
+} // namespace
+
+CloudReconstructionReport ReconstructCloud(const std::vector<Point3>& samples,
+  const CloudReconstructionSettings& settings, const CloudReconstructionOutputs& outputs,
+  const Progress& progress, const std::function<void(const char*)>& phaseDone)
+{
+  CloudRun run(samples, settings, outputs, progress, phaseDone);
+  run.BuildAndChoose();
+  run.SetThresholds();
+  run.Draw();
+  run.WriteOutputs();
+  return std::move(run.Result);
 }
 
 } // namespace flowrecon

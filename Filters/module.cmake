@@ -17,7 +17,8 @@ vtk_module_add_module(FlowRecon::Filters
     ${_flowrecon_filters_dir}/Conversion/FlowComplexFromVTK.h
     ${_flowrecon_filters_dir}/Conversion/FlowComplexToVTK.h
     ${_flowrecon_filters_dir}/FlowReconNames.h
-    ${_flowrecon_filters_dir}/IO/LegacyVtkGuard.h
+    ${_flowrecon_filters_dir}/IO/IsolatedRead.h
+    ${_flowrecon_filters_dir}/IO/PackedPoints.h
     ${_flowrecon_filters_dir}/Conversion/PersistenceDiagramConversion.h
     ${_flowrecon_filters_dir}/IO/PlyPoints.h
     ${_flowrecon_filters_dir}/IO/PointCloudParsing.h
@@ -29,14 +30,13 @@ vtk_module_add_module(FlowRecon::Filters
     ${_flowrecon_filters_dir}/Conversion/TopologyConversion.h
     ${_flowrecon_filters_dir}/IO/VtkFilePoints.h
     ${_flowrecon_filters_dir}/IO/VtkMessageCapture.h
-    ${_flowrecon_filters_dir}/IO/XmlBlockHeaders.h
-    ${_flowrecon_filters_dir}/IO/XmlVtkGuard.h
   SOURCES
     ${_flowrecon_filters_dir}/CloudReconstruction.cxx
     ${_flowrecon_filters_dir}/Conversion/ContractArrays.cxx
     ${_flowrecon_filters_dir}/Conversion/FlowComplexFromVTK.cxx
     ${_flowrecon_filters_dir}/Conversion/FlowComplexToVTK.cxx
-    ${_flowrecon_filters_dir}/IO/LegacyVtkGuard.cxx
+    ${_flowrecon_filters_dir}/IO/IsolatedRead.cxx
+    ${_flowrecon_filters_dir}/IO/PackedPoints.cxx
     ${_flowrecon_filters_dir}/Conversion/PersistenceDiagramConversion.cxx
     ${_flowrecon_filters_dir}/IO/PlyPoints.cxx
     ${_flowrecon_filters_dir}/IO/PointCloudParsing.cxx
@@ -47,11 +47,9 @@ vtk_module_add_module(FlowRecon::Filters
     ${_flowrecon_filters_dir}/Conversion/SimplificationConversion.cxx
     ${_flowrecon_filters_dir}/Conversion/TopologyConversion.cxx
     ${_flowrecon_filters_dir}/IO/VtkFilePoints.cxx
-    ${_flowrecon_filters_dir}/IO/VtkMessageCapture.cxx
-    ${_flowrecon_filters_dir}/IO/XmlBlockHeaders.cxx
-    ${_flowrecon_filters_dir}/IO/XmlVtkGuard.cxx)
-# The filters (here), the readers' parsers and guards (IO) and the core <-> VTK
-# conversions (Conversion); headers are included by name.
+    ${_flowrecon_filters_dir}/IO/VtkMessageCapture.cxx)
+# The filters (here), the readers' parsers and child processes (IO) and the
+# core <-> VTK conversions (Conversion); headers are included by name.
 vtk_module_include(FlowRecon::Filters PUBLIC
   "$<BUILD_INTERFACE:${_flowrecon_filters_dir}>"
   "$<BUILD_INTERFACE:${_flowrecon_filters_dir}/IO>"

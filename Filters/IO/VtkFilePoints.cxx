@@ -1,11 +1,11 @@
-// The points of legacy and XML VTK files (see VtkFilePoints.h): guard, VTK
-// reader, then the points and shared point data of every leaf.
+// The points of legacy and XML VTK files (see VtkFilePoints.h): VTK's reader
+// in a child process, then the points and shared point data of every leaf.
 #include "VtkFilePoints.h"
 
-#include "LegacyVtkGuard.h"
+#include "IsolatedRead.h"
+#include "PackedPoints.h"
 #include "PointCloudParsing.h"
 #include "VtkMessageCapture.h"
-#include "XmlVtkGuard.h"
 
 #include "MemoryGuard.h" // core: bounds allocations the file cannot
 #include "Progress.h"    // core: InputError
@@ -15,6 +15,7 @@
 #include "vtkDataSet.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkGenericDataObjectReader.h"
+#include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkSmartPointer.h"
 #include "vtkXMLGenericDataObjectReader.h"
@@ -109,11 +110,25 @@ void ExtractPoints(
   }
 }
 
+// Reads `file` with `reader` in a child process (IsolatedRead.h), which hands
+// back the points and shared point data.
+void ReadPoints(const std::string& file, vtkAlgorithm* reader, const char* kind,
+  std::vector<double>& xyz, vtkPointData* pointData)
+{
+  const std::string packed = ReadIsolated(file, kind, [&]() {
+    UpdateCaptured(file, reader, kind);
+    std::vector<double> points;
+    vtkNew<vtkPointData> data;
+    ExtractPoints(file, reader->GetOutputDataObject(0), points, data);
+    return PackPoints(points, data);
+  });
+  UnpackPoints(file, packed, xyz, pointData);
+}
+
 } // namespace
 
 void ReadLegacyVtk(const std::string& file, std::vector<double>& xyz, vtkPointData* pointData)
 {
-  CheckLegacyFile(file, ReadWholeFile(file));
   auto reader = vtkSmartPointer<vtkGenericDataObjectReader>::New();
   reader->SetFileName(file.c_str());
   // Every array, not only the first scalars/vectors.
@@ -124,17 +139,14 @@ void ReadLegacyVtk(const std::string& file, std::vector<double>& xyz, vtkPointDa
   reader->ReadAllColorScalarsOn();
   reader->ReadAllTCoordsOn();
   reader->ReadAllFieldsOn();
-  UpdateCaptured(file, reader, "legacy VTK");
-  ExtractPoints(file, reader->GetOutputDataObject(0), xyz, pointData);
+  ReadPoints(file, reader, "legacy VTK", xyz, pointData);
 }
 
 void ReadXmlVtk(const std::string& file, std::vector<double>& xyz, vtkPointData* pointData)
 {
-  CheckXmlFile(file);
   auto reader = vtkSmartPointer<vtkXMLGenericDataObjectReader>::New();
   reader->SetFileName(file.c_str());
-  UpdateCaptured(file, reader, "VTK XML");
-  ExtractPoints(file, reader->GetOutputDataObject(0), xyz, pointData);
+  ReadPoints(file, reader, "VTK XML", xyz, pointData);
 }
 
 } // namespace reader

@@ -1,7 +1,7 @@
 // The points of the files vtkPointCloudReader hands to VTK's own readers:
 // legacy .vtk (vtkGenericDataObjectReader) and the XML formats
-// (vtkXMLGenericDataObjectReader), each checked first by its guard
-// (LegacyVtkGuard.h, XmlVtkGuard.h) and run with its messages captured.
+// (vtkXMLGenericDataObjectReader), each run in a child process (IsolatedRead.h)
+// with its messages captured.
 #ifndef VtkFilePoints_h
 #define VtkFilePoints_h
 

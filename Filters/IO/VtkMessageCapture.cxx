@@ -1,4 +1,4 @@
-// The capturing output window of vtkPointCloudReader (see VtkMessageCapture.h).
+// The capturing output window (see VtkMessageCapture.h).
 #include "VtkMessageCapture.h"
 
 #include "PointCloudParsing.h"
@@ -8,8 +8,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkOutputWindow.h"
 
-#include <cstring>
-#include <new>
+#include <algorithm>
 #include <string_view>
 
 namespace flowrecon
@@ -33,15 +32,22 @@ std::string VtkMessageText(const char* text)
   return std::string(reader::Trim(t.substr(0, t.find('\n'))));
 }
 
-namespace reader
+VtkAllocationFailure::VtkAllocationFailure(std::string message)
+  : Message(std::move(message))
 {
+}
+
+const char* VtkAllocationFailure::what() const noexcept
+{
+  return this->Message.c_str();
+}
+
 namespace
 {
 
-// Collects the messages VTK sends to its output window while installed, so a
-// failing VTK reader does not print its multi-line reports. (Messages VTK's
-// logger prints to stderr are up to the application: the flowrecon tool turns
-// that off.)
+// Collects the messages VTK sends to its output window while installed.
+// (Messages VTK's logger prints to stderr are up to the application: the
+// flowrecon tool turns that off.)
 class MessageCapture : public vtkOutputWindow
 {
 public:
@@ -50,38 +56,52 @@ public:
   void DisplayText(const char*) override {}
   void DisplayErrorText(const char* text) override
   {
-    this->Keep(text);
+    const std::string t = VtkMessageText(text);
+    this->Keep(t);
+    if (this->FirstError.empty())
+    {
+      this->FirstError = t;
+    }
     // VTK built without NDEBUG (Debian's is) aborts after this message when an
     // array cannot be allocated; throw what its release builds throw instead.
-    if (text && std::strstr(text, "Unable to allocate "))
+    // (Only VTK's own message: a reader's error may quote it.)
+    if (t.rfind("Unable to allocate ", 0) == 0)
     {
-      throw std::bad_alloc();
+      throw VtkAllocationFailure(t);
     }
   }
-  void DisplayWarningText(const char* text) override { this->Keep(text); }
-  void DisplayGenericWarningText(const char* text) override { this->Keep(text); }
+  void DisplayWarningText(const char* text) override
+  {
+    const std::string t = VtkMessageText(text);
+    this->Keep(t);
+    if (!t.empty() &&
+      std::find(this->Warnings.begin(), this->Warnings.end(), t) == this->Warnings.end())
+    {
+      this->Warnings.push_back(t);
+    }
+  }
+  void DisplayGenericWarningText(const char* text) override { this->DisplayWarningText(text); }
   void DisplayDebugText(const char*) override {}
 
-  // The first message, reduced to its text (VtkMessageText).
   std::string First;
+  std::string FirstError;
+  std::vector<std::string> Warnings;
 
 private:
-  void Keep(const char* text)
+  void Keep(const std::string& t)
   {
-    if (!this->First.empty() || !text)
+    if (this->First.empty())
     {
-      return;
-    }
-    const std::string t = VtkMessageText(text);
-    // The detail goes into a one-line message: no control or non-ASCII bytes.
-    this->First = t.empty() ? "unknown error" : t.substr(0, 200);
-    for (char& c : this->First)
-    {
-      c = (c < 0x20 || c > 0x7e) ? '?' : c;
+      this->First = t.empty() ? "unknown error" : t;
     }
   }
 };
 vtkStandardNewMacro(MessageCapture);
+
+MessageCapture& Of(const vtkSmartPointer<vtkOutputWindow>& capture)
+{
+  return *static_cast<MessageCapture*>(capture.Get());
+}
 
 } // namespace
 
@@ -99,7 +119,42 @@ CapturedMessages::~CapturedMessages()
 
 const std::string& CapturedMessages::First() const
 {
-  return static_cast<MessageCapture*>(this->Capture.Get())->First;
+  return Of(this->Capture).First;
+}
+
+const std::string& CapturedMessages::FirstError() const
+{
+  return Of(this->Capture).FirstError;
+}
+
+void CapturedMessages::Clear()
+{
+  Of(this->Capture).First.clear();
+  Of(this->Capture).FirstError.clear();
+}
+
+const std::vector<std::string>& CapturedMessages::Warnings() const
+{
+  return Of(this->Capture).Warnings;
+}
+
+CapturedMessages& RunMessages()
+{
+  static CapturedMessages messages;
+  return messages;
+}
+
+namespace reader
+{
+
+std::string OneLine(const std::string& message)
+{
+  std::string line = message.substr(0, 200);
+  for (char& c : line)
+  {
+    c = (c < 0x20 || c > 0x7e) ? '?' : c;
+  }
+  return line;
 }
 
 void UpdateCaptured(const std::string& file, vtkAlgorithm* reader, const char* kind)
@@ -109,12 +164,13 @@ void UpdateCaptured(const std::string& file, vtkAlgorithm* reader, const char* k
   {
     CapturedMessages capture;
     ok = reader->GetExecutive()->Update();
-    first = capture.First();
+    first = OneLine(capture.First());
   }
   if (!ok || reader->GetErrorCode() != 0 || !first.empty() || !reader->GetOutputDataObject(0))
   {
     Fail(file, 0,
-      std::string("cannot read ") + kind + " file" + (first.empty() ? std::string() : " (" + first + ")"));
+      std::string("cannot read ") + kind + " file" +
+        (first.empty() ? std::string() : " (" + first + ")"));
   }
 }
 

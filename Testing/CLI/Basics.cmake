@@ -79,21 +79,22 @@ flowrecon_add_cli_test(ComplexOfComplex EXIT 1 STDERR_LINES 1
   ARGS complex "${_w}/tetrahedron.vtm" -o again.vtm)
 
 # Corrupt VTK XML files: a last cell offset raised by 2^32 made VTK allocate
-# 32 GB and abort; one line naming the file instead. Copies of the complex
-# above, corrupted by CorruptXML.py.
+# 32 GB and abort, a missing primary element made it crash; one line naming
+# the file instead (VTK's reader runs in a child process). Copies of the
+# complex above, corrupted by CorruptXML.py.
 add_test(NAME cli.CorruptFilesSetup COMMAND "${FLOWRECON_TEST_PYTHON}"
   "${CMAKE_CURRENT_LIST_DIR}/CorruptXML.py" "${_w}/tetrahedron.vtm" "${_w}/corrupt")
 set_tests_properties(cli.CorruptFilesSetup PROPERTIES
   FIXTURES_SETUP flowrecon_cli_corrupt FIXTURES_REQUIRED flowrecon_cli_vtm)
 flowrecon_add_cli_test(CorruptCloud EXIT 1 STDERR_LINES 1
-  STDERR "^flowrecon: [^\n]*/corrupt/cloud\\.vtp: piece 0, Verts: array 'offsets' announces [0-9]+ connectivity values, more than the file can hold"
+  STDERR "^flowrecon: [^\n]*/corrupt/cloud\\.vtp: (out of memory|cannot read VTK XML file) \\("
   FIXTURES_REQUIRED flowrecon_cli_corrupt ARGS info "${_w}/corrupt/cloud.vtp")
 flowrecon_add_cli_test(CorruptComplexPiece EXIT 1 STDERR_LINES 1
-  STDERR "^flowrecon: [^\n]*/corrupt/tetrahedron/tetrahedron_2\\.vtu: piece 0, Cells: array 'offsets' announces [0-9]+ connectivity values"
+  STDERR "^flowrecon: [^\n]*/corrupt/tetrahedron\\.vtm: (out of memory|cannot read VTK XML file) \\("
   FIXTURES_REQUIRED flowrecon_cli_corrupt
   ARGS reconstruct "${_w}/corrupt/tetrahedron.vtm" -o "${_w}/corrupt.vtu")
 flowrecon_add_cli_test(CorruptComplexNoPrimary EXIT 1 STDERR_LINES 1
-  STDERR "^flowrecon: [^\n]*/corrupt/noprimary\\.vtm:[0-9]+: VTKFile of type 'vtkMultiBlockDataSet' holds no <vtkMultiBlockDataSet> element"
+  STDERR "^flowrecon: [^\n]*/corrupt/noprimary\\.vtm: cannot read VTK XML file \\("
   FIXTURES_REQUIRED flowrecon_cli_corrupt
   ARGS reconstruct "${_w}/corrupt/noprimary.vtm" -o "${_w}/corrupt.vtu")
 

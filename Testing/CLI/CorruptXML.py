@@ -52,7 +52,7 @@ if "<vtkMultiBlockDataSet>" not in vtm:
     sys.exit(source + ": expected a <vtkMultiBlockDataSet> element")
 # The field data goes: VTK's parser reads a file in blocks and refuses one of
 # several blocks on its own ("junk after document element", also one line), so
-# the guard's own check is reached only when the file fits one block.
+# the null element is reached only when the file fits one block.
 vtm = re.sub(r"\s*<FieldData>.*?</FieldData>", "", vtm, flags=re.S)
 open(os.path.join(outdir, "noprimary.vtm"), "w").write(
     vtm.replace("<vtkMultiBlockDataSet>", "<AppendedDatakDataSet>", 1))

@@ -20,10 +20,12 @@
 // .vtm, then the pieces in name order): below 128, template byte & 3 and file
 // (byte >> 2) modulo its number of files; from 128, template 4 + (byte & 1) and
 // file ((byte & 127) >> 1) modulo its number of files. The remaining bytes
-// replace that file. Then, as the CLI does:
-// vtkPointCloudReader checks the .vtm (it refuses corrupt sizes VTK's readers
-// would abort on); vtkXMLMultiBlockDataReader reads it; FromMultiBlock and
-// SimplificationFromMultiBlock convert it (these are fuzzed directly); the
+// replace that file. Then, as the CLI does: vtkXMLMultiBlockDataReader reads
+// the .vtm in a child process (VTK 9.2's reader crashes on some corrupt files;
+// the CLI's child goes on with the command, this target reads again here,
+// where libFuzzer counts coverage); non-finite points are refused;
+// FromMultiBlock and SimplificationFromMultiBlock convert it (these are
+// fuzzed directly); the
 // persistence diagram of an unsimplified complex is computed, its deferred
 // patches walked first (`diagram`); an
 // unsimplified complex is simplified at t_p = 1.1 by vtkFlowComplexSimplification
@@ -34,14 +36,18 @@
 // every template into DIR and exit (that is how corpus/stored_complex was made).
 #include "DeferredPatches.h"
 #include "FlowComplexConversion.h"
+#include "IsolatedRead.h"
 #include "Persistence.h"
+#include "PointCloudParsing.h"
 #include "Simplification.h"
+#include "VtkMessageCapture.h"
 #include "vtkFlowComplex.h"
 #include "vtkFlowComplexSimplification.h"
 #include "vtkFlowReconstruction.h"
-#include "vtkPointCloudReader.h"
 
 #include "vtkCellArray.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkDataSet.h"
 #include "vtkExecutive.h"
 #include "vtkFieldData.h"
 #include "vtkLogger.h"
@@ -214,22 +220,63 @@ void RemoveRoot()
   fs::remove_all(Root, error);
 }
 
+// The CLI refuses a stored complex with a non-finite point.
+bool FinitePoints(vtkMultiBlockDataSet* data)
+{
+  vtkSmartPointer<vtkCompositeDataIterator> it;
+  it.TakeReference(data->NewIterator());
+  for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+  {
+    auto* leaf = vtkDataSet::SafeDownCast(it->GetCurrentDataObject());
+    for (vtkIdType id = 0; leaf && id < leaf->GetNumberOfPoints(); ++id)
+    {
+      double p[3];
+      leaf->GetPoint(id, p);
+      if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
 void ReadAsTheCliDoes(const std::string& vtm)
 {
-  vtkNew<vtkPointCloudReader> check;
-  check->SetFileName(vtm.c_str());
-  if (!check->GetExecutive()->Update())
+  const auto read = [&vtm](vtkXMLMultiBlockDataReader* reader) {
+    reader->SetFileName(vtm.c_str());
+    flowrecon::reader::UpdateCaptured(vtm, reader, "VTK XML");
+  };
+  try
+  {
+    flowrecon::reader::ReadIsolated(vtm, "VTK XML", [&read]() {
+      read(vtkNew<vtkXMLMultiBlockDataReader>());
+      return std::string();
+    });
+  }
+  catch (const flowrecon::reader::ReadError&)
   {
     return; // refused with one line
   }
   vtkNew<vtkXMLMultiBlockDataReader> reader;
-  reader->SetFileName(vtm.c_str());
-  reader->Update();
+  try
+  {
+    read(reader);
+  }
+  catch (const flowrecon::reader::ReadError&)
+  {
+    std::fprintf(stderr, "FuzzStoredComplex: read in a child, refused here\n");
+    std::abort();
+  }
   vtkMultiBlockDataSet* data = vtkMultiBlockDataSet::SafeDownCast(reader->GetOutputDataObject(0));
   vtkDataObject* criticalPoints = flowrecon::NamedBlock(data, "CriticalPoints");
   if (!criticalPoints || !criticalPoints->GetFieldData()->GetArray("NodeCountByIndex"))
   {
     return; // not a flow complex: the CLI reads it as a point cloud
+  }
+  if (!FinitePoints(data))
+  {
+    return; // refused with one line
   }
   auto* points = vtkPolyData::SafeDownCast(criticalPoints);
   const bool simplified = points && points->GetPointData()->GetArray("Cancelled");

@@ -23,6 +23,8 @@
 
 namespace flowrecon
 {
+struct Patch;
+
 namespace internal
 {
 
@@ -87,6 +89,19 @@ private:
   void TraceUnstableManifolds(); ///< BuildUnstableManifolds.cpp: ends of 2-3 arcs
   void AssembleHasseDiagram();   ///< BuildHasseDiagram.cpp: nodes, 2-3 arcs
   void BuildStableCones();       ///< BuildStableCones.cpp: index 3
+
+  // The steps of WalkStablePatches.
+  struct PatchBatch;
+  void WalkPatches(std::size_t begin, PatchBatch& batch) const; ///< one chunk, in parallel
+  void MergePatches(PatchBatch& batch);            ///< its 1-2 arcs (and geometry), in order
+  void ReserveArcsFor(const PatchBatch& batch);    ///< room for its arcs, or a refusal
+  void AppendPatchGeometry(std::size_t i, const Patch& patch); ///< the triangles of patch i
+
+  // The steps of TraceUnstableManifolds.
+  struct FlowLineWalk;
+  std::vector<std::int32_t> MaximumOfCells() const; ///< per Delaunay cell: its maximum, or -1
+  void RecordFlowLines(FlowLineWalk& walk);         ///< with polylines, in facet order
+  void TraceFlowLines(std::size_t i, FlowLineWalk& walk); ///< the two of index-2 point i
 
   void ScaleBack();
   void LowerPendingBounds();

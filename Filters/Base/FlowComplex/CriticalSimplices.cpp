@@ -174,22 +174,86 @@ std::vector<T> GatherSorted(
   return sorted;
 }
 
-} // namespace
-
-CriticalSimplices FindCriticalSimplices(const Triangulation& tri, const Progress& progress)
+/// The Delaunay facets that cell `id` handles (each facet is handled by the cell
+/// of smaller id, or the finite one on the hull): an obtuse one marks the edge
+/// opposite its obtuse corner not Gabriel, an acute one is critical when both
+/// apices lie strictly outside its diametral ball. Then the cell itself, if
+/// self-centred. Degeneracies are counted in `out`.
+void ClassifySimplicesOfCell(const Triangulation& tri, const EdgeLists& edges, Id id,
+  std::vector<std::atomic<std::uint8_t>>& notGabriel, SliceResult& out)
 {
   const Delaunay& dt = tri.Dt();
-  CriticalSimplices cs;
-  EdgeLists edges;
-  BuildEdgeLists(tri, edges, progress);
+  const CellHandle c = tri.Cell(id);
+  for (int i = 0; i < 4; ++i)
+  {
+    const CellHandle n = c->neighbor(i);
+    const Id nid = n->info(); // -1 for the infinite cells
+    if (nid >= 0 && nid < id)
+    {
+      continue;
+    }
+    const VertexHandle v[3] = { c->vertex((i + 1) % 4), c->vertex((i + 2) % 4),
+      c->vertex((i + 3) % 4) };
+    int obtuse = -1;
+    try
+    {
+      obtuse = ObtuseCorner(v[0]->point(), v[1]->point(), v[2]->point());
+    }
+    catch (const flowrecon::Degenerate&)
+    {
+      ++out.RightAngles;
+      continue;
+    }
+    if (obtuse >= 0)
+    {
+      notGabriel[EdgePosition(edges, v[(obtuse + 1) % 3]->info(), v[(obtuse + 2) % 3]->info())].store(
+        1, std::memory_order_relaxed);
+      continue; // an obtuse facet is not self-centred
+    }
+    // Acute: critical iff both apices lie strictly outside its diametral ball.
+    bool gabriel = true;
+    const VertexHandle apex[2] = { c->vertex(i), n->vertex(n->index(c)) };
+    for (const VertexHandle a : apex)
+    {
+      if (dt.is_infinite(a))
+      {
+        continue;
+      }
+      const CGAL::Bounded_side side =
+        FastSideOfDiametralSphere(v[0]->point(), v[1]->point(), v[2]->point(), a->point());
+      if (side == CGAL::ON_BOUNDARY)
+      {
+        ++out.ApexOnSphere;
+      }
+      gabriel = gabriel && side == CGAL::ON_UNBOUNDED_SIDE;
+    }
+    if (gabriel)
+    {
+      out.Facets.push_back({ { static_cast<std::int32_t>(id), i } });
+    }
+  }
+  // Index 3: self-centred cells (Lemma B.2).
+  try
+  {
+    if (IsSelfCentred(c))
+    {
+      out.Cells.push_back(static_cast<std::int32_t>(id));
+    }
+  }
+  catch (const flowrecon::Degenerate&)
+  {
+    ++out.CircumcentresOnFacet;
+  }
+}
 
-  // One parallel pass over the cells; each facet is handled by the cell of
-  // smaller id (or the finite one, on the hull). A facet obtuse at t puts t
-  // strictly inside the diametral ball of the opposite edge, so that edge is not
-  // Gabriel; every link vertex of an edge is the third vertex of one of its
-  // facets, so the edges never marked are exactly the Gabriel edges (CGAL's
-  // is_Gabriel, in one pass). The same pass finds the self-centred cells.
-  std::vector<std::atomic<std::uint8_t>> notGabriel(edges.Values.size());
+/// One parallel pass over the cells (ClassifySimplicesOfCell). A facet obtuse
+/// at t puts t strictly inside the diametral ball of the opposite edge, so that
+/// edge is not Gabriel; every link vertex of an edge is the third vertex of one
+/// of its facets, so the edges never marked are exactly the Gabriel edges
+/// (CGAL's is_Gabriel, in one pass). The same pass finds the self-centred cells.
+std::vector<SliceResult> ClassifySimplices(const Triangulation& tri, const EdgeLists& edges,
+  std::vector<std::atomic<std::uint8_t>>& notGabriel, const Progress& progress)
+{
   const Id nc = tri.NumberOfCells();
   const Id grain = 4096;
   std::vector<SliceResult> results(static_cast<std::size_t>((nc + grain - 1) / grain));
@@ -200,70 +264,82 @@ CriticalSimplices FindCriticalSimplices(const Triangulation& tri, const Progress
       SliceResult& out = results[chunk];
       for (Id id = chunk * grain; id < std::min(nc, (chunk + 1) * grain); ++id)
       {
-        const CellHandle c = tri.Cell(id);
-        for (int i = 0; i < 4; ++i)
+        ClassifySimplicesOfCell(tri, edges, id, notGabriel, out);
+      }
+    }
+  });
+  return results;
+}
+
+/// The critical facets and cells of all slices, sorted by vertex ids: the order
+/// is independent of the (concurrent) triangulation's cell order.
+void SortCriticalSimplices(const Triangulation& tri, std::vector<SliceResult>& results,
+  CriticalSimplices& cs)
+{
+  cs.Facets = GatherSorted<CriticalFacet>(results, &SliceResult::Facets, tri.NumberOfVertices(),
+    [&](const std::array<std::int32_t, 2>& code) {
+      const CellHandle c = tri.Cell(code[0]);
+      const int i = code[1];
+      return CriticalFacet{ Sorted<3>({ { VertexId(c, (i + 1) % 4), VertexId(c, (i + 2) % 4),
+                              VertexId(c, (i + 3) % 4) } }),
+        code[0], i };
+    });
+  cs.Cells = GatherSorted<CriticalCell>(
+    results, &SliceResult::Cells, tri.NumberOfVertices(), [&](std::int32_t id) {
+      const CellHandle c = tri.Cell(id);
+      return CriticalCell{ Sorted<4>({ { VertexId(c, 0), VertexId(c, 1), VertexId(c, 2),
+                             VertexId(c, 3) } }),
+        id };
+    });
+}
+
+/// The Gabriel edges (those never marked) in adjacency order: count per
+/// vertex, then fill.
+void GabrielEdges(const EdgeLists& edges, const std::vector<std::atomic<std::uint8_t>>& notGabriel,
+  Id m, CompressedRows<std::array<Id, 2>>& gabriel)
+{
+  std::vector<Id>& offsets = gabriel.Offsets;
+  offsets.assign(static_cast<std::size_t>(m + 1), 0);
+  tbb::parallel_for(tbb::blocked_range<Id>(0, m), [&](const tbb::blocked_range<Id>& r) {
+    for (Id u = r.begin(); u != r.end(); ++u)
+    {
+      Id count = 0;
+      for (Id k = edges.Offsets[u]; k < edges.Offsets[u + 1]; ++k)
+      {
+        count += notGabriel[k].load(std::memory_order_relaxed) ? 0 : 1;
+      }
+      offsets[u + 1] = count;
+    }
+  });
+  for (Id u = 0; u < m; ++u)
+  {
+    offsets[u + 1] += offsets[u];
+  }
+  gabriel.Values.resize(static_cast<std::size_t>(offsets[m]));
+  tbb::parallel_for(tbb::blocked_range<Id>(0, m), [&](const tbb::blocked_range<Id>& r) {
+    for (Id u = r.begin(); u != r.end(); ++u)
+    {
+      Id next = offsets[u];
+      for (Id k = edges.Offsets[u]; k < edges.Offsets[u + 1]; ++k)
+      {
+        if (!notGabriel[k].load(std::memory_order_relaxed))
         {
-          const CellHandle n = c->neighbor(i);
-          const Id nid = n->info(); // -1 for the infinite cells
-          if (nid >= 0 && nid < id)
-          {
-            continue;
-          }
-          const VertexHandle v[3] = { c->vertex((i + 1) % 4), c->vertex((i + 2) % 4),
-            c->vertex((i + 3) % 4) };
-          int obtuse = -1;
-          try
-          {
-            obtuse = ObtuseCorner(v[0]->point(), v[1]->point(), v[2]->point());
-          }
-          catch (const flowrecon::Degenerate&)
-          {
-            ++out.RightAngles;
-            continue;
-          }
-          if (obtuse >= 0)
-          {
-            notGabriel[EdgePosition(edges, v[(obtuse + 1) % 3]->info(), v[(obtuse + 2) % 3]->info())].store(
-              1, std::memory_order_relaxed);
-            continue; // an obtuse facet is not self-centred
-          }
-          // Acute: critical iff both apices lie strictly outside its diametral ball.
-          bool gabriel = true;
-          const VertexHandle apex[2] = { c->vertex(i), n->vertex(n->index(c)) };
-          for (const VertexHandle a : apex)
-          {
-            if (dt.is_infinite(a))
-            {
-              continue;
-            }
-            const CGAL::Bounded_side side =
-              FastSideOfDiametralSphere(v[0]->point(), v[1]->point(), v[2]->point(), a->point());
-            if (side == CGAL::ON_BOUNDARY)
-            {
-              ++out.ApexOnSphere;
-            }
-            gabriel = gabriel && side == CGAL::ON_UNBOUNDED_SIDE;
-          }
-          if (gabriel)
-          {
-            out.Facets.push_back({ { static_cast<std::int32_t>(id), i } });
-          }
-        }
-        // Index 3: self-centred cells (Lemma B.2).
-        try
-        {
-          if (IsSelfCentred(c))
-          {
-            out.Cells.push_back(static_cast<std::int32_t>(id));
-          }
-        }
-        catch (const flowrecon::Degenerate&)
-        {
-          ++out.CircumcentresOnFacet;
+          gabriel.Values[next++] = { { u, edges.Values[k] } };
         }
       }
     }
   });
+}
+
+} // namespace
+
+CriticalSimplices FindCriticalSimplices(const Triangulation& tri, const Progress& progress)
+{
+  CriticalSimplices cs;
+  EdgeLists edges;
+  BuildEdgeLists(tri, edges, progress);
+  std::vector<std::atomic<std::uint8_t>> notGabriel(edges.Values.size());
+  std::vector<SliceResult> results = ClassifySimplices(tri, edges, notGabriel, progress);
   Id circumcentresOnFacet = 0;
   for (const SliceResult& r : results)
   {
@@ -281,58 +357,8 @@ CriticalSimplices FindCriticalSimplices(const Triangulation& tri, const Progress
     throw Degenerate("circumcentre on a facet");
   }
   progress(0.32, "critical points");
-
-  // Lists sorted by vertex ids: the order is independent of the (concurrent)
-  // triangulation's cell order.
-  cs.Facets = GatherSorted<CriticalFacet>(results, &SliceResult::Facets, tri.NumberOfVertices(),
-    [&](const std::array<std::int32_t, 2>& code) {
-      const CellHandle c = tri.Cell(code[0]);
-      const int i = code[1];
-      return CriticalFacet{ Sorted<3>({ { VertexId(c, (i + 1) % 4), VertexId(c, (i + 2) % 4),
-                              VertexId(c, (i + 3) % 4) } }),
-        code[0], i };
-    });
-  cs.Cells = GatherSorted<CriticalCell>(
-    results, &SliceResult::Cells, tri.NumberOfVertices(), [&](std::int32_t id) {
-      const CellHandle c = tri.Cell(id);
-      return CriticalCell{ Sorted<4>({ { VertexId(c, 0), VertexId(c, 1), VertexId(c, 2),
-                             VertexId(c, 3) } }),
-        id };
-    });
-
-  // Gabriel edges in adjacency order: count per vertex, then fill.
-  const Id m = tri.NumberOfVertices();
-  std::vector<Id>& offsets = cs.Edges.Offsets;
-  offsets.assign(static_cast<std::size_t>(m + 1), 0);
-  tbb::parallel_for(tbb::blocked_range<Id>(0, m), [&](const tbb::blocked_range<Id>& r) {
-    for (Id u = r.begin(); u != r.end(); ++u)
-    {
-      Id count = 0;
-      for (Id k = edges.Offsets[u]; k < edges.Offsets[u + 1]; ++k)
-      {
-        count += notGabriel[k].load(std::memory_order_relaxed) ? 0 : 1;
-      }
-      offsets[u + 1] = count;
-    }
-  });
-  for (Id u = 0; u < m; ++u)
-  {
-    offsets[u + 1] += offsets[u];
-  }
-  cs.Edges.Values.resize(static_cast<std::size_t>(offsets[m]));
-  tbb::parallel_for(tbb::blocked_range<Id>(0, m), [&](const tbb::blocked_range<Id>& r) {
-    for (Id u = r.begin(); u != r.end(); ++u)
-    {
-      Id next = offsets[u];
-      for (Id k = edges.Offsets[u]; k < edges.Offsets[u + 1]; ++k)
-      {
-        if (!notGabriel[k].load(std::memory_order_relaxed))
-        {
-          cs.Edges.Values[next++] = { { u, edges.Values[k] } };
-        }
-      }
-    }
-  });
+  SortCriticalSimplices(tri, results, cs);
+  GabrielEdges(edges, notGabriel, tri.NumberOfVertices(), cs.Edges);
   return cs;
 }
 

@@ -249,34 +249,38 @@ void DeferredFlowLines::FollowBoundsUpTo(double value)
   this->Follow(nodes);
 }
 
+void DeferredFlowLines::AppendRawRow(std::size_t k, std::vector<Arc>& arcs) const
+{
+  std::int32_t ends[2] = { -1, -1 };
+  for (Id l = this->PendingBegin[k]; l < this->PendingBegin[k + 1]; ++l)
+  {
+    ends[this->Lines[l].Side] = this->Lines[l].Target;
+  }
+  const std::int32_t other = this->Other[k];
+  for (std::int32_t& e : ends)
+  {
+    e = e >= 0 ? e : other;
+  }
+  const Id x = this->Pending[k];
+  if (ends[0] == ends[1])
+  {
+    arcs.emplace_back(x, ends[0], 2);
+  }
+  else
+  {
+    arcs.emplace_back(x, ends[0], 1);
+    arcs.emplace_back(x, ends[1], 1);
+  }
+}
+
 std::vector<Arc> DeferredFlowLines::FollowedRawArcs() const
 {
   std::vector<Arc> arcs;
   for (std::size_t k = 0; k < this->Pending.size(); ++k)
   {
-    if (!this->Done[k])
+    if (this->Done[k])
     {
-      continue;
-    }
-    std::int32_t ends[2] = { -1, -1 };
-    for (Id l = this->PendingBegin[k]; l < this->PendingBegin[k + 1]; ++l)
-    {
-      ends[this->Lines[l].Side] = this->Lines[l].Target;
-    }
-    const std::int32_t other = this->Other[k];
-    for (std::int32_t& e : ends)
-    {
-      e = e >= 0 ? e : other;
-    }
-    const Id x = this->Pending[k];
-    if (ends[0] == ends[1])
-    {
-      arcs.emplace_back(x, ends[0], 2);
-    }
-    else
-    {
-      arcs.emplace_back(x, ends[0], 1);
-      arcs.emplace_back(x, ends[1], 1);
+      this->AppendRawRow(k, arcs);
     }
   }
   return arcs;
@@ -432,12 +436,11 @@ std::vector<std::pair<Id, int>> DeferredFlowLines::FinalArcs(Id x) const
   // The row of x through the 2-3 cancellations, as the simplifier changes it
   // (HasseDiagram::FlipParity: odd -> gone, even -> 1), in pair order.
   std::map<Id, std::pair<int, bool>> row; // maximum -> (multiplicity, touched)
-  for (const Arc& a : this->FollowedRawArcs())
+  std::vector<Arc> raw; // x's own raw row: all the raw arcs would make the callers quadratic
+  this->AppendRawRow(k, raw);
+  for (const Arc& a : raw)
   {
-    if (a.Lower == x)
-    {
-      row[a.Upper].first += a.Multiplicity;
-    }
+    row[a.Upper].first += a.Multiplicity;
   }
   std::map<std::int32_t, Id> queue; // pair -> the maximum it removes
   for (const auto& e : row)

@@ -143,6 +143,8 @@ private:
   std::vector<double> SortedValues, SuffixLow; ///< maxima by value; min LowExp from there on
 
   std::size_t Position(Id node) const; ///< in Pending; npos when absent
+  /// Appends the raw 2-3 arcs of the followed Pending[k].
+  void AppendRawRow(std::size_t k, std::vector<Arc>& arcs) const;
   void MakeForest();
   double LeastBound(std::size_t k) const;
 };

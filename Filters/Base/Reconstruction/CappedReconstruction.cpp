@@ -37,14 +37,11 @@ CappedBuild Build(const std::vector<Point3>& points, const BuildOptions& options
   return b;
 }
 
-/// The rest of the run from `b`, at t_p (<= b's): b's parts are copied, or
-/// moved when `take`.
-CappedReconstruction Continue(CappedBuild& b, double tp, bool take, const Progress& progress)
+/// The build's complex for one run, copied or taken (`take`), with the 2-3 arcs
+/// and (for the topology) the 1-2 arcs as built, out of the build's arcs: the
+/// build does not hold them a second time.
+void TakeBuild(CappedBuild& b, bool take, CappedReconstruction& r)
 {
-  CappedReconstruction r;
-  const double cap = b.Cap;
-  // The 2-3 arcs and (for the topology) the 1-2 arcs as built, out of the
-  // build's arcs: the build does not hold them a second time.
   const auto lowerIndex = [&b](const Arc& a) { return b.Complex.Nodes[a.Lower].Index; };
   std::size_t cones = 0, raw = 0;
   for (const Arc& a : b.Complex.Arcs)
@@ -86,42 +83,47 @@ CappedReconstruction Continue(CappedBuild& b, double tp, bool take, const Progre
     r.Complex = std::move(b.Complex);
   }
   r.Triangulation = b.Triangulation;
+  r.DeferredPatches = static_cast<Id>(r.Complex.DeferredPatches.size());
+}
+
+/// The flow lines the build stopped, and before a simplification those its
+/// 2-3 cancellations will likely need.
+void DeferLines(CappedReconstruction& r, double tp)
+{
   FlowComplex& fc = r.Complex;
-  r.DeferredPatches = static_cast<Id>(fc.DeferredPatches.size());
-  auto t = std::chrono::steady_clock::now();
-  auto lap = [&t]() {
-    const auto now = std::chrono::steady_clock::now();
-    const double seconds = std::chrono::duration<double>(now - t).count();
-    t = now;
-    return seconds;
-  };
-  r.Simplified = tp >= 1; // below 1 nothing is cancelled
-  if (!fc.PendingFlowLines.empty())
+  if (fc.PendingFlowLines.empty())
   {
-    r.Lines = std::make_unique<DeferredFlowLines>(fc, r.Cones, *r.Triangulation);
-    std::vector<PendingFlowLine>().swap(fc.PendingFlowLines);
-    if (r.Simplified)
-    {
-      // The likely lowers of 2-3 cancellations: their Out lists move (see
-      // DeferredFlowLines.h). Any other one makes the run start again eagerly.
-      std::vector<Id> pivots;
-      for (const Arc& a : r.Cones)
-      {
-        if (r.Lines->IsPending(a.Lower) &&
-          PersistenceRatio(fc.Nodes[a.Upper].Value, fc.Nodes[a.Lower].Value) <= tp * tp)
-        {
-          pivots.push_back(a.Lower);
-        }
-      }
-      r.Lines->Follow(pivots);
-      r.Lines->CompleteRawArcs(fc.Arcs);
-    }
+    return;
   }
-  const bool late = !fc.DeferredPatches.empty() || r.Lines;
+  r.Lines = std::make_unique<DeferredFlowLines>(fc, r.Cones, *r.Triangulation);
+  std::vector<PendingFlowLine>().swap(fc.PendingFlowLines);
+  if (r.Simplified)
+  {
+    // The likely lowers of 2-3 cancellations: their Out lists move (see
+    // DeferredFlowLines.h). Any other one makes the run start again eagerly.
+    std::vector<Id> pivots;
+    for (const Arc& a : r.Cones)
+    {
+      if (r.Lines->IsPending(a.Lower) &&
+        PersistenceRatio(fc.Nodes[a.Upper].Value, fc.Nodes[a.Lower].Value) <= tp * tp)
+      {
+        pivots.push_back(a.Lower);
+      }
+    }
+    r.Lines->Follow(pivots);
+    r.Lines->CompleteRawArcs(fc.Arcs);
+  }
+}
+
+/// The cancellations at t_p (when Simplified); then the deferred lines give
+/// every arc below the cap.
+void SimplifyRun(CappedReconstruction& r, double tp, double cap, const Progress& progress)
+{
+  FlowComplex& fc = r.Complex;
   if (r.Simplified)
   {
     // The replays record what they need: Lowers for patches, Uppers for lines.
-    r.Simplification = Simplify(fc.Nodes, std::move(fc.Arcs), tp, progress.Range(0, 0.5),
+    r.Simplification = Simplify(fc.Nodes, std::move(fc.Arcs), tp, progress,
       !fc.DeferredPatches.empty(), r.Lines != nullptr);
     fc.Arcs = std::move(r.Simplification.Arcs); // the reconstruction grows on the simplified diagram
     r.Simplification.Arcs = {};
@@ -138,10 +140,12 @@ CappedReconstruction Continue(CappedBuild& b, double tp, bool take, const Progre
     r.Lines->Follow(r.Lines->NodesBelowRatio(cap));
     r.Lines->CompleteSimplifiedArcs(fc.Arcs);
   }
-  r.SimplificationSeconds = lap();
-  // The simplification's In/Out lists were tbbmalloc's; the queue allocates
-  // from glibc's heap, which cannot reuse them.
-  ReleaseFreedMemory();
+}
+
+/// The queue up to the cap; `late`: it walks what the build deferred.
+void GrowRun(CappedReconstruction& r, double cap, bool late, const Progress& progress)
+{
+  FlowComplex& fc = r.Complex;
   const std::vector<bool> survives =
     r.Simplified ? r.Simplification.Survives : std::vector<bool>(fc.Nodes.size(), true);
   const std::vector<Id> init =
@@ -149,18 +153,40 @@ CappedReconstruction Continue(CappedBuild& b, double tp, bool take, const Progre
   const SimplificationResult* s = r.Simplified ? &r.Simplification : nullptr;
   if (!late)
   {
-    r.Run = Reconstruct(fc.Nodes, fc.Arcs, survives, init, cap, progress.Range(0.5, 1.0));
+    r.Run = Reconstruct(fc.Nodes, fc.Arcs, survives, init, cap, progress);
     r.Carriers = CellCarriers(r.Run, s);
-    r.QueueSeconds = lap();
-    return r;
+    return;
   }
   DeferredReconstruction walked = ReconstructDeferred(fc,
-    r.Simplified ? &r.Simplification : nullptr, *r.Triangulation, init, cap,
-    progress.Range(0.5, 1.0), r.Lines.get());
+    r.Simplified ? &r.Simplification : nullptr, *r.Triangulation, init, cap, progress, r.Lines.get());
   r.Run = std::move(walked.Run);
   r.Carriers = std::move(walked.Carriers);
   r.WalkedLate = walked.WalkedLate;
   r.ReplayedOwners = walked.ReplayedOwners;
+}
+
+/// The rest of the run from `b`, at t_p (<= b's): b's parts are copied, or
+/// moved when `take`.
+CappedReconstruction Continue(CappedBuild& b, double tp, bool take, const Progress& progress)
+{
+  CappedReconstruction r;
+  TakeBuild(b, take, r);
+  auto t = std::chrono::steady_clock::now();
+  auto lap = [&t]() {
+    const auto now = std::chrono::steady_clock::now();
+    const double seconds = std::chrono::duration<double>(now - t).count();
+    t = now;
+    return seconds;
+  };
+  r.Simplified = tp >= 1; // below 1 nothing is cancelled
+  DeferLines(r, tp);
+  const bool late = !r.Complex.DeferredPatches.empty() || r.Lines;
+  SimplifyRun(r, tp, b.Cap, progress.Range(0, 0.5));
+  r.SimplificationSeconds = lap();
+  // The simplification's In/Out lists were tbbmalloc's; the queue allocates
+  // from glibc's heap, which cannot reuse them.
+  ReleaseFreedMemory();
+  GrowRun(r, b.Cap, late, progress.Range(0.5, 1.0));
   r.QueueSeconds = lap();
   return r;
 }

@@ -172,109 +172,168 @@ void CheckArc(const Arc& a, Id nodeCount, const std::vector<Slot>& of, Tally& t)
   }
 }
 
+bool Odd(const Arc& a)
+{
+  return a.Multiplicity % 2 == 1;
+}
+
+std::size_t CountSet(const std::vector<std::atomic<std::uint8_t>>& v)
+{
+  return static_cast<std::size_t>(std::count_if(v.begin(), v.end(),
+    [](const std::atomic<std::uint8_t>& x) { return x.load(std::memory_order_relaxed) != 0; }));
+}
+
 /// The flow complex lists the arcs of a node together: the arcs into an index-1
 /// node, into an index-2 node, out of an index-2 node. Each such run of arcs is
 /// read by the thread that meets its first arc, with no atomic read-modify-write;
 /// each node must have at most one run of each kind (else NotGrouped). An arc is
 /// checked with its run (into index 1 or 2) or alone (the others).
+class RunReader
+{
+public:
+  RunReader(const std::vector<Arc>& arcs, const std::vector<Slot>& of,
+    const std::array<std::size_t, 4>& n, Boundaries& b)
+    : Arcs(arcs)
+    , Of(of)
+    , B(b)
+    , NodeCount(static_cast<Id>(of.size()))
+    , SeenIn1(n[1])
+    , SeenOut2(n[2])
+  {
+  }
+
+  /// Arc i: the run it starts, or the arc alone.
+  void Read(std::size_t i, Tally& t)
+  {
+    const Arc& a = this->Arcs[i];
+    const Slot up = this->Valid(a.Upper) ? this->Of[a.Upper] : Slot{ -1, -2 };
+    if (up.Index == 1 || up.Index == 2)
+    {
+      if (i == 0 || this->Arcs[i - 1].Upper != a.Upper) // else read with its run
+      {
+        this->ReadRunInto(i, up, t);
+      }
+      return;
+    }
+    // An arc into index 0, 3, infinity, or a node that does not exist.
+    if (Odd(a))
+    {
+      if (up.Index == -2 || !this->Valid(a.Lower))
+      {
+        t.MissingNode = true;
+        return;
+      }
+      const Slot lo = this->Of[a.Lower];
+      t.Usable = t.Usable && (lo.Index < 0 || up.Index < 0 || up.Index == lo.Index + 1);
+    }
+    if (this->Valid(a.Lower) && (i == 0 || this->Arcs[i - 1].Lower != a.Lower) &&
+      this->Of[a.Lower].Index == 2)
+    {
+      // The arcs out of an index-2 node (an arc into index 1 or 2 out of it
+      // is wrong, and found with the runs into those nodes).
+      this->ReadRunOutOf(i, this->Of[a.Lower].Rank, t);
+    }
+  }
+
+  /// Whether every node met had one run of each kind.
+  bool Grouped(const Tally& t) const
+  {
+    const std::size_t runsIn2 =
+      static_cast<std::size_t>(std::count_if(this->B.RunLength.begin(), this->B.RunLength.end(),
+        [](const std::atomic<Int>& x) { return x.load(std::memory_order_relaxed) > 0; }));
+    return t.Runs[0] == CountSet(this->SeenIn1) && t.Runs[1] == runsIn2 &&
+      t.Runs[2] == CountSet(this->SeenOut2);
+  }
+
+private:
+  bool Valid(Id node) const { return node >= 0 && node < this->NodeCount; }
+
+  /// The run into index-1 or index-2 node `up` that starts at arc i.
+  void ReadRunInto(std::size_t i, Slot up, Tally& t)
+  {
+    const Id upper = this->Arcs[i].Upper;
+    std::size_t j = i + 1;
+    while (j < this->Arcs.size() && this->Arcs[j].Upper == upper)
+    {
+      ++j;
+    }
+    if (up.Index == 2)
+    {
+      this->B.RunBegin[up.Rank].store(static_cast<std::int64_t>(i), std::memory_order_relaxed);
+      this->B.RunLength[up.Rank].store(static_cast<Int>(j - i), std::memory_order_relaxed);
+      ++t.Runs[1];
+      return; // its arcs are read and checked with the faces
+    }
+    Int ends[2] = { -1, -1 }, count = 0;
+    for (std::size_t k = i; k < j; ++k)
+    {
+      const Arc& e = this->Arcs[k];
+      if (!Odd(e))
+      {
+        continue;
+      }
+      if (!this->Valid(e.Lower))
+      {
+        t.MissingNode = true;
+        continue;
+      }
+      const Slot lo = this->Of[e.Lower];
+      if (lo.Index == 0 && count < 2)
+      {
+        ends[count] = lo.Rank;
+      }
+      count += lo.Index == 0 ? 1 : 0;
+      t.Usable = t.Usable && (lo.Index == 0 || lo.Index == -1);
+    }
+    t.Usable = t.Usable && count <= 2;
+    this->B.EdgeEnds.Set(up.Rank, std::min<Int>(count, 2), ends[0], ends[1]);
+    this->SeenIn1[up.Rank].store(1, std::memory_order_relaxed);
+    ++t.Runs[0];
+  }
+
+  /// The run out of index-2 node of rank f that starts at arc i.
+  void ReadRunOutOf(std::size_t i, Int f, Tally& t)
+  {
+    const Id lower = this->Arcs[i].Lower;
+    Int ends[2] = { -1, -1 }, count = 0;
+    for (std::size_t k = i; k < this->Arcs.size() && this->Arcs[k].Lower == lower; ++k)
+    {
+      const Arc& e = this->Arcs[k];
+      if (Odd(e) && this->Valid(e.Upper) && this->Of[e.Upper].Index == 3)
+      {
+        if (count < 2)
+        {
+          ends[count] = this->Of[e.Upper].Rank;
+        }
+        ++count;
+      }
+    }
+    t.Usable = t.Usable && count <= 2;
+    this->B.FaceEnds.Set(f, std::min<Int>(count, 2), ends[0], ends[1]);
+    this->SeenOut2[f].store(1, std::memory_order_relaxed);
+    ++t.Runs[2];
+  }
+
+  const std::vector<Arc>& Arcs;
+  const std::vector<Slot>& Of;
+  Boundaries& B;
+  const Id NodeCount;
+  std::vector<std::atomic<std::uint8_t>> SeenIn1, SeenOut2; ///< runs met, per node
+};
+
+/// Gathers by runs (RunReader), or says why not.
 Gathering GatherByRuns(const std::vector<Arc>& arcs, const std::vector<Slot>& of,
   const std::vector<Int>& index2ById, const std::array<std::size_t, 4>& n, Boundaries& b)
 {
-  const std::size_t m = arcs.size();
-  const Id nodeCount = static_cast<Id>(of.size());
-  auto valid = [&](Id node) { return node >= 0 && node < nodeCount; };
-  auto odd = [](const Arc& a) { return a.Multiplicity % 2 == 1; };
-  std::vector<std::atomic<std::uint8_t>> seenIn1(n[1]), seenOut2(n[2]);
+  RunReader reader(arcs, of, n, b);
   std::vector<std::atomic<std::int64_t>>(n[2]).swap(b.RunBegin);
   std::vector<std::atomic<Int>>(n[2]).swap(b.RunLength); // arcs into each index-2 node
-  auto& runBegin = b.RunBegin;
-  auto& runLength = b.RunLength;
   const Tally tally = tbb::parallel_reduce(
-    tbb::blocked_range<std::size_t>(0, m, 4096), Tally(),
+    tbb::blocked_range<std::size_t>(0, arcs.size(), 4096), Tally(),
     [&](const tbb::blocked_range<std::size_t>& r, Tally t) {
       for (std::size_t i = r.begin(); i < r.end(); ++i)
       {
-        const Arc& a = arcs[i];
-        const Slot up = valid(a.Upper) ? of[a.Upper] : Slot{ -1, -2 };
-        if (up.Index == 1 || up.Index == 2)
-        {
-          if (i > 0 && arcs[i - 1].Upper == a.Upper)
-          {
-            continue; // read with its run
-          }
-          std::size_t j = i + 1;
-          while (j < m && arcs[j].Upper == a.Upper)
-          {
-            ++j;
-          }
-          if (up.Index == 2)
-          {
-            runBegin[up.Rank].store(static_cast<std::int64_t>(i), std::memory_order_relaxed);
-            runLength[up.Rank].store(static_cast<Int>(j - i), std::memory_order_relaxed);
-            ++t.Runs[1];
-            continue; // its arcs are read and checked with the faces
-          }
-          Int ends[2] = { -1, -1 }, count = 0;
-          for (std::size_t k = i; k < j; ++k)
-          {
-            const Arc& e = arcs[k];
-            if (!odd(e))
-            {
-              continue;
-            }
-            if (!valid(e.Lower))
-            {
-              t.MissingNode = true;
-              continue;
-            }
-            const Slot lo = of[e.Lower];
-            if (lo.Index == 0 && count < 2)
-            {
-              ends[count] = lo.Rank;
-            }
-            count += lo.Index == 0 ? 1 : 0;
-            t.Usable = t.Usable && (lo.Index == 0 || lo.Index == -1);
-          }
-          t.Usable = t.Usable && count <= 2;
-          b.EdgeEnds.Set(up.Rank, std::min<Int>(count, 2), ends[0], ends[1]);
-          seenIn1[up.Rank].store(1, std::memory_order_relaxed);
-          ++t.Runs[0];
-          continue;
-        }
-        // An arc into index 0, 3, infinity, or a node that does not exist.
-        if (odd(a))
-        {
-          if (up.Index == -2 || !valid(a.Lower))
-          {
-            t.MissingNode = true;
-            continue;
-          }
-          const Slot lo = of[a.Lower];
-          t.Usable = t.Usable && (lo.Index < 0 || up.Index < 0 || up.Index == lo.Index + 1);
-        }
-        if (valid(a.Lower) && (i == 0 || arcs[i - 1].Lower != a.Lower) && of[a.Lower].Index == 2)
-        {
-          // The arcs out of an index-2 node (an arc into index 1 or 2 out of it
-          // is wrong, and found with the runs into those nodes).
-          const Int f = of[a.Lower].Rank;
-          Int ends[2] = { -1, -1 }, count = 0;
-          for (std::size_t k = i; k < m && arcs[k].Lower == a.Lower; ++k)
-          {
-            const Arc& e = arcs[k];
-            if (odd(e) && valid(e.Upper) && of[e.Upper].Index == 3)
-            {
-              if (count < 2)
-              {
-                ends[count] = of[e.Upper].Rank;
-              }
-              ++count;
-            }
-          }
-          t.Usable = t.Usable && count <= 2;
-          b.FaceEnds.Set(f, std::min<Int>(count, 2), ends[0], ends[1]);
-          seenOut2[f].store(1, std::memory_order_relaxed);
-          ++t.Runs[2];
-        }
+        reader.Read(i, t);
       }
       return t;
     },
@@ -290,15 +349,7 @@ Gathering GatherByRuns(const std::vector<Arc>& arcs, const std::vector<Slot>& of
   {
     return Gathering::Unusable;
   }
-  auto seen = [](const std::vector<std::atomic<std::uint8_t>>& v) {
-    return static_cast<std::size_t>(std::count_if(v.begin(), v.end(),
-      [](const std::atomic<std::uint8_t>& x) { return x.load(std::memory_order_relaxed) != 0; }));
-  };
-  const std::size_t runsIn2 =
-    static_cast<std::size_t>(std::count_if(runLength.begin(), runLength.end(),
-      [](const std::atomic<Int>& x) { return x.load(std::memory_order_relaxed) > 0; }));
-  if (tally.Runs[0] != seen(seenIn1) || tally.Runs[1] != runsIn2 ||
-    tally.Runs[2] != seen(seenOut2))
+  if (!reader.Grouped(tally))
   {
     return Gathering::NotGrouped;
   }
@@ -308,7 +359,7 @@ Gathering GatherByRuns(const std::vector<Arc>& arcs, const std::vector<Slot>& of
   {
     const Int f = of[id].Rank;
     b.Begin[f] = at;
-    at += runLength[f].load(std::memory_order_relaxed);
+    at += b.RunLength[f].load(std::memory_order_relaxed);
   }
   b.Rows.resize(static_cast<std::size_t>(at));
   b.Runs = true;

@@ -25,6 +25,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkPolyDataReader.h"
 #include "vtkPolyDataWriter.h"
 #include "vtkSmartPointer.h"
 #include "vtkStringArray.h"
@@ -32,6 +33,7 @@
 #include "vtkUnstructuredGrid.h"
 #include "vtkXMLImageDataWriter.h"
 #include "vtkXMLMultiBlockDataWriter.h"
+#include "vtkXMLPolyDataReader.h"
 #include "vtkXMLPolyDataWriter.h"
 #include "vtkXMLUnstructuredGridWriter.h"
 
@@ -141,6 +143,25 @@ void ExpectError(const std::string& path, int line, const std::string& words)
   }
 }
 
+// A VTK file VTK's reader cannot read, refused with one line naming it, whatever
+// the reader does: an error of its own, or (VTK 9.2, found by fuzzing) a crash,
+// a hang, an allocation without bound, a leak. The reader runs in a child
+// process (IsolatedRead.h), so these only end that process.
+void ExpectRefused(const std::string& path)
+{
+  const Result r = Read(path);
+  const bool ok = !r.Ok && r.Message.rfind(path + ": ", 0) == 0 &&
+    (r.Message.find(": cannot read legacy VTK file (") != std::string::npos ||
+      r.Message.find(": cannot read VTK XML file (") != std::string::npos ||
+      r.Message.find(": out of memory") != std::string::npos) &&
+    r.Message.find('\n') == std::string::npos && r.ErrorEvents.find(r.Message) != std::string::npos;
+  CHECK(ok);
+  if (!ok)
+  {
+    std::cout << "  " << path << ": ok=" << r.Ok << " message [" << r.Message << "]\n";
+  }
+}
+
 // Big-endian bytes of a float (the PLY test below is written by hand).
 std::string BigEndian(float value)
 {
@@ -236,24 +257,20 @@ void TestTextFormats()
 void TestBadInput()
 {
   ExpectError(PathOf("missing.xyz"), 0, "no such file");
-  // An image's points are implicit: 10^9 of them fit in a few bytes (fuzzing,
-  // #12); the memory guard refuses them before anything is allocated (under a
+  // An image's points are implicit: 10^9 of them fit in a few bytes (fuzzing);
+  // the memory guard refuses them before anything is allocated (under a
   // limit of 16 GB, whatever the machine has).
   setenv("FLOWRECON_MEMORY_LIMIT", "16000000000", 1);
-  // String coordinates: VTK reads them, then leaks them (fuzzing, #12).
-  ExpectError(Write("string_points.vtk",
-                "# vtk DataFile Version 5.1\ns\nASCII\nDATASET POLYDATA\nPOINTS 1 utf8_string\n"
-                "a\nb\nc\n"),
-    5, "coordinates of type 'utf8_string': coordinates are numbers");
-  ExpectError(Write("glued_points.vtk",
-                "# vtk DataFile Version 5.1\ns\nASCII\nDATASET POLYDATA\nPOINTS  12string\n"
-                "a\nb\nc\n"),
-    5, "coordinates of type 'string': coordinates are numbers");
-  // VTK 9.2 loops forever on 256 blanks after an array (fuzzing, #12).
-  ExpectError(Write("blanks.vtk",
-                "# vtk DataFile Version 3.0\nb\nASCII\nDATASET POLYDATA\nPOINTS 1 double\n"
-                "0 0 0" + std::string(300, ' ') + "\n"),
-    6, "256 blanks in a row");
+  // String coordinates: VTK 9.2 reads them, leaks them and finds no points (fuzzing).
+  ExpectRefused(Write("string_points.vtk",
+    "# vtk DataFile Version 5.1\ns\nASCII\nDATASET POLYDATA\nPOINTS 1 utf8_string\na\nb\nc\n"));
+  ExpectRefused(Write("glued_points.vtk",
+    "# vtk DataFile Version 5.1\ns\nASCII\nDATASET POLYDATA\nPOINTS  12string\na\nb\nc\n"));
+  // VTK 9.2 loops forever on 256 blanks after an array (fuzzing): the child
+  // is stopped after 10 s without input or output.
+  ExpectRefused(Write("blanks.vtk",
+    "# vtk DataFile Version 3.0\nb\nASCII\nDATASET POLYDATA\nPOINTS 1 double\n0 0 0" +
+      std::string(300, ' ') + "\n"));
   ExpectError(Write("implicit.vtk",
                 "# vtk DataFile Version 3.0\nimage\nASCII\nDATASET STRUCTURED_POINTS\n"
                 "DIMENSIONS 1000 1000 1000\nORIGIN 0 0 0\nSPACING 1 1 1\n" +
@@ -306,18 +323,14 @@ void TestBadInput()
     Write("garbage.ply", std::string("\x7f\x45LF\x02\x01\x01\x00 junk", 13)), 0, "not a PLY file");
   ExpectError(Write("garbage.vtp", std::string("\x89PNG\r\n\x1a\n\x00\x00 junk", 14)), 0,
     "cannot read VTK XML file");
-  ExpectError(Write("huge.vtk",
-                "# vtk DataFile Version 3.0\nx\nASCII\nDATASET POLYDATA\n"
-                "POINTS 999999999999 float\n1 2 3\n"),
-    5, "invalid count");
+  ExpectRefused(Write("huge.vtk",
+    "# vtk DataFile Version 3.0\nx\nASCII\nDATASET POLYDATA\nPOINTS 999999999999 float\n1 2 3\n"));
   ExpectError(Write("truncated.vtk",
                 "# vtk DataFile Version 3.0\nx\nASCII\nDATASET POLYDATA\nPOINTS 3 float\n"
                 "1 2 3\n4 5 6\n"),
     0, "cannot read legacy VTK file");
-  ExpectError(Write("version.vtk",
-                "# vtk DataFile Version 1e30.1\nx\nASCII\nDATASET POLYDATA\nPOINTS 1 float\n"
-                "1 2 3\n"),
-    1, "not a legacy VTK file");
+  ExpectRefused(Write("version.vtk",
+    "# vtk DataFile Version 1e30.1\nx\nASCII\nDATASET POLYDATA\nPOINTS 1 float\n1 2 3\n"));
 }
 
 // What the libraries' readers get wrong: each case below is misread by
@@ -428,77 +441,61 @@ void ExpectArray(const std::string& path, const char* name, const std::vector<do
 }
 
 // Copies `source` with the first `from` replaced by `to` and expects the reader
-// to refuse the copy, naming the line of the change.
+// to refuse the copy.
 std::string Slurp(const std::string& path);
 
-void Corrupt(const char* source, const char* target, const std::string& from, const std::string& to,
-  const std::string& words)
+void Corrupt(const char* source, const char* target, const std::string& from, const std::string& to)
 {
-  std::ifstream in(PathOf(source), std::ios::binary);
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string text = Slurp(PathOf(source));
   const std::size_t at = text.find(from);
   CHECK(at != std::string::npos);
   if (at != std::string::npos)
   {
     text.replace(at, from.size(), to);
-    const int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + at, '\n'));
-    ExpectError(Write(target, text), line, words);
+    ExpectRefused(Write(target, text));
   }
 }
 
 // FIELD blocks before POINT_DATA and CELL_DATA: VTK 9.2 reads them and then
-// uses a null pointer when they are invalid, so the reader refuses them first;
-// valid ones, as VTK writes them (every type, ASCII and binary), still read.
+// uses a null pointer when they are invalid (found by fuzzing), so its reader
+// crashes in the child process and the file is refused; valid ones, as VTK
+// writes them (every type, ASCII and binary), still read.
 void TestFieldBlocks()
 {
   const std::string head = "# vtk DataFile Version 3.0\nx\nASCII\nDATASET POLYDATA\n";
   const std::string points = "POINTS 4 double\n0 0 0 1 0 0 0 1 0 0 0 1\n";
-  // The fuzzer's dataset_field.vtk (no version digits, empty title).
-  ExpectError(
-    Write("dataset_field.vtk", "# vtk DataFile Version 1\n\nASCII\nDATASET POLYDATA\nfield\n"), 5,
-    "FIELD block without a name and an array count");
-  ExpectError(
-    Write("field_one_line.vtk", "# vtk DataFile Version 3.0\nx\nASCII\nDATASET POLYDATA field\n"),
-    4, "FIELD block without a name and an array count");
-  // Where VTK reads on after bad points (found by fuzzing): FIELD taken for the
-  // type of the points, a value short, a number glued to the keyword.
-  ExpectError(Write("points_no_type.vtk", head + "POINTS 4\nFIELD FieldData 1\nT 1 1 bogus\n0.5\n"),
-    6, "FIELD block without a name and an array count");
-  ExpectError(Write("points_short.vtk",
-                head + "POINTS 8 double\n" + points.substr(16) + "FIELD F 1\nT 1 1 bogus\n0.5\n"),
-    8, "FIELD block 'F', array 'T': unknown type 'bogus'");
-  ExpectError(Write("points_glued.vtk", head + "POINTS 1 double\n0 0 1field\n"), 6,
-    "FIELD block without a name and an array count");
-  ExpectError(Write("field_no_count.vtk", head + "FIELD FieldData\n" + points), 5,
-    "FIELD block without a name and an array count");
-  // The fuzzer's dataset_field_bad_type.vtk.
-  ExpectError(Write("dataset_field_bad_type.vtk",
-                head + points + "FIELD FieldData 1\nTemp 1 1 bogus\n0.5\n"),
-    8, "FIELD block 'FieldData', array 'Temp': unknown type 'bogus'");
-  ExpectError(Write("field_second_type.vtk",
-                head + "FIELD FieldData 2\nA 1 4 float\n1 2 3 4\nB 1 1 bogus\n0\n" + points),
-    8, "FIELD block 'FieldData', array 'B': unknown type 'bogus'");
-  ExpectError(
-    Write("field_header.vtk", head + "FIELD FieldData 1\nTemp 1 float\n0.5\n" + points), 6,
-    "FIELD block 'FieldData', array 'Temp': expected 'name components tuples type'");
-  ExpectError(Write("field_truncated.vtk", head + points + "FIELD F 1\nA 1 4 float\n1 2\n"), 8,
-    "FIELD block 'F', array 'A': the file ends inside its values");
-  ExpectError(
-    Write("field_huge.vtk", head + "FIELD FieldData 1\nA 1 99999999999 float\n1\n" + points), 6,
-    "invalid count");
-  // Cells before version 5: point counts past the cell list (found by fuzzing:
-  // vtkCellArray::ImportLegacyFormat read past it).
-  ExpectError(Write("legacy_cells.vtk", head + points + "VERTICES 1 2\n5 0\n"), 7,
-    "'vertices': a cell of 5 points runs past the end of the cell list");
-  // Keywords are prefixes to VTK; a vector length in array metadata is a count.
-  ExpectError(
-    Write("pointsx.vtk", head + "POINTSX 999999999999 float\n1 2 3\n"), 5, "invalid count");
-  ExpectError(Write("metadata.vtk",
-                head + points +
-                  "POINT_DATA 4\nSCALARS s float 1\nLOOKUP_TABLE default\n1 2 3 4\nMETADATA\n"
-                  "INFORMATION 1\nNAME L2_NORM_RANGE LOCATION vtkDataArray\n"
-                  "DATA 2000000000 0 1\n\n"),
-    14, "invalid count");
+  const std::pair<const char*, std::string> refused[] = {
+    // the fuzzer's dataset_field.vtk (no version digits, empty title)
+    { "dataset_field.vtk", "# vtk DataFile Version 1\n\nASCII\nDATASET POLYDATA\nfield\n" },
+    { "field_one_line.vtk", "# vtk DataFile Version 3.0\nx\nASCII\nDATASET POLYDATA field\n" },
+    // where VTK reads on after bad points: FIELD taken for the type of the
+    // points, a value short, a number glued to the keyword
+    { "points_no_type.vtk", head + "POINTS 4\nFIELD FieldData 1\nT 1 1 bogus\n0.5\n" },
+    { "points_short.vtk",
+      head + "POINTS 8 double\n" + points.substr(16) + "FIELD F 1\nT 1 1 bogus\n0.5\n" },
+    { "points_glued.vtk", head + "POINTS 1 double\n0 0 1field\n" },
+    { "field_no_count.vtk", head + "FIELD FieldData\n" + points },
+    // the fuzzer's dataset_field_bad_type.vtk
+    { "dataset_field_bad_type.vtk", head + points + "FIELD FieldData 1\nTemp 1 1 bogus\n0.5\n" },
+    { "field_second_type.vtk",
+      head + "FIELD FieldData 2\nA 1 4 float\n1 2 3 4\nB 1 1 bogus\n0\n" + points },
+    { "field_header.vtk", head + "FIELD FieldData 1\nTemp 1 float\n0.5\n" + points },
+    { "field_truncated.vtk", head + points + "FIELD F 1\nA 1 4 float\n1 2\n" },
+    { "field_huge.vtk", head + "FIELD FieldData 1\nA 1 99999999999 float\n1\n" + points },
+    // cells before version 5: a point count far past the cell list, which
+    // vtkCellArray::ImportLegacyFormat reads past (found by fuzzing)
+    { "legacy_cells.vtk", head + points + "VERTICES 1 2\n100000000 0\n" },
+    // keywords are prefixes to VTK; a vector length in array metadata is a count
+    { "pointsx.vtk", head + "POINTSX 999999999999 float\n1 2 3\n" },
+    { "metadata.vtk",
+      head + points +
+        "POINT_DATA 4\nSCALARS s float 1\nLOOKUP_TABLE default\n1 2 3 4\nMETADATA\n"
+        "INFORMATION 1\nNAME L2_NORM_RANGE LOCATION vtkDataArray\nDATA 2000000000 0 1\n\n" }
+  };
+  for (const auto& file : refused)
+  {
+    ExpectRefused(Write(file.first, file.second));
+  }
 
   // Written by VTK: field data of every kind, with metadata (component names).
   const Points expected = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
@@ -546,8 +543,114 @@ void TestFieldBlocks()
     CHECK(writer->Write() == 1);
     ExpectPoints(PathOf(name), expected);
   }
-  Corrupt("field_binary.vtk", "field_binary_type.vtk", "bits 1 11 bit", "bits 1 11 bogus",
-    "FIELD block 'FieldData', array 'bits': unknown type 'bogus'");
+  Corrupt("field_binary.vtk", "field_binary_type.vtk", "bits 1 11 bit", "bits 1 11 bogus");
+}
+
+// The point data of a VTK file comes back from the reader's child process as
+// VTK's reader made it: every kind of array, its type, components and their
+// names, values and attribute role.
+void ExpectSamePointData(vtkPointData* expected, const std::string& path)
+{
+  const Result r = Read(path);
+  CHECK(r.Ok);
+  vtkPointData* got = r.Ok ? r.Output->GetPointData() : nullptr;
+  CHECK(got && got->GetNumberOfArrays() == expected->GetNumberOfArrays());
+  for (int i = 0; got && i < expected->GetNumberOfArrays(); ++i)
+  {
+    vtkAbstractArray* e = expected->GetAbstractArray(i);
+    int index = -1;
+    vtkAbstractArray* g = got->GetAbstractArray(e->GetName(), index);
+    const bool same = g && g->GetDataType() == e->GetDataType() &&
+      g->GetNumberOfComponents() == e->GetNumberOfComponents() &&
+      g->GetNumberOfTuples() == e->GetNumberOfTuples() &&
+      got->IsArrayAnAttribute(index) == expected->IsArrayAnAttribute(i);
+    CHECK(same);
+    for (int c = 0; same && c < e->GetNumberOfComponents(); ++c)
+    {
+      const char* name = e->GetComponentName(c);
+      const char* kept = g->GetComponentName(c);
+      CHECK(std::string(name ? name : "") == std::string(kept ? kept : ""));
+      if (std::string(name ? name : "") != std::string(kept ? kept : ""))
+      {
+        std::cout << "  " << path << ": array " << e->GetName() << " component " << c << " ["
+                  << (name ? name : "(null)") << "] != [" << (kept ? kept : "(null)") << "]\n";
+      }
+    }
+    auto* numbers = vtkDataArray::SafeDownCast(e); // bits too
+    const int n = e->GetNumberOfComponents();
+    for (vtkIdType v = 0; same && v < e->GetNumberOfValues(); ++v)
+    {
+      CHECK(numbers ? vtkDataArray::SafeDownCast(g)->GetComponent(v / n, v % n) ==
+            numbers->GetComponent(v / n, v % n)
+                    : g->GetVariantValue(v) == e->GetVariantValue(v));
+    }
+    if (!same)
+    {
+      std::cout << "  " << path << ": array " << e->GetName() << " differs\n";
+    }
+  }
+}
+
+void TestPointDataKept()
+{
+  auto cloud = Cloud({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } }, "Temperature", 0.1);
+  vtkNew<vtkDoubleArray> normals;
+  normals->SetName("Normals");
+  normals->SetNumberOfComponents(3);
+  normals->SetComponentName(0, "nx");
+  normals->SetComponentName(2, "nz");
+  vtkNew<vtkIdTypeArray> ids;
+  ids->SetName("ids");
+  vtkNew<vtkStringArray> labels;
+  labels->SetName("labels");
+  vtkNew<vtkBitArray> bits;
+  bits->SetName("bits");
+  vtkNew<vtkUnsignedCharArray> colors;
+  colors->SetName("colors");
+  colors->SetNumberOfComponents(3);
+  for (int i = 0; i < 4; ++i)
+  {
+    normals->InsertNextTuple3(i, -0.5 * i, 1.0 / 3 + i);
+    ids->InsertNextValue(vtkIdType(1) << (10 * i));
+    labels->InsertNextValue(i % 2 ? "two words" : "");
+    bits->InsertNextValue(i % 3 == 0);
+    colors->InsertNextTuple3(255 - i, i, 7);
+  }
+  vtkPointData* data = cloud->GetPointData();
+  data->SetNormals(normals);
+  data->SetScalars(colors);
+  for (vtkAbstractArray* array : { static_cast<vtkAbstractArray*>(ids), static_cast<vtkAbstractArray*>(labels),
+         static_cast<vtkAbstractArray*>(bits) })
+  {
+    data->AddArray(array);
+  }
+  cloud->SetPolys(nullptr);
+  vtkNew<vtkXMLPolyDataWriter> xml;
+  xml->SetInputData(cloud);
+  xml->SetFileName(PathOf("point_data.vtp").c_str());
+  CHECK(xml->Write() == 1);
+  vtkNew<vtkXMLPolyDataReader> xmlReader;
+  xmlReader->SetFileName(PathOf("point_data.vtp").c_str());
+  xmlReader->Update();
+  ExpectSamePointData(xmlReader->GetOutput()->GetPointData(), PathOf("point_data.vtp"));
+  for (const int type : { VTK_ASCII, VTK_BINARY })
+  {
+    const std::string name = type == VTK_ASCII ? "point_data_ascii.vtk" : "point_data_binary.vtk";
+    vtkNew<vtkPolyDataWriter> legacy;
+    legacy->SetInputData(cloud);
+    legacy->SetFileType(type);
+    legacy->SetFileName(PathOf(name).c_str());
+    CHECK(legacy->Write() == 1);
+    vtkNew<vtkPolyDataReader> legacyReader;
+    legacyReader->SetFileName(PathOf(name).c_str());
+    legacyReader->ReadAllScalarsOn();
+    legacyReader->ReadAllVectorsOn();
+    legacyReader->ReadAllNormalsOn();
+    legacyReader->ReadAllColorScalarsOn();
+    legacyReader->ReadAllFieldsOn();
+    legacyReader->Update();
+    ExpectSamePointData(legacyReader->GetOutput()->GetPointData(), PathOf(name));
+  }
 }
 
 void TestVtkWrittenFiles()
@@ -643,29 +746,27 @@ void TestVtkWrittenFiles()
   const Result multi = Read(PathOf("written.vtm"));
   CHECK(multi.Ok && !multi.Output->GetPointData()->GetArray("Other"));
 
-  // Corruptions of files VTK itself wrote that crash or hang VTK's readers are
-  // refused before those readers run.
+  // Corruptions of files VTK itself wrote (VTK 9.2 aborts on the count and
+  // crashes on the index).
   Corrupt("written_raw.vtp", "corrupt_count.vtp", "NumberOfPoints=\"4\"",
-    "NumberOfPoints=\"99999999999\"", "implausible NumberOfPoints");
-  Corrupt("written_raw.vtp", "corrupt_type.vtp", "type=\"Float64\"", "type=\"Int6-1\"",
-    "implausible type='Int6-1'");
-  Corrupt("written.vtm", "corrupt_index.vtm", "index=\"1\"", "index=\"-1\"", "implausible index");
+    "NumberOfPoints=\"99999999999\"");
+  Corrupt("written_raw.vtp", "corrupt_type.vtp", "type=\"Float64\"", "type=\"Int6-1\"");
+  Corrupt("written.vtm", "corrupt_index.vtm", "index=\"1\"", "index=\"-1\"");
   // A file type VTK 9.2 has no XML reader for (the fuzzer's saved complex
   // whose .vtm said vtkNonOverlappingAMR): the data object it made leaked.
   Corrupt("written.vtm", "corrupt_file_type.vtm", "type=\"vtkMultiBlockDataSet\"",
-    "type=\"vtkNonOverlappingAMR\"", "unsupported VTK XML file type 'vtkNonOverlappingAMR'");
-  Corrupt("written.vtk", "corrupt_count.vtk", "POLYGONS 2 3", "POLYGONS 2 -3", "invalid count");
+    "type=\"vtkNonOverlappingAMR\"");
+  Corrupt("written.vtk", "corrupt_count.vtk", "POLYGONS 2 3", "POLYGONS 2 -3");
   // The same type in a file that does not parse as XML (the fuzzer's one: a
-  // blank before the declaration): refused by the guard's parse, since VTK's
-  // reader makes the data object from its own scan before failing to parse
-  // (the message is the same either way; the sanitizer job sees the leak).
+  // blank before the declaration; VTK makes the data object from its own scan
+  // of the type before failing to parse).
   std::string amr = Slurp(PathOf("written.vtm"));
   const std::size_t type = amr.find("type=\"vtkMultiBlockDataSet\"");
   CHECK(type != std::string::npos && amr.compare(0, 5, "<?xml") == 0);
   if (type != std::string::npos)
   {
     amr.replace(type, 27, "type=\"vtkNonOverlappingAMR\"");
-    ExpectError(Write("unparsed_amr.vtm", " " + amr), 0, "cannot read VTK XML file (");
+    ExpectRefused(Write("unparsed_amr.vtm", " " + amr));
   }
 }
 
@@ -673,11 +774,6 @@ std::string Slurp(const std::string& path)
 {
   std::ifstream in(path, std::ios::binary);
   return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
-
-int LineOf(const std::string& text, std::size_t at)
-{
-  return 1 + static_cast<int>(std::count(text.begin(), text.begin() + at, '\n'));
 }
 
 // Where the data of array `name` starts: its appended bytes or its inline text.
@@ -724,9 +820,9 @@ vtkSmartPointer<vtkPolyData> Vertices(vtkIdType last)
 }
 
 // Sizes VTK's XML readers allocate without checking them (VTK 9.2 aborts the
-// process when that fails): declared counts, block headers of binary arrays
-// and the last cell offset, which sizes the connectivity. Each is refused with
-// one line before VTK reads the file.
+// process when that fails, or reads blocks that are not there): declared
+// counts, block headers of binary arrays and the last cell offset, which sizes
+// the connectivity. Each is refused with one line.
 void TestCorruptSizes()
 {
   // The last offset, in every encoding and with every compressor.
@@ -750,20 +846,15 @@ void TestCorruptSizes()
     const std::string good =
       WriteXml(writer, Vertices(4), std::string("good_") + v.Name, v.Mode, v.Encode, v.Compressor);
     ExpectPoints(good, { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } });
-    ExpectError(WriteXml(writer, Vertices(5000000000), v.Name, v.Mode, v.Encode, v.Compressor), 0,
-      "piece 0, Verts: array 'offsets' announces 5000000000 connectivity values, more than the "
-      "file can hold");
+    ExpectRefused(WriteXml(writer, Vertices(5000000000), v.Name, v.Mode, v.Encode, v.Compressor));
   }
 
-  // The same in a piece of a multiblock file: the message names the piece.
+  // The same in a piece of a multiblock file.
   vtkNew<vtkMultiBlockDataSet> blocks;
   blocks->SetBlock(0, Vertices(5000000000));
   vtkNew<vtkXMLMultiBlockDataWriter> vtm;
-  const std::string multi =
-    WriteXml(vtm, blocks, "offsets.vtm", vtkXMLWriter::Appended, false, vtkXMLWriterBase::LZ4);
-  const Result r = Read(multi);
-  const std::string piece = PathOf("offsets/offsets_0.vtp");
-  CHECK(!r.Ok && r.Message.rfind(piece + ": piece 0, Verts: array 'offsets' announces", 0) == 0);
+  ExpectRefused(
+    WriteXml(vtm, blocks, "offsets.vtm", vtkXMLWriter::Appended, false, vtkXMLWriterBase::LZ4));
 
   // Polyhedra: VTK sizes their faces by the largest face offset.
   vtkNew<vtkUnstructuredGrid> grid;
@@ -784,28 +875,23 @@ void TestCorruptSizes()
   const std::size_t wordSize = text.find("header_type=\"UInt64\"") != std::string::npos ? 8 : 4;
   const std::int64_t huge = 5000000000;
   text.replace(DataOf(text, "faceoffsets") + wordSize, 8, reinterpret_cast<const char*>(&huge), 8);
-  ExpectError(Write("faceoffsets.vtu", text), 0, "array 'faceoffsets' announces 5000000000");
+  ExpectRefused(Write("faceoffsets.vtu", text));
 
-  // Block headers announcing more bytes than the file holds: raw, base64, LZ4.
-  // (A new writer each time: one that wrote raw appended data writes raw inline data.)
+  // Block headers announcing more bytes than the file holds: raw and base64
+  // uncompressed ones VTK reads as far as it needs, LZ4 ones it refuses. (A new
+  // writer each time: one that wrote raw appended data writes raw inline data.)
   text = Slurp(WriteXml(
     vtkNew<vtkXMLPolyDataWriter>(), Vertices(4), "plain.vtp", vtkXMLWriter::Appended, false, 0));
-  std::size_t tag = text.find("Name=\"Points\"");
   text.replace(DataOf(text, "Points"), wordSize, std::string(wordSize, '\xff'));
-  ExpectError(Write("header_raw.vtp", text), LineOf(text, tag),
-    "data array 'Points': its header announces " +
-      std::string(wordSize == 8 ? "18446744073709551615" : "4294967295") +
-      " bytes, more than the file holds");
+  const Points four = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
+  ExpectPoints(Write("header_raw.vtp", text), four);
   text = Slurp(WriteXml(
     vtkNew<vtkXMLPolyDataWriter>(), Vertices(4), "inline.vtp", vtkXMLWriter::Binary, true, 0));
-  tag = text.find("Name=\"Points\"");
   text.replace(
     DataOf(text, "Points"), wordSize == 8 ? 12 : 8, wordSize == 8 ? "//////////8A" : "/////wAA");
-  ExpectError(Write("header_inline.vtp", text), LineOf(text, tag),
-    "data array 'Points': its header announces");
+  ExpectPoints(Write("header_inline.vtp", text), four);
   text = Slurp(WriteXml(vtkNew<vtkXMLPolyDataWriter>(), Vertices(4), "lz4.vtp",
     vtkXMLWriter::Appended, false, vtkXMLWriterBase::LZ4));
-  tag = text.find("Name=\"Points\"");
   // One block of 4000000 bytes (within the old bound of 2000 times the file size).
   for (std::size_t w = 1; w < 3; ++w)
   {
@@ -813,19 +899,16 @@ void TestCorruptSizes()
     text.replace(DataOf(text, "Points") + w * wordSize, wordSize,
       reinterpret_cast<const char*>(&bytes), wordSize); // little-endian
   }
-  ExpectError(Write("header_lz4.vtp", text), LineOf(text, tag),
-    "data array 'Points': its compression header announces 4000000 bytes from");
+  ExpectRefused(Write("header_lz4.vtp", text));
 
-  // A count within 2000 times the file size (the old bound for every
-  // compressor), for more bytes than LZ4 can expand the file to.
+  // A count for more bytes than LZ4 can expand the file to.
   text = Slurp(PathOf("lz4.vtp"));
   text.replace(text.find("NumberOfPoints=\"4\""), 18,
     "NumberOfPoints=\"" + std::to_string(text.size() * 255 / 4) + "\"");
-  ExpectError(Write("count_lz4.vtp", text), LineOf(text, text.find("Name=\"Temperature\"")),
-    "data array 'Temperature' makes the data larger than the file can hold");
+  ExpectRefused(Write("count_lz4.vtp", text));
 
   // A compressed offsets array whose header announces no block, or blocks too
-  // small for its values: VTK's parser read a block that is not there.
+  // small for its values: VTK 9.2's parser reads a block that is not there.
   // (4 vertices: 4 Int64 offsets in one LZ4 block.)
   text = Slurp(WriteXml(vtkNew<vtkXMLPolyDataWriter>(), Vertices(4), "blocks.vtp",
     vtkXMLWriter::Appended, false, vtkXMLWriterBase::LZ4));
@@ -835,43 +918,34 @@ void TestCorruptSizes()
   };
   const std::string original = text;
   header(0, 0); // as the fuzzer's zero_blocks_offsets.vtp
-  ExpectError(Write("zero_blocks_offsets.vtp", text), LineOf(text, text.find("Name=\"offsets\"")),
-    "data array 'offsets': its compression header announces no block but a last block of 32 "
-    "bytes");
+  ExpectRefused(Write("zero_blocks_offsets.vtp", text));
   header(2, 0);
-  ExpectError(Write("zero_blocks_empty.vtp", text), 0,
-    "piece 0, Verts: array 'offsets': its compression header announces no block for 32 bytes "
-    "of values");
+  ExpectRefused(Write("zero_blocks_empty.vtp", text));
   text = original;
   header(1, 8);
   header(2, 0);
-  ExpectError(Write("small_blocks.vtp", text), 0,
-    "piece 0, Verts: array 'offsets': its compression header announces 8 bytes, fewer than its "
-    "32 bytes of values");
+  ExpectRefused(Write("small_blocks.vtp", text));
 
-  // Only DataArray elements are cell arrays (the fuzzer's misnamed_array.vtp):
-  // a misnamed offsets array with a huge block table is left to VTK, which
-  // misses the offsets, rather than read by the guard.
+  // A misnamed offsets array with a huge block table (the fuzzer's
+  // misnamed_array.vtp): VTK misses the offsets.
   text = Slurp(PathOf("offsets_lz4.vtp"));
   text.replace(text.find("<DataArray type=\"Int64\" Name=\"offsets\""), 10, "<Drray");
   header(0, 0x7fffffff);
-  ExpectError(Write("misnamed_array.vtp", text), 0, "cannot read VTK XML file");
+  ExpectRefused(Write("misnamed_array.vtp", text));
 
   // A data array without a type (the fuzzer's saved complex with 'typ="1"' in
-  // its field data): VTK 9.2 dereferences a null array; refused first.
+  // its field data, where VTK 9.2 dereferences a null array).
   text = Slurp(PathOf("offsets_lz4.vtp"));
-  const std::size_t untyped = text.find("<DataArray type=\"");
-  text.replace(untyped, 16, "<DataArray typ=");
-  ExpectError(Write("untyped_array.vtp", text), LineOf(text, untyped), "has no type");
+  text.replace(text.find("<DataArray type=\""), 16, "<DataArray typ=");
+  ExpectRefused(Write("untyped_array.vtp", text));
 
-  // An attribute in single quotes or with spaces around '=' is read as VTK's
-  // parser reads it (the checks run on the parsed elements, with their line).
+  // A compression header of 0x7f7f7f7f blocks, in an attribute written in
+  // single quotes with spaces around '=' (which VTK's parser reads).
   text = Slurp(PathOf("lz4.vtp"));
-  tag = text.find("Name=\"Points\"");
+  const std::size_t tag = text.find("Name=\"Points\"");
   text.replace(text.find("format=\"appended\"", tag), 17, "format = 'appended'");
   text.replace(DataOf(text, "Points"), wordSize, std::string(wordSize, '\x7f'));
-  ExpectError(Write("quoted.vtp", text), LineOf(text, tag),
-    "data array 'Points': corrupt compression header");
+  ExpectRefused(Write("quoted.vtp", text));
 
 #ifdef __linux__
   // A count the file could hold, for more memory than there is: VTK's failed
@@ -900,8 +974,9 @@ void TestCorruptSizes()
   CHECK(setrlimit(RLIMIT_AS, &tight) == 0);
   const Result oom = Read(memory);
   setrlimit(RLIMIT_AS, &old);
-  CHECK(!oom.Ok && oom.Message == memory + ": out of memory");
-  if (oom.Ok || oom.Message != memory + ": out of memory")
+  const bool refused = !oom.Ok && oom.Message.rfind(memory + ": out of memory", 0) == 0;
+  CHECK(refused);
+  if (!refused)
   {
     std::cout << "  " << memory << ": " << oom.Message << "\n";
   }
@@ -933,6 +1008,7 @@ int main(int argc, char* argv[])
   TestWhatLibraryReadersMisread();
   TestFieldBlocks();
   TestVtkWrittenFiles();
+  TestPointDataKept();
   TestCorruptSizes();
   return check::Finish("TestPointCloudReader");
 }
