@@ -1,6 +1,7 @@
 #include "vtkFlowReconDisplayInitializationHelper.h"
 
 #include "vtkDataObject.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVDataInformation.h"
 #include "vtkPVXMLElement.h"
@@ -8,7 +9,12 @@
 #include "vtkSMProperty.h"
 #include "vtkSMPropertyHelper.h"
 #include "vtkSMProxy.h"
+#include "vtkSMProxyIterator.h"
+#include "vtkSMSessionProxyManager.h"
 #include "vtkSMSettings.h"
+#include "vtkSMSourceProxy.h"
+#include "vtkSMViewLayoutProxy.h"
+#include "vtkSMViewProxy.h"
 
 #include <cstdlib>
 #include <cstring>
@@ -34,7 +40,59 @@ bool IsFree(vtkSMProxy* repr, vtkSMProperty* property, const char* name, vtkMTim
   return !vtkSMSettings::GetInstance()->HasSetting(
     setting.c_str(), std::numeric_limits<double>::max());
 }
+
+// The layout holding nothing but a render view that shows port 0 of `source`.
+vtkSMViewLayoutProxy* LayoutOfItsRenderView(vtkSMProxy* source)
+{
+  vtkSMSessionProxyManager* pxm = source ? source->GetSessionProxyManager() : nullptr;
+  if (!pxm)
+  {
+    return nullptr;
+  }
+  vtkNew<vtkSMProxyIterator> layouts;
+  layouts->SetSessionProxyManager(pxm);
+  layouts->SetModeToOneGroup();
+  for (layouts->Begin("layouts"); !layouts->IsAtEnd(); layouts->Next())
+  {
+    auto* layout = vtkSMViewLayoutProxy::SafeDownCast(layouts->GetProxy());
+    if (!layout || layout->IsSplitCell(0) || layout->GetViews().size() != 1)
+    {
+      continue;
+    }
+    vtkSMViewProxy* view = layout->GetView(0);
+    auto* producer = vtkSMSourceProxy::SafeDownCast(source);
+    if (view && std::strcmp(view->GetXMLName(), "RenderView") == 0 && producer &&
+      view->FindRepresentation(producer, 0))
+    {
+      return layout;
+    }
+  }
+  return nullptr;
 }
+
+// Empty cells beside the render view of `repr`'s source, before ParaView puts
+// the new view in the layout: it takes the first empty cell, and would
+// otherwise halve the render view for each view it opens.
+void MakeRoomBesideRenderView(vtkSMProxy* repr, const char* spec)
+{
+  double fraction = 0.65;
+  int cells = 1;
+  std::istringstream words(spec);
+  words >> fraction >> cells;
+  vtkSMProxy* source =
+    repr->GetProperty("Input") ? vtkSMPropertyHelper(repr, "Input").GetAsProxy() : nullptr;
+  vtkSMViewLayoutProxy* layout = LayoutOfItsRenderView(source);
+  if (!layout || !(fraction > 0 && fraction < 1) || cells < 1)
+  {
+    return;
+  }
+  int right = layout->SplitHorizontal(0, fraction) + 1;
+  for (int k = cells; k > 1; --k)
+  {
+    right = layout->SplitVertical(right, 1.0 / k) + 1;
+  }
+}
+} // namespace
 
 //------------------------------------------------------------------------------
 void vtkFlowReconDisplayInitializationHelper::PostInitializeProxy(
@@ -177,6 +235,13 @@ void vtkFlowReconDisplayInitializationHelper::PostInitializeProxy(
         changed = true;
       }
     }
+  }
+
+  // A chart opened beside the render view (Apply): the render view keeps a
+  // fraction of the width, the charts share the rest, one above the other.
+  if (const char* beside = xml->GetAttribute("beside_render_view"))
+  {
+    MakeRoomBesideRenderView(repr, beside);
   }
 
   if (changed)

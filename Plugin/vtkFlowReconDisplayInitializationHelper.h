@@ -30,6 +30,11 @@
  * display with that RGB (ambient and diffuse colours);
  * `text_justification="0"` (FlowReconTopologyTextRepresentation) left-justifies
  * a text display's lines (1 centred, 2 right).
+ * `beside_render_view="0.65 2"` (the charts Apply opens) makes room for the
+ * new view when the layout holds nothing but a render view showing port 0 of
+ * the same source: the render view keeps 0.65 of the width and the right
+ * part is cut into 2 empty cells, one above the other, which ParaView then
+ * fills with the views it opens (instead of halving the render view each time).
  *
  * Not Python- or ClientServer-wrapped: FlowReconDisplayDefaults() registers the
  * class with the ClientServer interpreter, which is how ParaView creates it.

@@ -4,7 +4,7 @@ State's reaction without its dialog, as paraview --state= does: the file names a
 stored, relative to the working folder); without, reads FLOWRECON_DATA with the
 plugin's reader and applies each of the plugin's filters as the Filters menu and the
 Apply button do (Flow Complex, Flow Complex Simplification, Flow Reconstruction,
-Persistence Diagram), with the render view active. Prints "gui_quiet: step ..." before each
+Persistence Diagram, Reconstruct Point Cloud), with the render view active. Prints "gui_quiet: step ..." before each
 step, so that a message on the terminal is placed between two of them, then
 "gui_quiet: PASS" and os._exit()s. Whether ParaView wrote a warning is judged by
 test_quiet_gui.py from the terminal output (what the Output Messages window shows
@@ -19,7 +19,7 @@ from flowrecon_testing.gui_qt import Qt, check, run_in_gui, say
 from paraview.simple import *  # noqa: F401,F403
 
 FILTERS = ("FlowComplex", "FlowComplexSimplification", "FlowReconstruction",
-           "PersistenceDiagram")
+           "PersistenceDiagram", "PointCloudReconstruction")
 
 
 def step(what):
@@ -83,7 +83,7 @@ def main():
     reader = OpenDataFile(data)
     Show(reader, GetActiveViewOrCreate("RenderView"))
     qt.process_events()
-    inputs = {"FlowComplex": reader}
+    inputs = {"FlowComplex": reader, "PointCloudReconstruction": reader}
     for name in FILTERS:
         step("apply %s" % name)
         source = apply_from_menu(qt, accept, inputs[name], name)

@@ -15,12 +15,17 @@ through Python's Show(); this is the GUI's own path:
     blocks CriticalPoints and GabrielEdges, coloured by the cell array Index, one
     legend (Index);
   * Flow Reconstruction: outputs 0 (coloured by Index), 4 and 5 in the render view,
-    one legend; 2 (sponsor arrows) not shown; 1 and 3 (the profiles) in line charts,
-    the reconstruction profile's with a logarithmic left axis. In the picture of the
+    one legend; 2 (sponsor arrows) and 1 (the reconstruction profile, whose chart
+    opens on request) not shown; 3 (the topology profile) in a line chart beside the
+    render view, which keeps 0.65 of the layout's width. In the picture of the
     render view, output 5 (the topology text) draws in the upper left corner and
     nowhere else (the pixels that change when it is hidden), and output 4 (the
     under-sampling places, two on this torus) draws magenta spheres (at least 300
-    pixels change from magenta when it is hidden, most of those that change).
+    pixels change from magenta when it is hidden, most of those that change), each
+    place with its label: the labels drawn in the view, "t_r T: bk +-c" (a line
+    per t_r), tell the changes of output 4 (its Threshold, Dimension and Change,
+    summed), and turning Warning Label Visibility off changes pixels of the text's
+    colour.
 Then the sponsor arrows are shown (the eye: Show() in the render view): 3D Glyphs
 oriented and scaled by Direction, and the picture must have clearly more drawn pixels
 than the same lines drawn as a wireframe (the arrows have heads and a width).
@@ -154,10 +159,12 @@ def check_text_and_spheres(view, recon, shown, out):
     # The spheres: a few hundred magenta pixels at least (red and blue above
     # green; part of them is behind the torus), most of what they change, where
     # the same pixels without them are not (the torus, the background).
+    spheres.WarningLabelVisibility = 0  # their text is checked by check_labels
     rgb, diff = changed_when_hidden(view, spheres, out + "_spheres.png")
     spheres.Visibility = 0
     hidden = picture(view, out + "_spheres_hidden.png")
     spheres.Visibility = 1
+    spheres.WarningLabelVisibility = 1
 
     def magenta(pixels):
         return int(((pixels[:, 0] > pixels[:, 1] + 20) & (pixels[:, 2] > pixels[:, 1] + 20)).sum())
@@ -170,6 +177,72 @@ def check_text_and_spheres(view, recon, shown, out):
     check(with_spheres >= 0.5 * diff.sum() and without <= 0.1 * diff.sum(),
           "the spheres are not magenta: %d of %d pixels (%d without them)"
           % (with_spheres, diff.sum(), without))
+
+
+def label_texts(view):
+    """The texts of the point labels the render view draws (its visible label
+    mappers' input, in the built-in session)."""
+    import vtkmodules.vtkRenderingLabel  # noqa: F401 (vtkLabeledDataMapper in Python)
+    actors = view.GetClientSideObject().GetNonCompositedRenderer().GetActors2D()
+    actors.InitTraversal()
+    texts = []
+    for _ in range(actors.GetNumberOfItems()):
+        actor = actors.GetNextItem()
+        mapper = actor.GetMapper()
+        if actor.GetVisibility() and mapper is not None and mapper.IsA("vtkLabeledDataMapper"):
+            data = mapper.GetInput()
+            labels = data.GetPointData().GetAbstractArray("Label") if data else None
+            if labels is not None:
+                texts += [labels.GetValue(k) for k in range(labels.GetNumberOfValues())]
+    return sorted(t for t in texts if t)
+
+
+def label_changes(texts):
+    """{(t_r as printed, Betti number): change} told by labels "t_r T: bk +-c, ...",
+    a line per t_r."""
+    told = {}
+    for text in texts:
+        for line in text.split("\n"):
+            head, _, terms = line.partition(": ")
+            for term in terms.split(", "):
+                k, c = term.split(" ")
+                key = (head, k)
+                told[key] = told.get(key, 0) + int(c)
+    return told
+
+
+def expected_changes(recon, port=4):
+    """The same, summed over the points of the under-sampling output."""
+    data = servermanager.Fetch(recon, idx=port)
+    pd = data.GetPointData()
+    told = {}
+    for k in range(data.GetNumberOfPoints()):
+        key = ("t_r %.3g" % pd.GetArray("Threshold").GetValue(k),
+               "b%d" % int(pd.GetArray("Dimension").GetValue(k)))
+        told[key] = told.get(key, 0) + int(pd.GetArray("Change").GetValue(k))
+    return told
+
+
+def check_labels(view, spheres, recon, out):
+    """The labels drawn tell the changes of output 4 (a label per place, a line per
+    t_r: "t_r T: bk +-c"), and they draw text-coloured pixels."""
+    drawn = label_texts(view)
+    told, expected = label_changes(drawn), expected_changes(recon)
+    say("test_apply_gui: labels drawn %s, expected changes %s" % (drawn, expected))
+    check(len(drawn) >= 1 and told == expected,
+          "the warnings' labels %s tell %s, output 4 holds %s" % (drawn, told, expected))
+    shown = picture(view, out + "_labels.png")
+    spheres.WarningLabelVisibility = 0
+    hidden = picture(view, out + "_labels_hidden.png")
+    spheres.WarningLabelVisibility = 1
+    picture(view, out + "_labels.png")
+    text = np.array([float(c) * 255 for c in spheres.WarningLabelColor])
+    changed = (np.abs(shown - hidden) > 24).any(axis=2)
+    near_text = (np.abs(shown - text) < 40).all(axis=2) & changed
+    say("test_apply_gui: the labels change %d pixels, %d of the text's colour"
+        % (int(changed.sum()), int(near_text.sum())))
+    check(near_text.sum() >= 100 * len(drawn),
+          "the labels draw %d pixels of their colour" % near_text.sum())
 
 
 def look_along_longest_arrow(view, recon):
@@ -262,15 +335,22 @@ def main():
     check(colouring(shown[0]) == ("CELLS", "Index"),
           "Flow Reconstruction is coloured by %s" % (colouring(shown[0]),))
     check(legends(view) == ["Index"], "Flow Reconstruction: legends %s" % legends(view))
-    for view_type, port in (("FlowReconLogChartView", 1), ("FlowReconTopologyChartView", 3)):
-        check((view_type, port) in where,
-              "Flow Reconstruction: output %d is not in a %s (%s)" % (port, view_type, where))
-    log_axis = [v.LeftAxisLogScale for v in GetViews() if v.GetXMLName() == "FlowReconLogChartView"]
-    check(log_axis == [1], "the profile's chart has Left Axis Log Scale %s" % log_axis)
-    check(all(p != 2 for _, p in where), "the sponsor arrows are shown on Apply (%s)" % where)
+    check(("FlowReconTopologyChartView", 3) in where,
+          "Flow Reconstruction: output 3 is not in a FlowReconTopologyChartView (%s)" % where)
+    check(all(p not in (1, 2) for _, p in where),
+          "the profile or the sponsor arrows are shown on Apply (%s)" % where)
+    check(sorted(v.GetXMLName() for v in GetViews()) == ["FlowReconTopologyChartView", "RenderView"],
+          "Apply opened the views %s" % sorted(v.GetXMLName() for v in GetViews()))
+    qt.process_events()
+    chart = [v for v in GetViews() if v.GetXMLName() == "FlowReconTopologyChartView"][0]
+    widths = (view.ViewSize[0], chart.ViewSize[0])
+    say("test_apply_gui: widths of the render view and the chart %s" % (widths,))
+    check(abs(widths[0] / float(sum(widths)) - 0.65) < 0.03,
+          "the render view has %d of the %d pixels' width" % (widths[0], sum(widths)))
     layout = GetLayout(view)
     SaveScreenshot(out + "_layout.png", layout, ImageResolution=[1200, 700])
     check_text_and_spheres(view, recon, shown, out)
+    check_labels(view, shown[4], recon, out)
 
     # The sponsor arrows, one click away, alone in the render view.
     for d in displays_in(view, recon).values():

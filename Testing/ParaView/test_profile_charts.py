@@ -1,11 +1,13 @@
 #!/usr/bin/env python3
-"""The charts Flow Reconstruction's profiles open in, as ParaView's
-Apply does it (ShowInPreferredView), with no X server: port 1 (Profile) and
-port 3 (Topology Profile) open in line charts (FlowReconLogChartView with a log
-left axis, FlowReconTopologyChartView), their axes titled (Step and Priority,
-Threshold; t_r and Betti number), with their own
-representations: Priority, Threshold and the t_r line against Step; b0, b1, b2
-drawn as steps and the t_r mark against Threshold, from the table's field data.
+"""The charts Flow Reconstruction's profiles open in, with no X server: port 3
+(Topology Profile) as ParaView's Apply opens it (ShowInPreferredView), in a
+FlowReconTopologyChartView; port 1 (Profile) on request only (its preferred view
+is None: Apply opens no chart for it, whose rows the GUI would draw again at every
+t_r), shown as a user does, in a Line Chart View (log) (FlowReconLogChartView,
+log left axis) made first. Their axes are titled (Step and Priority, Threshold;
+t_r and Betti number), with their own representations: Priority, Threshold and
+the t_r line against Step (Priority one pixel wide); b0, b1, b2 drawn as steps and the t_r
+mark against Threshold, from the table's field data.
 
 Checked against `flowrecon reconstruct CLOUD --tr T --tr-max 4 --profile P.csv
 --topology-profile B.csv` of the same cloud: the profile rows below 4 (the CLI's
@@ -146,11 +148,17 @@ def main():
     controller = vtkSMParaViewPipelineControllerWithRendering()
     preferred = [controller.GetPreferredViewType(recon.SMProxy, k) for k in range(5)]
     print("preferred views:", preferred, flush=True)
-    check(preferred[1] == "FlowReconLogChartView" and preferred[3] == "FlowReconTopologyChartView",
-          "ports 1 and 3 prefer %s and %s, expected FlowReconLogChartView (a line chart "
-          "with a log left axis) and FlowReconTopologyChartView" % (preferred[1], preferred[3]))
-    # As Apply does in an empty layout frame: no view given, the preferred one is made.
-    views = {k: controller.ShowInPreferredView(recon.SMProxy, k, None) for k in (1, 3)}
+    check(preferred[1] == "None" and preferred[3] == "FlowReconTopologyChartView",
+          "ports 1 and 3 prefer %s and %s, expected None (no chart on Apply) and "
+          "FlowReconTopologyChartView" % (preferred[1], preferred[3]))
+    check(controller.ShowInPreferredView(recon.SMProxy, 1, None) is None,
+          "port 1 opens a view on Apply")
+    # Port 3 as Apply does in an empty layout frame (no view given, the preferred
+    # one is made); port 1 as a user asks for it: a Line Chart View (log), then its eye.
+    views = {3: controller.ShowInPreferredView(recon.SMProxy, 3, None),
+             1: simple.CreateView("FlowReconLogChartView").SMProxy}
+    check(controller.Show(recon.SMProxy, 1, views[1]) is not None,
+          "port 1 cannot be shown in a Line Chart View (log)")
     names = {k: v.GetXMLName() if v else None for k, v in views.items()}
     if not check(names == {1: "FlowReconLogChartView", 3: "FlowReconTopologyChartView"},
                  "ports 1 and 3 open in %s" % names):
@@ -174,6 +182,9 @@ def main():
                           ["Priority", "Threshold", "t_r"]),
           "port 1's chart is %s: expected Priority, Threshold and t_r against Step" % (
               settings[1],))
+    widths = dict(zip(*[iter(representation(views[1], recon, 1).SeriesLineThickness)] * 2))
+    check(widths.get("Priority") == "1" and widths.get("Threshold") == "2" and widths.get("t_r") == "2",
+          "port 1's series are %s pixels wide, expected Priority 1, Threshold and t_r 2" % widths)
     check(settings[3] == ("TopologyProfileRepresentation", "Field Data", 0, "Threshold",
                           ["b0", "b1", "b2", "t_r"]),
           "port 3's chart is %s: expected b0, b1, b2 and t_r against Threshold, from the "

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """The charts Flow Reconstruction's profiles open in, rendered: port
-1 (Profile) and port 3 (Topology Profile) shown as Apply does it
-(ShowInPreferredView) and saved as PNG files. The pictures must show the data
+3 (Topology Profile) shown as Apply does it (ShowInPreferredView), port 1
+(Profile) as a user asks for it (a Line Chart View (log), then its eye: Apply
+opens no chart for it), and saved as PNG files. The pictures must show the data
 and the t_r marks where t_r is: in the profile, a horizontal line whose height
 follows t_r on the chart's scale (linear by default, logarithmic with the
 view's Left Axis Log Scale); in the topology profile, a vertical line whose
@@ -70,7 +71,9 @@ def main():
     recon = torus_profiles(globals(), WORK, 4.0)[1]
 
     controller = vtkSMParaViewPipelineControllerWithRendering()
-    views = {k: controller.ShowInPreferredView(recon.SMProxy, k, None) for k in (1, 3)}
+    views = {3: controller.ShowInPreferredView(recon.SMProxy, 3, None),
+             1: simple.CreateView("FlowReconLogChartView").SMProxy}
+    controller.Show(recon.SMProxy, 1, views[1])
     names = {k: v.GetXMLName() if v else None for k, v in views.items()}
     print("views:", names, flush=True)
     if not check(names == {1: "FlowReconLogChartView", 3: "FlowReconTopologyChartView"},

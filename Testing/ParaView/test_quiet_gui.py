@@ -7,8 +7,8 @@ window opens when a user loads an example state or applies a FlowRecon filter
 
 Runs the GUI twice with gui_quiet.py (fresh settings in OUTDIR, working folder ROOT,
 the repository's root, where the states find Data/*.xyz): once applying Flow Complex,
-Flow Complex Simplification, Flow Reconstruction and Persistence Diagram to
-ROOT/Data/torus.xyz from the Filters menu, once loading ROOT/Data/*.pvsm. Two runs,
+Flow Complex Simplification, Flow Reconstruction, Persistence Diagram and
+Reconstruct Point Cloud to ROOT/Data/torus.xyz from the Filters menu, once loading ROOT/Data/*.pvsm. Two runs,
 because the GUI warns of a missing Pipeline Browser icon only the first time it meets
 the view type. Every message the Output Messages window shows is also written to the
 terminal, as "warning: ..." or "critical: ..." (ParaView's Qt message format) or in
