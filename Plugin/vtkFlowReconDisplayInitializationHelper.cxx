@@ -236,6 +236,24 @@ bool JustificationHint(vtkSMProxy* repr, vtkPVXMLElement* xml, vtkMTimeType ts)
   return false;
 }
 
+// point_size: vertices drawn as shaded spheres of that many pixels. One display
+// draws every block of a multiblock alike in ParaView 5.11, so the critical points
+// cannot be world-size glyphs beside the Gabriel edges' lines.
+bool PointSpheresHint(vtkSMProxy* repr, vtkPVXMLElement* xml, vtkMTimeType ts)
+{
+  double size = 0;
+  vtkSMProperty* pointSize = repr->GetProperty("PointSize");
+  vtkSMProperty* spheres = repr->GetProperty("RenderPointsAsSpheres");
+  if (!xml->GetScalarAttribute("point_size", &size) || !spheres ||
+    !IsFree(repr, pointSize, "PointSize", ts) || !IsFree(repr, spheres, "RenderPointsAsSpheres", ts))
+  {
+    return false;
+  }
+  vtkSMPropertyHelper(pointSize).Set(size);
+  vtkSMPropertyHelper(spheres).Set(1);
+  return true;
+}
+
 // solid_color: one colour (no array, no legend), replacing the palette's.
 bool SolidColorHint(vtkSMProxy* repr, vtkPVXMLElement* xml, vtkMTimeType ts)
 {
@@ -266,7 +284,7 @@ void vtkFlowReconDisplayInitializationHelper::PostInitializeProxy(
 {
   bool changed = false;
   for (auto hint : { BlockSelectorsHint, ColorArrayHint, ArrowGlyphsHint, SpheresHint,
-         JustificationHint, SolidColorHint })
+         JustificationHint, PointSpheresHint, SolidColorHint })
   {
     changed = hint(repr, xml, ts) || changed;
   }
