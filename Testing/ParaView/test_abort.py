@@ -7,7 +7,7 @@ Run with pvpython (no X server needed):
 
 For aborts requested from a progress observer at several points of a run on NPOINTS
 (default 50000) random points (Delaunay, critical points, manifolds, VTK output):
-  * the run ends within ABORT_LATENCY s of SetAbortExecute(1),
+  * the run ends within ABORT_LATENCY CPU seconds of SetAbortExecute(1),
   * the output is an empty multiblock, the request does not fail,
   * the filter warns "flow complex construction aborted: the output is empty ...".
 Then it pins VTK 9.2.20230111's rule (ParaView 5.11): the pipeline does not clear
@@ -22,7 +22,10 @@ import time
 
 from flowrecon_testing.checks import fail
 
-ABORT_LATENCY = 3.0  # s; the longest step between two abort polls is ~2 s at 5e4 points
+# CPU seconds of this process (all threads) from SetAbortExecute(1) to the return: the
+# longest step between two abort polls is ~2 s on 2 cores at 5e4 points. CPU time, not
+# wall time, so that other work on the machine does not fail the test.
+ABORT_LATENCY = 6.0
 STOPS = (0.02, 0.25, 0.5, 0.65, 0.85)  # progress at which the abort is requested
 
 
@@ -52,6 +55,7 @@ def main():
         def on_progress(obj, event):
             if state["at"] is None and obj.GetProgress() >= stop:
                 state["at"] = time.time()
+                state["cpu"] = time.process_time()
                 state["phase"] = obj.GetProgressText()
                 obj.SetAbortExecute(1)
         tag = algorithm.AddObserver("ProgressEvent", on_progress)
@@ -61,18 +65,20 @@ def main():
         start = time.time()
         fc.UpdatePipeline()
         end = time.time()
+        end_cpu = time.process_time()
         algorithm.RemoveObserver(tag)
         if state["at"] is None:
             fail("the abort at progress %g was never requested" % stop)
         latency = end - state["at"]
+        cpu = end_cpu - state["cpu"]
         output = algorithm.GetOutputDataObject(0)
-        print("abort at progress %.2f (%s, %.1f s into the run): returned %.2f s later, "
-              "%d blocks, %d cells; warning %r" % (
-                  stop, state["phase"], state["at"] - start, latency,
+        print("abort at progress %.2f (%s, %.1f s into the run): returned %.2f s (%.2f CPU s) "
+              "later, %d blocks, %d cells; warning %r" % (
+                  stop, state["phase"], state["at"] - start, latency, cpu,
                   output.GetNumberOfBlocks(), fc.GetDataInformation().GetNumberOfCells(),
                   warnings[0] if warnings else None), flush=True)
-        if latency > ABORT_LATENCY:
-            fail("the run went on %.2f s after SetAbortExecute(1)" % latency)
+        if cpu > ABORT_LATENCY:
+            fail("the run went on %.2f CPU s after SetAbortExecute(1)" % cpu)
         if output.GetNumberOfBlocks() != 0 or fc.GetDataInformation().GetNumberOfCells() != 0:
             fail("aborted output is not empty")
         if not any("flow complex construction aborted: the output is empty" in w
