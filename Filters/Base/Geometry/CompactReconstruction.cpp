@@ -1,0 +1,279 @@
+#include "CompactReconstruction.h"
+
+#include "CellHomology.h"
+#include "ParallelSlices.h"
+#include "Retriangulation.h"
+#include "StableManifold.h"
+#include "SuccessorForest.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <string>
+
+namespace flowrecon
+{
+
+namespace
+{
+
+/// A Delaunay triangle (sorted input ids) crossed by the walk of a node.
+struct Claim
+{
+  std::array<Id, 3> Triangle;
+  Id Node;
+  bool operator<(const Claim& o) const
+  {
+    return this->Triangle != o.Triangle ? this->Triangle < o.Triangle : this->Node < o.Node;
+  }
+};
+
+template <std::size_t N>
+std::array<Id, N> InputSimplex(const Retriangulation& re, const std::array<Id, N>& vertices)
+{
+  std::array<Id, N> s;
+  for (std::size_t k = 0; k < N; ++k)
+  {
+    s[k] = re.Prepared().InputId[vertices[k]];
+  }
+  std::sort(s.begin(), s.end());
+  return s;
+}
+
+/// Whether `node`'s simplex is `simplex` (input ids, sorted).
+template <std::size_t N>
+bool SameSimplex(const Node& node, const std::array<Id, N>& simplex)
+{
+  for (std::size_t k = 0; k < N; ++k)
+  {
+    if (node.Simplex[k] != simplex[k])
+    {
+      return false;
+    }
+  }
+  return N == 4 || node.Simplex[N] < 0;
+}
+
+/// The triangles the walks of `patches` (index-2 node ids) cross, each kept
+/// once; shared and revisited ones counted.
+void AddPatchTriangles(const Retriangulation& re, const std::vector<Node>& nodes,
+  const std::vector<Id>& patches, const Progress& progress, CompactComplex& out)
+{
+  const CriticalSimplices& cs = re.Critical();
+  const Id facets = static_cast<Id>(cs.Facets.size());
+  std::vector<std::vector<Claim>> claims(patches.size());
+  std::vector<Id> fallbacks(patches.size(), 0);
+  std::vector<char> foreign(patches.size(), 0);
+  ParallelSlices(static_cast<Id>(patches.size()), Id(1) << 14, progress, 0.0, 0.6,
+    "compact patches", [&](Id first, Id last) {
+      for (Id k = first; k < last; ++k)
+      {
+        const Id node = patches[k];
+        const Id f = node - re.Base2();
+        if (f < 0 || f >= facets)
+        {
+          foreign[k] = 1;
+          continue;
+        }
+        const CriticalFacet& facet = cs.Facets[f];
+        const std::array<Id, 3> own =
+          InputSimplex<3>(re, { { facet.Vertices[0], facet.Vertices[1], facet.Vertices[2] } });
+        if (!SameSimplex(nodes[node], own))
+        {
+          foreign[k] = 1;
+          continue;
+        }
+        const Patch patch = ComputeStableManifold(
+          re.Tri(), cs, static_cast<std::size_t>(f), false, fallbacks[k], false, true);
+        claims[k].push_back({ own, node });
+        for (const std::array<Id, 3>& t : patch.Walked)
+        {
+          claims[k].push_back({ InputSimplex<3>(re, t), node });
+        }
+      }
+    });
+  std::vector<Claim> all;
+  for (std::size_t k = 0; k < patches.size(); ++k)
+  {
+    if (foreign[k])
+    {
+      throw InputError(Retriangulation::Mismatch());
+    }
+    out.ExactFallbacks += fallbacks[k];
+    all.insert(all.end(), claims[k].begin(), claims[k].end());
+  }
+  std::sort(all.begin(), all.end());
+  for (std::size_t k = 0; k < all.size();)
+  {
+    std::size_t end = k + 1;
+    bool shared = false, revisited = false;
+    for (; end < all.size() && all[end].Triangle == all[k].Triangle; ++end)
+    {
+      (all[end].Node == all[end - 1].Node ? revisited : shared) = true;
+    }
+    out.SharedTriangles += shared ? 1 : 0;
+    out.RevisitedTriangles += revisited ? 1 : 0;
+    out.Triangles.push_back(all[k].Triangle);
+    out.TriangleNode.push_back(all[k].Node);
+    k = end;
+  }
+}
+
+/// The Delaunay cells whose Voronoi vertex flows to one of `maxima` (index-3
+/// node ids, sorted).
+void AddConeTetrahedra(const Retriangulation& re, const std::vector<Node>& nodes,
+  const std::vector<Id>& maxima, const Progress& progress, CompactComplex& out)
+{
+  const CriticalSimplices& cs = re.Critical();
+  const Triangulation& tri = re.Tri();
+  const Id infinity = re.Base3() + static_cast<Id>(cs.Cells.size());
+  std::vector<std::int32_t> maximumOfCell(static_cast<std::size_t>(tri.NumberOfCells()), -1);
+  std::vector<char> wanted(static_cast<std::size_t>(tri.NumberOfCells()), 0);
+  for (const Id node : maxima)
+  {
+    const Id c = node - re.Base3();
+    if (c < 0 || c >= static_cast<Id>(cs.Cells.size()) ||
+      !SameSimplex(nodes[node], InputSimplex<4>(re, { { cs.Cells[c].Vertices[0],
+        cs.Cells[c].Vertices[1], cs.Cells[c].Vertices[2], cs.Cells[c].Vertices[3] } })))
+    {
+      throw InputError(Retriangulation::Mismatch());
+    }
+  }
+  for (std::size_t i = 0; i < cs.Cells.size(); ++i)
+  {
+    maximumOfCell[cs.Cells[i].Cell] = static_cast<std::int32_t>(re.Base3() + static_cast<Id>(i));
+  }
+  SuccessorForest forest(tri, maximumOfCell, infinity, 0, false, false);
+  ParallelSlices(tri.NumberOfCells(), Id(1) << 16, progress, 0.6, 0.9, "compact cells",
+    [&](Id first, Id last) {
+      for (Id c = first; c < last; ++c)
+      {
+        const Id root = forest.Root(c);
+        wanted[c] = root >= 0 && std::binary_search(maxima.begin(), maxima.end(), root) ? 1 : 0;
+      }
+    });
+  for (Id c = 0; c < tri.NumberOfCells(); ++c)
+  {
+    if (wanted[c])
+    {
+      out.Tetrahedra.push_back(InputSimplex<4>(re, tri.SortedVertices(tri.Cell(c))));
+      out.TetrahedronNode.push_back(forest.Root(c));
+    }
+  }
+}
+
+/// Index-1 and index-0 nodes whose edge or sample no triangle or tetrahedron holds.
+void AddEdgesAndSamples(
+  const std::vector<Node>& nodes, const std::vector<Id>& selected, CompactComplex& out)
+{
+  std::vector<std::array<Id, 2>> held;
+  std::vector<Id> used;
+  auto hold = [&](const Id* v, int n) {
+    for (int a = 0; a < n; ++a)
+    {
+      used.push_back(v[a]);
+      for (int b = a + 1; b < n; ++b)
+      {
+        held.push_back({ { v[a], v[b] } }); // sorted simplices: v[a] < v[b]
+      }
+    }
+  };
+  for (const std::array<Id, 3>& t : out.Triangles)
+  {
+    hold(t.data(), 3);
+  }
+  for (const std::array<Id, 4>& t : out.Tetrahedra)
+  {
+    hold(t.data(), 4);
+  }
+  std::sort(held.begin(), held.end());
+  held.erase(std::unique(held.begin(), held.end()), held.end());
+  for (const Id node : selected)
+  {
+    const Node& n = nodes[node];
+    if (n.Index == 1)
+    {
+      const std::array<Id, 2> e{ { n.Simplex[0], n.Simplex[1] } };
+      if (!std::binary_search(held.begin(), held.end(), e))
+      {
+        out.Edges.push_back(e);
+        out.EdgeNode.push_back(node);
+        used.push_back(e[0]);
+        used.push_back(e[1]);
+      }
+    }
+  }
+  std::sort(used.begin(), used.end());
+  for (const Id node : selected)
+  {
+    const Node& n = nodes[node];
+    if (n.Index == 0 && !n.IsInfinity() &&
+      !std::binary_search(used.begin(), used.end(), static_cast<Id>(n.Simplex[0])))
+    {
+      out.Vertices.push_back(n.Simplex[0]);
+      out.VertexNode.push_back(node);
+    }
+  }
+}
+
+} // namespace
+
+CompactComplex CompactReconstruction(const Retriangulation& re, const std::vector<Node>& nodes,
+  const std::vector<Id>& selected, const Progress& progress)
+{
+  std::vector<Id> sorted(selected);
+  std::sort(sorted.begin(), sorted.end());
+  sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
+  std::vector<Id> patches, maxima;
+  for (const Id node : sorted)
+  {
+    if (node < 0 || node >= static_cast<Id>(nodes.size()))
+    {
+      throw InputError("compact reconstruction: node " + std::to_string(node) + " out of range");
+    }
+    if (nodes[node].IsInfinity())
+    {
+      continue;
+    }
+    if (nodes[node].Index == 2)
+    {
+      patches.push_back(node);
+    }
+    else if (nodes[node].Index == 3)
+    {
+      maxima.push_back(node);
+    }
+  }
+  CompactComplex out;
+  AddPatchTriangles(re, nodes, patches, progress, out);
+  if (!maxima.empty())
+  {
+    AddConeTetrahedra(re, nodes, maxima, progress, out);
+  }
+  AddEdgesAndSamples(nodes, sorted, out);
+  progress(1.0, "compact output");
+  return out;
+}
+
+std::array<Id, 4> CompactBettiNumbers(const CompactComplex& compact)
+{
+  FilteredCells cells;
+  for (const Id& v : compact.Vertices)
+  {
+    cells.Add(&v, 1, 0);
+  }
+  for (const std::array<Id, 2>& e : compact.Edges)
+  {
+    cells.Add(e.data(), 2, 0);
+  }
+  for (const std::array<Id, 3>& t : compact.Triangles)
+  {
+    cells.Add(t.data(), 3, 0);
+  }
+  for (const std::array<Id, 4>& t : compact.Tetrahedra)
+  {
+    cells.Add(t.data(), 4, 0);
+  }
+  return BettiNumbersBelow(CellBarcode(cells), 1);
+}
+
+} // namespace flowrecon
