@@ -87,6 +87,10 @@ constexpr const char* PersistenceCandidates = "PersistenceCandidates";
 constexpr const char* Dimension = "Dimension";
 constexpr const char* Change = "Change";
 constexpr const char* Spacing = "Spacing";
+// The compact output (`reconstruct --compact`), field data: Delaunay triangles
+// crossed by the walks of two index-2 nodes, and twice by one walk.
+constexpr const char* SharedTriangles = "SharedTriangles";
+constexpr const char* RevisitedTriangles = "RevisitedTriangles";
 } // namespace names
 } // namespace flowrecon
 
