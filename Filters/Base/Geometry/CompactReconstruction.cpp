@@ -7,6 +7,7 @@
 #include "SuccessorForest.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <string>
 
@@ -142,12 +143,24 @@ void AddConeTetrahedra(const Retriangulation& re, const std::vector<Node>& nodes
   {
     maximumOfCell[cs.Cells[i].Cell] = static_cast<std::int32_t>(re.Base3() + static_cast<Id>(i));
   }
+  // d_P grows along the flow: a flow line that passes the largest selected
+  // value cannot end at a selected maximum, so it is stopped there (on surface
+  // samples most lines run on to the medial axis). The margin covers rounding
+  // and the perturbation of degenerate clouds (1e-6 of the diagonal).
+  double largest = 0;
+  for (const Id node : maxima)
+  {
+    largest = std::max(largest, nodes[node].Value);
+  }
+  const double limit = 1.01 * std::ldexp(largest, -re.Prepared().ScaleExponent) +
+    1e-5 * re.Prepared().Diagonal;
   SuccessorForest forest(tri, maximumOfCell, infinity, 0, false, false);
   ParallelSlices(tri.NumberOfCells(), Id(1) << 16, progress, 0.6, 0.9, "compact cells",
     [&](Id first, Id last) {
       for (Id c = first; c < last; ++c)
       {
-        const Id root = forest.Root(c);
+        double bound = 0;
+        const Id root = forest.RootBelow(c, limit * limit, &bound);
         wanted[c] = root >= 0 && std::binary_search(maxima.begin(), maxima.end(), root) ? 1 : 0;
       }
     });
@@ -156,7 +169,8 @@ void AddConeTetrahedra(const Retriangulation& re, const std::vector<Node>& nodes
     if (wanted[c])
     {
       out.Tetrahedra.push_back(InputSimplex<4>(re, tri.SortedVertices(tri.Cell(c))));
-      out.TetrahedronNode.push_back(forest.Root(c));
+      double bound = 0;
+      out.TetrahedronNode.push_back(forest.RootBelow(c, limit * limit, &bound));
     }
   }
 }
