@@ -413,7 +413,8 @@ void ReportCompact(const Reconstruction& r, const std::array<Id, 4>& betti)
             << static_cast<double>(c.NumberOfCells()) /
       static_cast<double>(std::max<std::size_t>(1, r.Samples.size()))
             << " cells per sample; " << c.SharedTriangles << " triangles shared by two patches, "
-            << c.RevisitedTriangles << " crossed twice by one walk\n";
+            << c.RevisitedTriangles << " crossed twice by one walk, " << c.FilledVoids
+            << " voids without a maximum filled\n";
   std::cout << "compact output's Betti numbers " << betti[0] << " " << betti[1] << " " << betti[2]
             << "\n";
   std::array<long long, 3> exact;

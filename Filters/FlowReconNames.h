@@ -88,9 +88,11 @@ constexpr const char* Dimension = "Dimension";
 constexpr const char* Change = "Change";
 constexpr const char* Spacing = "Spacing";
 // The compact output (`reconstruct --compact`), field data: Delaunay triangles
-// crossed by the walks of two index-2 nodes, and twice by one walk.
+// crossed by the walks of two index-2 nodes, twice by one walk, and the voids
+// without a maximum it filled.
 constexpr const char* SharedTriangles = "SharedTriangles";
 constexpr const char* RevisitedTriangles = "RevisitedTriangles";
+constexpr const char* FilledVoids = "FilledVoids";
 } // namespace names
 } // namespace flowrecon
 

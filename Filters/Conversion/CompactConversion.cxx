@@ -80,8 +80,9 @@ void CompactToVTK(const CompactComplex& compact, const std::vector<Point3>& samp
     field->InsertNextValue(static_cast<vtkIdType>(betti[d]));
   }
   grid->GetFieldData()->AddArray(field);
-  const std::pair<const char*, Id> counts[2] = { { names::SharedTriangles, compact.SharedTriangles },
-    { names::RevisitedTriangles, compact.RevisitedTriangles } };
+  const std::pair<const char*, Id> counts[3] = { { names::SharedTriangles, compact.SharedTriangles },
+    { names::RevisitedTriangles, compact.RevisitedTriangles },
+    { names::FilledVoids, compact.FilledVoids } };
   for (const auto& count : counts)
   {
     auto a = NamedArray<vtkIdTypeArray>(count.first);

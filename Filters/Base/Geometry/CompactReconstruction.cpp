@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 
 namespace flowrecon
@@ -120,15 +121,15 @@ void AddPatchTriangles(const Retriangulation& re, const std::vector<Node>& nodes
 }
 
 /// The Delaunay cells whose Voronoi vertex flows to one of `maxima` (index-3
-/// node ids, sorted).
+/// node ids, sorted); `cellNode` (per cell) receives their maximum.
 void AddConeTetrahedra(const Retriangulation& re, const std::vector<Node>& nodes,
-  const std::vector<Id>& maxima, const Progress& progress, CompactComplex& out)
+  const std::vector<Id>& maxima, const Progress& progress, CompactComplex& out,
+  std::vector<Id>& cellNode)
 {
   const CriticalSimplices& cs = re.Critical();
   const Triangulation& tri = re.Tri();
   const Id infinity = re.Base3() + static_cast<Id>(cs.Cells.size());
   std::vector<std::int32_t> maximumOfCell(static_cast<std::size_t>(tri.NumberOfCells()), -1);
-  std::vector<char> wanted(static_cast<std::size_t>(tri.NumberOfCells()), 0);
   for (const Id node : maxima)
   {
     const Id c = node - re.Base3();
@@ -161,16 +162,139 @@ void AddConeTetrahedra(const Retriangulation& re, const std::vector<Node>& nodes
       {
         double bound = 0;
         const Id root = forest.RootBelow(c, limit * limit, &bound);
-        wanted[c] = root >= 0 && std::binary_search(maxima.begin(), maxima.end(), root) ? 1 : 0;
+        cellNode[c] = root >= 0 && std::binary_search(maxima.begin(), maxima.end(), root) ? root : -1;
       }
     });
   for (Id c = 0; c < tri.NumberOfCells(); ++c)
   {
-    if (wanted[c])
+    if (cellNode[c] >= 0)
     {
       out.Tetrahedra.push_back(InputSimplex<4>(re, tri.SortedVertices(tri.Cell(c))));
-      double bound = 0;
-      out.TetrahedronNode.push_back(forest.RootBelow(c, limit * limit, &bound));
+      out.TetrahedronNode.push_back(cellNode[c]);
+    }
+  }
+}
+
+/// The bounded components of the complement of the compact complex (Delaunay
+/// cells joined across facets that are not its triangles) that hold no
+/// maximum, filled with their cells. Every bounded component of the complement
+/// of the exact reconstruction holds the stable manifold of a maximum, hence
+/// its Voronoi vertex, so these voids are not the exact one's: they appear
+/// where two patches cross the Voronoi edges around a Voronoi vertex, the
+/// region between them escaping through Voronoi facets, which no Delaunay
+/// simplex stands for. The filling's cells go to the wall node of largest value.
+void FillVoidsWithoutMaximum(const Retriangulation& re, const std::vector<Node>& nodes,
+  const std::vector<Id>& cellNode, CompactComplex& out)
+{
+  const Triangulation& tri = re.Tri();
+  const std::vector<Id>& inputId = re.Prepared().InputId;
+  std::vector<Id> vertexOf(
+    inputId.empty() ? 0 : static_cast<std::size_t>(*std::max_element(inputId.begin(), inputId.end()) + 1), -1);
+  for (Id v = 0; v < static_cast<Id>(inputId.size()); ++v)
+  {
+    vertexOf[inputId[v]] = v;
+  }
+  std::vector<Claim> walls; // triangles in triangulation ids
+  for (std::size_t k = 0; k < out.Triangles.size(); ++k)
+  {
+    std::array<Id, 3> t{ { vertexOf[out.Triangles[k][0]], vertexOf[out.Triangles[k][1]],
+      vertexOf[out.Triangles[k][2]] } };
+    std::sort(t.begin(), t.end());
+    walls.push_back({ t, out.TriangleNode[k] });
+  }
+  std::sort(walls.begin(), walls.end());
+  // Per cell, a bit per facet that is a wall: the fill below looks at every
+  // facet of every cell, millions.
+  std::vector<std::uint8_t> wallFacets(static_cast<std::size_t>(tri.NumberOfCells()), 0);
+  for (const Claim& w : walls)
+  {
+    CellHandle cell;
+    int opposite = 0;
+    if (!tri.Facet(w.Triangle[0], w.Triangle[1], w.Triangle[2], cell, opposite))
+    {
+      throw std::logic_error("compact reconstruction: a triangle that is not a Delaunay facet");
+    }
+    for (int side = 0; side < 2; ++side)
+    {
+      if (!tri.Dt().is_infinite(cell))
+      {
+        wallFacets[tri.CellId(cell)] |= static_cast<std::uint8_t>(1u << opposite);
+      }
+      const CellHandle other = cell->neighbor(opposite);
+      opposite = other->index(cell);
+      cell = other;
+    }
+  }
+  std::vector<char> isMaximum(static_cast<std::size_t>(tri.NumberOfCells()), 0);
+  for (const CriticalCell& c : re.Critical().Cells)
+  {
+    isMaximum[c.Cell] = 1;
+  }
+  std::vector<char> seen(static_cast<std::size_t>(tri.NumberOfCells()), 0);
+  std::vector<Id> component, stack;
+  for (Id start = 0; start < tri.NumberOfCells(); ++start)
+  {
+    if (seen[start] || (!cellNode.empty() && cellNode[start] >= 0))
+    {
+      continue;
+    }
+    bool bounded = true, maximum = false;
+    Id wall = -1;
+    auto meet = [&](Id node) {
+      if (wall < 0 || nodes[node].Value > nodes[wall].Value)
+      {
+        wall = node;
+      }
+    };
+    component.clear();
+    stack.assign(1, start);
+    seen[start] = 1;
+    while (!stack.empty())
+    {
+      const Id c = stack.back();
+      stack.pop_back();
+      component.push_back(c);
+      maximum = maximum || isMaximum[c];
+      const CellHandle cell = tri.Cell(c);
+      for (int k = 0; k < 4; ++k)
+      {
+        const CellHandle next = cell->neighbor(k);
+        if (wallFacets[c] & (1u << k))
+        {
+          std::array<Id, 3> t;
+          for (int j = 0, m = 0; j < 4; ++j)
+          {
+            if (j != k)
+            {
+              t[m++] = cell->vertex(j)->info();
+            }
+          }
+          std::sort(t.begin(), t.end());
+          meet(std::lower_bound(walls.begin(), walls.end(), Claim{ t, -1 })->Node);
+        }
+        else if (tri.Dt().is_infinite(next))
+        {
+          bounded = false;
+        }
+        else if (!cellNode.empty() && cellNode[tri.CellId(next)] >= 0)
+        {
+          meet(cellNode[tri.CellId(next)]);
+        }
+        else if (!seen[tri.CellId(next)])
+        {
+          seen[tri.CellId(next)] = 1;
+          stack.push_back(tri.CellId(next));
+        }
+      }
+    }
+    if (bounded && !maximum && wall >= 0)
+    {
+      ++out.FilledVoids;
+      for (const Id c : component)
+      {
+        out.Tetrahedra.push_back(InputSimplex<4>(re, tri.SortedVertices(tri.Cell(c))));
+        out.TetrahedronNode.push_back(wall);
+      }
     }
   }
 }
@@ -259,10 +383,14 @@ CompactComplex CompactReconstruction(const Retriangulation& re, const std::vecto
   }
   CompactComplex out;
   AddPatchTriangles(re, nodes, patches, progress, out);
+  std::vector<Id> cellNode;
   if (!maxima.empty())
   {
-    AddConeTetrahedra(re, nodes, maxima, progress, out);
+    cellNode.assign(static_cast<std::size_t>(re.Tri().NumberOfCells()), -1);
+    AddConeTetrahedra(re, nodes, maxima, progress, out, cellNode);
   }
+  progress(0.9, "compact voids");
+  FillVoidsWithoutMaximum(re, nodes, cellNode, out);
   AddEdgesAndSamples(nodes, sorted, out);
   progress(1.0, "compact output");
   return out;

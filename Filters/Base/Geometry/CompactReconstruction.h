@@ -7,7 +7,9 @@
 // where S(c) ends, so usually of S(c)'s homotopy type. An index-3 node gives
 // the Delaunay cells whose Voronoi vertex flows to it, an index-1 node its
 // Gabriel edge, an index-0 node its sample. Where two walks cross one
-// Delaunay triangle the two patches share it: counted, not resolved.
+// Delaunay triangle the two patches share it: counted, not resolved; where
+// two patches close around Voronoi vertices that the exact ones leave open,
+// the void is filled.
 #ifndef flowrecon_CompactReconstruction_h
 #define flowrecon_CompactReconstruction_h
 
@@ -39,6 +41,9 @@ struct CompactComplex
   Id SharedTriangles = 0;
   /// Delaunay triangles crossed twice by one walk (written once).
   Id RevisitedTriangles = 0;
+  /// Voids of the complex with no maximum inside, filled with their Delaunay
+  /// cells (see CompactReconstruction).
+  Id FilledVoids = 0;
   /// Walks redone in exact arithmetic.
   Id ExactFallbacks = 0;
 
@@ -53,7 +58,9 @@ struct CompactComplex
 /// the maximum at infinity is ignored). `re` is the triangulation of the
 /// points the complex of `nodes` was built from (Retriangulation.h); only the
 /// walks of the selected index-2 nodes run, and the flow lines of every
-/// Delaunay cell when a maximum is selected. Throws InputError when a node
+/// Delaunay cell when a maximum is selected (up to its value). A bounded
+/// region of the complement that holds no maximum is filled with its cells:
+/// the exact reconstruction has no such void. Throws InputError when a node
 /// does not belong to `re`, Degenerate if a walk meets a tie.
 CompactComplex CompactReconstruction(const Retriangulation& re, const std::vector<Node>& nodes,
   const std::vector<Id>& selected, const Progress& progress = Progress());
