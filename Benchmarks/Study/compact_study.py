@@ -112,7 +112,7 @@ def study(cid, source, size, noise, cls, opts):
             r["compact_betti"] = numbers(r"^compact output's Betti numbers (\d+) (\d+) (\d+)$", so)
             r["counts"] = numbers(r"^compact output: (\d+) triangles, (\d+) tetrahedra, (\d+) edges, "
                                   r"(\d+) samples, \S+ cells per sample; (\d+) triangles shared by two "
-                                  r"patches, (\d+) crossed twice", so)
+                                  r"patches, (\d+) crossed twice by one walk, (\d+) voids", so)
         if code != 0:
             r["error"] = se.strip().splitlines()[-1:] or ["?"]
         row[kind] = r
@@ -128,23 +128,23 @@ def btext(b):
 def report(rows):
     lines = ["| cloud | n | truth | exact | compact | agree | cells/sample exact → compact | "
              "file (KB) exact → compact | time (s) exact → compact | triangles shared, "
-             "revisited | compact edges, tetrahedra |",
-             "|---|---:|---|---|---|---|---:|---:|---:|---:|---:|"]
+             "revisited | voids filled | compact edges, tetrahedra |",
+             "|---|---:|---|---|---|---|---:|---:|---:|---:|---:|---:|"]
     agree = total = 0
     for r in rows:
         e, c = r["exact"], r["compact"]
         if e["exit"] != 0 or c["exit"] != 0:
-            lines.append("| %s | %d | %s | error | error | | | | | | |" % (r["id"], r["points"], btext(r["truth"])))
+            lines.append("| %s | %d | %s | error | error | | | | | | | |" % (r["id"], r["points"], btext(r["truth"])))
             continue
         same = c["compact_betti"] == e["betti"]
         total += 1
         agree += same
-        counts = c["counts"] or (0,) * 6
-        lines.append("| %s | %d | %s | %s | %s | %s | %.2f → %.2f | %d → %d | %.2f → %.2f | %d, %d | %d, %d |" % (
+        counts = c["counts"] or (0,) * 7
+        lines.append("| %s | %d | %s | %s | %s | %s | %.2f → %.2f | %d → %d | %.2f → %.2f | %d, %d | %d | %d, %d |" % (
             r["id"], r["points"], btext(r["truth"]), btext(e["betti"]), btext(c["compact_betti"]),
             "yes" if same else "**no**", e["cells"][0] / r["points"], c["cells"][0] / r["points"],
             e["size_bytes"] / 1024, c["size_bytes"] / 1024, e["wall_s"], c["wall_s"],
-            counts[4], counts[5], counts[2], counts[1]))
+            counts[4], counts[5], counts[6], counts[2], counts[1]))
     lines.append("")
     lines.append("Betti numbers of the compact output equal the exact output's on %d of %d clouds." % (agree, total))
     return "\n".join(lines)
