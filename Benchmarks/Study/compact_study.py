@@ -18,7 +18,10 @@ under /usr/bin/time (wall seconds, peak RSS). The exact run's Betti numbers are 
 'Betti numbers: b0 b1 b2' line; the compact run's its "compact output's Betti
 numbers" line (the homology of the cells it wrote). The report OUTDIR/study.md (also
 printed) has one row per cloud; OUTDIR/results.json every run. With --large, the
-i.i.d. 10^5-point clouds too.
+i.i.d. 10^5-point clouds too. For the compact file's triangles it also counts the
+border edges (in one triangle), the non-manifold edges (in more than two) and the
+singular vertices (whose triangles do not make one disc or sphere around them):
+all 0 for a closed surface.
 """
 import argparse
 import json
@@ -95,6 +98,48 @@ def numbers(pattern, text):
     return None if not m else tuple(int(x) for x in m.groups())
 
 
+def surface_stats(vtu):
+    """(edges in one triangle, edges in more than two, vertices whose triangles do
+    not make one disc or sphere around them) of the compact file's triangles."""
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
+    r = vtkXMLUnstructuredGridReader()
+    r.SetFileName(vtu)
+    r.Update()
+    g = r.GetOutput()
+    types = vtk_to_numpy(g.GetCellTypesArray())
+    conn = vtk_to_numpy(g.GetCells().GetConnectivityArray())
+    off = vtk_to_numpy(g.GetCells().GetOffsetsArray())
+    idx = np.nonzero(types == 5)[0]
+    if not len(idx):
+        return (0, 0, 0)
+    t = np.sort(np.stack([conn[off[idx] + j] for j in range(3)], axis=1), axis=1)
+    e = np.concatenate([t[:, [0, 1]], t[:, [0, 2]], t[:, [1, 2]]])
+    _, counts = np.unique(e, axis=0, return_counts=True)
+    # a vertex is regular when its link (the opposite edges) is one path or cycle
+    link = {}
+    for a, b, c in t.tolist():
+        for v, x, y in ((a, b, c), (b, a, c), (c, a, b)):
+            link.setdefault(v, []).append((x, y))
+    singular = 0
+    for v, edges in link.items():
+        adj = {}
+        for x, y in edges:
+            adj.setdefault(x, []).append(y)
+            adj.setdefault(y, []).append(x)
+        if any(len(n) > 2 for n in adj.values()):
+            singular += 1
+            continue
+        seen, stack = {edges[0][0]}, [edges[0][0]]
+        while stack:
+            for w in adj[stack.pop()]:
+                if w not in seen:
+                    seen.add(w)
+                    stack.append(w)
+        singular += len(seen) != len(adj)
+    return (int((counts == 1).sum()), int((counts > 2).sum()), singular)
+
+
 def study(cid, source, size, noise, cls, opts):
     path = os.path.join(opts.outdir, "clouds", cid + ".xyz")
     make_cloud(cid, source, size, noise, path)
@@ -113,6 +158,8 @@ def study(cid, source, size, noise, cls, opts):
             r["counts"] = numbers(r"^compact output: (\d+) triangles, (\d+) tetrahedra, (\d+) edges, "
                                   r"(\d+) samples, \S+ cells per sample; (\d+) triangles shared by two "
                                   r"patches, (\d+) crossed twice by one walk, (\d+) voids", so)
+        if kind == "compact" and code == 0:
+            r["surface"] = surface_stats(out)
         if code != 0:
             r["error"] = se.strip().splitlines()[-1:] or ["?"]
         row[kind] = r
@@ -128,23 +175,23 @@ def btext(b):
 def report(rows):
     lines = ["| cloud | n | truth | exact | compact | agree | cells/sample exact → compact | "
              "file (KB) exact → compact | time (s) exact → compact | triangles shared, "
-             "revisited | voids filled | compact edges, tetrahedra |",
-             "|---|---:|---|---|---|---|---:|---:|---:|---:|---:|---:|"]
+             "revisited | voids filled | compact edges, tetrahedra | border, non-manifold edges, singular vertices |",
+             "|---|---:|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|"]
     agree = total = 0
     for r in rows:
         e, c = r["exact"], r["compact"]
         if e["exit"] != 0 or c["exit"] != 0:
-            lines.append("| %s | %d | %s | error | error | | | | | | | |" % (r["id"], r["points"], btext(r["truth"])))
+            lines.append("| %s | %d | %s | error | error | | | | | | | | |" % (r["id"], r["points"], btext(r["truth"])))
             continue
         same = c["compact_betti"] == e["betti"]
         total += 1
         agree += same
         counts = c["counts"] or (0,) * 7
-        lines.append("| %s | %d | %s | %s | %s | %s | %.2f → %.2f | %d → %d | %.2f → %.2f | %d, %d | %d | %d, %d |" % (
+        lines.append("| %s | %d | %s | %s | %s | %s | %.2f → %.2f | %d → %d | %.2f → %.2f | %d, %d | %d | %d, %d | %d, %d, %d |" % ((
             r["id"], r["points"], btext(r["truth"]), btext(e["betti"]), btext(c["compact_betti"]),
             "yes" if same else "**no**", e["cells"][0] / r["points"], c["cells"][0] / r["points"],
             e["size_bytes"] / 1024, c["size_bytes"] / 1024, e["wall_s"], c["wall_s"],
-            counts[4], counts[5], counts[6], counts[2], counts[1]))
+            counts[4], counts[5], counts[6], counts[2], counts[1]) + tuple(c["surface"])))
     lines.append("")
     lines.append("Betti numbers of the compact output equal the exact output's on %d of %d clouds." % (agree, total))
     return "\n".join(lines)
