@@ -93,6 +93,8 @@ constexpr const char* Spacing = "Spacing";
 constexpr const char* SharedTriangles = "SharedTriangles";
 constexpr const char* RevisitedTriangles = "RevisitedTriangles";
 constexpr const char* FilledVoids = "FilledVoids";
+// Cell data of the compact output: how many index-2 nodes claim a triangle.
+constexpr const char* Claims = "Claims";
 } // namespace names
 } // namespace flowrecon
 

@@ -32,12 +32,13 @@ void CompactToVTK(const CompactComplex& compact, const std::vector<Point3>& samp
   auto nodeId = NamedArray<vtkIntArray>(names::NodeId);
   auto index = NamedArray<vtkIntArray>(names::Index);
   auto threshold = NamedArray<vtkDoubleArray>(names::Threshold);
-  for (vtkDataArray* a : std::initializer_list<vtkDataArray*>{ nodeId, index, threshold })
+  auto claims = NamedArray<vtkIntArray>(names::Claims);
+  for (vtkDataArray* a : std::initializer_list<vtkDataArray*>{ nodeId, index, threshold, claims })
   {
     a->SetNumberOfTuples(cells);
   }
   vtkIdType c = 0;
-  auto add = [&](const Id* v, int n, Id node, unsigned char type) {
+  auto add = [&](const Id* v, int n, Id node, unsigned char type, int claimed) {
     vtkIdType ids[4];
     for (int k = 0; k < n; ++k)
     {
@@ -48,28 +49,30 @@ void CompactToVTK(const CompactComplex& compact, const std::vector<Point3>& samp
     nodeId->SetValue(c, static_cast<int>(node));
     index->SetValue(c, nodes[node].Index);
     threshold->SetValue(c, nodeThreshold[node]);
+    claims->SetValue(c, claimed);
     ++c;
   };
   for (std::size_t k = 0; k < compact.Vertices.size(); ++k)
   {
-    add(&compact.Vertices[k], 1, compact.VertexNode[k], VTK_VERTEX);
+    add(&compact.Vertices[k], 1, compact.VertexNode[k], VTK_VERTEX, 1);
   }
   for (std::size_t k = 0; k < compact.Edges.size(); ++k)
   {
-    add(compact.Edges[k].data(), 2, compact.EdgeNode[k], VTK_LINE);
+    add(compact.Edges[k].data(), 2, compact.EdgeNode[k], VTK_LINE, 1);
   }
   for (std::size_t k = 0; k < compact.Triangles.size(); ++k)
   {
-    add(compact.Triangles[k].data(), 3, compact.TriangleNode[k], VTK_TRIANGLE);
+    add(compact.Triangles[k].data(), 3, compact.TriangleNode[k], VTK_TRIANGLE,
+      compact.TriangleClaims[k]);
   }
   for (std::size_t k = 0; k < compact.Tetrahedra.size(); ++k)
   {
-    add(compact.Tetrahedra[k].data(), 4, compact.TetrahedronNode[k], VTK_TETRA);
+    add(compact.Tetrahedra[k].data(), 4, compact.TetrahedronNode[k], VTK_TETRA, 1);
   }
   grid->Initialize();
   grid->SetPoints(MakePoints(samples));
   grid->SetCells(types, cellArray);
-  for (vtkDataArray* a : std::initializer_list<vtkDataArray*>{ nodeId, index, threshold })
+  for (vtkDataArray* a : std::initializer_list<vtkDataArray*>{ nodeId, index, threshold, claims })
   {
     grid->GetCellData()->AddArray(a);
   }

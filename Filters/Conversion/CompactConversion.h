@@ -14,8 +14,10 @@ namespace flowrecon
 {
 
 /// `grid` := the cells of `compact` over `samples` (all of them, in input
-/// order: point k is input point k), with cell data NodeId, Index and
-/// Threshold (`nodeThreshold[node]`), and field data BettiNumbers (`betti`).
+/// order: point k is input point k), with cell data NodeId, Index, Threshold
+/// (`nodeThreshold[node]`) and Claims (how many index-2 nodes' walks cross a
+/// triangle; 1 for other cells), and field data BettiNumbers (`betti`),
+/// SharedTriangles, RevisitedTriangles and FilledVoids.
 void CompactToVTK(const CompactComplex& compact, const std::vector<Point3>& samples,
   const std::vector<Node>& nodes, const std::vector<double>& nodeThreshold,
   const std::array<Id, 4>& betti, vtkUnstructuredGrid* grid);

@@ -197,6 +197,7 @@ void ConfigurationD()
   const std::vector<std::array<Id, 3>> expected = { { { 0, 3, 4 } }, { { 2, 3, 4 } } };
   CHECK(c.Triangles == expected);
   CHECK(c.SharedTriangles == 0 && c.RevisitedTriangles == 0);
+  CHECK((c.TriangleClaims == std::vector<int>{ 1, 1 }));
   CHECK(c.Edges.empty() && c.Vertices.empty() && c.Tetrahedra.empty());
   // With every node but the maximum at infinity: the Gabriel edge (1,3) and
   // sample 1 hang off the patch; the other Gabriel edges are its sides.

@@ -107,15 +107,19 @@ void AddPatchTriangles(const Retriangulation& re, const std::vector<Node>& nodes
   for (std::size_t k = 0; k < all.size();)
   {
     std::size_t end = k + 1;
-    bool shared = false, revisited = false;
+    bool revisited = false;
+    int claims = 1;
     for (; end < all.size() && all[end].Triangle == all[k].Triangle; ++end)
     {
-      (all[end].Node == all[end - 1].Node ? revisited : shared) = true;
+      const bool same = all[end].Node == all[end - 1].Node;
+      revisited = revisited || same;
+      claims += same ? 0 : 1;
     }
-    out.SharedTriangles += shared ? 1 : 0;
+    out.SharedTriangles += claims > 1 ? 1 : 0;
     out.RevisitedTriangles += revisited ? 1 : 0;
     out.Triangles.push_back(all[k].Triangle);
     out.TriangleNode.push_back(all[k].Node);
+    out.TriangleClaims.push_back(claims);
     k = end;
   }
 }

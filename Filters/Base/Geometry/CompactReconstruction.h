@@ -34,6 +34,8 @@ struct CompactComplex
   std::vector<Id> EdgeNode;
   std::vector<std::array<Id, 3>> Triangles;
   std::vector<Id> TriangleNode;
+  /// Per triangle, how many index-2 nodes' walks cross it (1 but where shared).
+  std::vector<int> TriangleClaims;
   std::vector<std::array<Id, 4>> Tetrahedra;
   std::vector<Id> TetrahedronNode;
   /// Delaunay triangles crossed by the walks of two (or more) index-2 nodes:
