@@ -4,7 +4,7 @@ against the exact one, on the test clouds: their Betti numbers, cells per sample
 file sizes and times.
 
   PYTHONPATH=Apps/Scripts /usr/bin/python3 Benchmarks/Study/compact_study.py OUTDIR
-      [--flowrecon build/bin/flowrecon] [--only REGEX] [--large]
+      [--flowrecon build/bin/flowrecon] [--only REGEX] [--large] [--args "--tp 1.1 --tr 2"]
 
 For each cloud (Data/*.xyz; generate_clouds.make with its fixed seeds; noisy ones
 are Poisson-disk samples plus Gaussian noise of standard deviation `noise` x their
@@ -14,7 +14,8 @@ OUTDIR/clouds/ID.xyz and runs, at the automatic thresholds,
   flowrecon reconstruct ID.xyz -o ID.exact.vtu
   flowrecon reconstruct ID.xyz -o ID.compact.vtu --compact
 
-under /usr/bin/time (wall seconds, peak RSS). The exact run's Betti numbers are its
+under /usr/bin/time (wall seconds, peak RSS), both with the --args given (e.g. fixed
+thresholds instead of the automatic ones). The exact run's Betti numbers are its
 'Betti numbers: b0 b1 b2' line; the compact run's its "compact output's Betti
 numbers" line (the homology of the cells it wrote). The report OUTDIR/study.md (also
 printed) has one row per cloud; OUTDIR/results.json every run. With --large, the
@@ -147,7 +148,8 @@ def study(cid, source, size, noise, cls, opts):
     row = {"id": cid, "class": cls, "points": n, "truth": truth(source)}
     for kind, extra in (("exact", []), ("compact", ["--compact"])):
         out = os.path.join(opts.outdir, "runs", "%s.%s.vtu" % (cid, kind))
-        code, so, se, wall, peak = run([opts.flowrecon, "reconstruct", path, "-o", out] + extra)
+        code, so, se, wall, peak = run([opts.flowrecon, "reconstruct", path, "-o", out] +
+                                       opts.args.split() + extra)
         r = {"exit": code, "wall_s": wall, "peak_mb": round(peak, 1),
              "size_bytes": os.path.getsize(out) if code == 0 else None,
              "cells": numbers(r"^\S+: (\d+) cells,", so),
@@ -204,6 +206,7 @@ def main(argv=None):
     ap.add_argument("--only", default=None)
     ap.add_argument("--large", action="store_true")
     ap.add_argument("--keep-vtu", action="store_true")
+    ap.add_argument("--args", default="", help="more arguments of both runs")
     opts = ap.parse_args(argv)
     for sub in ("clouds", "runs"):
         os.makedirs(os.path.join(opts.outdir, sub), exist_ok=True)
