@@ -315,7 +315,11 @@ void CloudRun::Draw()
   {
     try
     {
-      const std::vector<Id> draw = NodesToDraw(r.Complex.Nodes, r.Carriers, r.Run, this->DrawThreshold);
+      // The compact output stands in for the stable manifolds: none is drawn
+      // (the grid keeps its samples and Gabriel edges, which nothing writes).
+      const std::vector<Id> draw = this->Settings.Compact
+        ? std::vector<Id>()
+        : NodesToDraw(r.Complex.Nodes, r.Carriers, r.Run, this->DrawThreshold);
       CompleteCones(r, draw);
       // What only the queue needed goes before the drawing, the largest phase.
       linesDeferred = r.Lines ? r.Lines->LinesDeferred() : this->Chosen.LinesDeferred;
@@ -327,6 +331,11 @@ void CloudRun::Draw()
       ReleaseFreedMemory();
       DrawStableManifolds(this->Samples, this->Options, draw, r.Complex, this->Report.Range(0.7, 0.9),
         this->Settings.Advice, &r.Cones, r.Triangulation.get());
+      if (this->Settings.Compact)
+      {
+        this->PhaseDone("drawing");
+        this->DrawCompact(); // on the triangulation, before it goes
+      }
       break;
     }
     catch (const Degenerate&)
@@ -345,11 +354,6 @@ void CloudRun::Draw()
   }
   this->Result.Work = WorkReport(r, linesDeferred, linesFollowed, this->Chosen) +
     (this->TopologyTimes.empty() ? "" : "\nBetti numbers from the Hasse diagram (s): " + this->TopologyTimes);
-  if (this->Settings.Compact)
-  {
-    this->PhaseDone("drawing");
-    this->DrawCompact(); // on the triangulation, before it goes
-  }
   r.Triangulation.reset();
   // The triangulation is the largest block until here (~0.7 KB per point, in
   // tbbmalloc's pools): the VTK arrays below need that memory back.

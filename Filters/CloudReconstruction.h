@@ -42,8 +42,9 @@ struct CloudReconstructionSettings
   double UnderSamplingWindow = 1.1;    ///< changes in [t_r, window t_r) are reported
   bool Topology = true;                ///< Betti numbers, topology profile, under-sampling
   std::string Advice = "lower the threshold"; ///< for a run that would not fit in memory
-  /// Also the compact complex of the reconstruction at t_r (CompactReconstruction.h),
-  /// from the run's own triangulation.
+  /// The compact complex of the reconstruction at t_r (CompactReconstruction.h),
+  /// from the run's own triangulation, instead of the stable manifolds: the
+  /// grid then holds the samples and Gabriel edges only.
   bool Compact = false;
 };
 

@@ -179,16 +179,16 @@ void AddConeTetrahedra(const Retriangulation& re, const std::vector<Node>& nodes
   }
 }
 
-/// The bounded components of the complement of the compact complex (Delaunay
-/// cells joined across facets that are not its triangles) that hold no
-/// maximum, filled with their cells. Every bounded component of the complement
-/// of the exact reconstruction holds the stable manifold of a maximum, hence
-/// its Voronoi vertex, so these voids are not the exact one's: they appear
-/// where two patches cross the Voronoi edges around a Voronoi vertex, the
-/// region between them escaping through Voronoi facets, which no Delaunay
-/// simplex stands for. The filling's cells go to the wall node of largest value.
-void FillVoidsWithoutMaximum(const Retriangulation& re, const std::vector<Node>& nodes,
-  const std::vector<Id>& cellNode, CompactComplex& out)
+/// The walls of the complement's regions: the compact triangles (triangulation
+/// ids, sorted, with their node) and, per cell, a bit per facet that is one
+/// (the search below looks at millions of facets).
+struct Walls
+{
+  std::vector<Claim> Triangles;
+  std::vector<std::uint8_t> Facets;
+};
+
+Walls FindWalls(const Retriangulation& re, const CompactComplex& out)
 {
   const Triangulation& tri = re.Tri();
   const std::vector<Id>& inputId = re.Prepared().InputId;
@@ -198,19 +198,17 @@ void FillVoidsWithoutMaximum(const Retriangulation& re, const std::vector<Node>&
   {
     vertexOf[inputId[v]] = v;
   }
-  std::vector<Claim> walls; // triangles in triangulation ids
+  Walls walls;
   for (std::size_t k = 0; k < out.Triangles.size(); ++k)
   {
     std::array<Id, 3> t{ { vertexOf[out.Triangles[k][0]], vertexOf[out.Triangles[k][1]],
       vertexOf[out.Triangles[k][2]] } };
     std::sort(t.begin(), t.end());
-    walls.push_back({ t, out.TriangleNode[k] });
+    walls.Triangles.push_back({ t, out.TriangleNode[k] });
   }
-  std::sort(walls.begin(), walls.end());
-  // Per cell, a bit per facet that is a wall: the fill below looks at every
-  // facet of every cell, millions.
-  std::vector<std::uint8_t> wallFacets(static_cast<std::size_t>(tri.NumberOfCells()), 0);
-  for (const Claim& w : walls)
+  std::sort(walls.Triangles.begin(), walls.Triangles.end());
+  walls.Facets.assign(static_cast<std::size_t>(tri.NumberOfCells()), 0);
+  for (const Claim& w : walls.Triangles)
   {
     CellHandle cell;
     int opposite = 0;
@@ -222,11 +220,116 @@ void FillVoidsWithoutMaximum(const Retriangulation& re, const std::vector<Node>&
     {
       if (!tri.Dt().is_infinite(cell))
       {
-        wallFacets[tri.CellId(cell)] |= static_cast<std::uint8_t>(1u << opposite);
+        walls.Facets[tri.CellId(cell)] |= static_cast<std::uint8_t>(1u << opposite);
       }
       const CellHandle other = cell->neighbor(opposite);
       opposite = other->index(cell);
       cell = other;
+    }
+  }
+  return walls;
+}
+
+/// The region of the complement that holds cell `start` (cells joined across
+/// facets that are not walls), searched until it is known to hold a maximum,
+/// to be unbounded, or to meet a region searched before (`mark`: the search
+/// of each cell, 0 for none): then `component` is cleared. Otherwise it holds
+/// the region's cells and `wall` the wall node of largest value.
+void SearchRegion(const Retriangulation& re, const std::vector<Node>& nodes,
+  const std::vector<Id>& cellNode, const Walls& walls, const std::vector<char>& isMaximum,
+  Id start, std::int32_t search, std::vector<std::int32_t>& mark, std::vector<Id>& component,
+  Id& wall)
+{
+  const Triangulation& tri = re.Tri();
+  auto meet = [&](Id node) {
+    if (wall < 0 || nodes[node].Value > nodes[wall].Value)
+    {
+      wall = node;
+    }
+  };
+  wall = -1;
+  component.clear();
+  std::vector<Id> stack{ start };
+  mark[start] = search;
+  while (!stack.empty())
+  {
+    const Id c = stack.back();
+    stack.pop_back();
+    component.push_back(c);
+    const CellHandle cell = tri.Cell(c);
+    bool open = isMaximum[c] != 0;
+    for (int k = 0; k < 4 && !open; ++k)
+    {
+      const CellHandle next = cell->neighbor(k);
+      if (walls.Facets[c] & (1u << k))
+      {
+        std::array<Id, 3> t;
+        for (int j = 0, m = 0; j < 4; ++j)
+        {
+          if (j != k)
+          {
+            t[m++] = cell->vertex(j)->info();
+          }
+        }
+        std::sort(t.begin(), t.end());
+        meet(std::lower_bound(walls.Triangles.begin(), walls.Triangles.end(), Claim{ t, -1 })->Node);
+        continue;
+      }
+      open = tri.Dt().is_infinite(next);
+      const Id n = open ? -1 : tri.CellId(next);
+      if (open || (!cellNode.empty() && cellNode[n] >= 0))
+      {
+        if (!open)
+        {
+          meet(cellNode[n]);
+        }
+        continue;
+      }
+      open = mark[n] != 0 && mark[n] != search;
+      if (!open && mark[n] == 0)
+      {
+        mark[n] = search;
+        stack.push_back(n);
+      }
+    }
+    if (open)
+    {
+      component.clear();
+      return;
+    }
+  }
+}
+
+/// The bounded regions of the complement of the compact complex (Delaunay
+/// cells joined across facets that are not its triangles) that hold no
+/// maximum, filled with their cells. Every bounded region of the complement
+/// of the exact reconstruction holds the stable manifold of a maximum, hence
+/// its Voronoi vertex, so these voids are not the exact one's: they appear
+/// where two patches cross the Voronoi edges around a Voronoi vertex, the
+/// region between them escaping through Voronoi facets, which no Delaunay
+/// simplex stands for. The filling's cells go to the wall node of largest
+/// value. Only regions next to a wall are searched, each until it is seen to
+/// hold a maximum or to be unbounded.
+void FillVoidsWithoutMaximum(const Retriangulation& re, const std::vector<Node>& nodes,
+  const std::vector<Id>& cellNode, CompactComplex& out)
+{
+  const Triangulation& tri = re.Tri();
+  const Walls walls = FindWalls(re, out);
+  std::vector<Id> starts;
+  for (Id c = 0; c < tri.NumberOfCells(); ++c)
+  {
+    const bool inside = !cellNode.empty() && cellNode[c] >= 0;
+    if (!inside && walls.Facets[c] != 0)
+    {
+      starts.push_back(c);
+    }
+    for (int k = 0; inside && k < 4; ++k)
+    {
+      const CellHandle next = tri.Cell(c)->neighbor(k);
+      if (!tri.Dt().is_infinite(next) && cellNode[tri.CellId(next)] < 0)
+      {
+        starts.push_back(tri.CellId(next));
+      }
     }
   }
   std::vector<char> isMaximum(static_cast<std::size_t>(tri.NumberOfCells()), 0);
@@ -234,64 +337,18 @@ void FillVoidsWithoutMaximum(const Retriangulation& re, const std::vector<Node>&
   {
     isMaximum[c.Cell] = 1;
   }
-  std::vector<char> seen(static_cast<std::size_t>(tri.NumberOfCells()), 0);
-  std::vector<Id> component, stack;
-  for (Id start = 0; start < tri.NumberOfCells(); ++start)
+  std::vector<std::int32_t> mark(static_cast<std::size_t>(tri.NumberOfCells()), 0);
+  std::vector<Id> component;
+  std::int32_t search = 0;
+  for (const Id start : starts)
   {
-    if (seen[start] || (!cellNode.empty() && cellNode[start] >= 0))
+    if (mark[start] != 0)
     {
       continue;
     }
-    bool bounded = true, maximum = false;
     Id wall = -1;
-    auto meet = [&](Id node) {
-      if (wall < 0 || nodes[node].Value > nodes[wall].Value)
-      {
-        wall = node;
-      }
-    };
-    component.clear();
-    stack.assign(1, start);
-    seen[start] = 1;
-    while (!stack.empty())
-    {
-      const Id c = stack.back();
-      stack.pop_back();
-      component.push_back(c);
-      maximum = maximum || isMaximum[c];
-      const CellHandle cell = tri.Cell(c);
-      for (int k = 0; k < 4; ++k)
-      {
-        const CellHandle next = cell->neighbor(k);
-        if (wallFacets[c] & (1u << k))
-        {
-          std::array<Id, 3> t;
-          for (int j = 0, m = 0; j < 4; ++j)
-          {
-            if (j != k)
-            {
-              t[m++] = cell->vertex(j)->info();
-            }
-          }
-          std::sort(t.begin(), t.end());
-          meet(std::lower_bound(walls.begin(), walls.end(), Claim{ t, -1 })->Node);
-        }
-        else if (tri.Dt().is_infinite(next))
-        {
-          bounded = false;
-        }
-        else if (!cellNode.empty() && cellNode[tri.CellId(next)] >= 0)
-        {
-          meet(cellNode[tri.CellId(next)]);
-        }
-        else if (!seen[tri.CellId(next)])
-        {
-          seen[tri.CellId(next)] = 1;
-          stack.push_back(tri.CellId(next));
-        }
-      }
-    }
-    if (bounded && !maximum && wall >= 0)
+    SearchRegion(re, nodes, cellNode, walls, isMaximum, start, ++search, mark, component, wall);
+    if (!component.empty() && wall >= 0)
     {
       ++out.FilledVoids;
       for (const Id c : component)
