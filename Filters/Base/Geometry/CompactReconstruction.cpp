@@ -18,7 +18,8 @@ namespace flowrecon
 namespace
 {
 
-/// A Delaunay triangle (sorted input ids) crossed by the walk of a node.
+/// A Delaunay triangle (sorted vertex ids: input or triangulation ones) and
+/// the node whose walk crosses it.
 struct Claim
 {
   std::array<Id, 3> Triangle;
