@@ -496,10 +496,10 @@ int RunReconstruct(const Arguments& args)
   std::array<Id, 4> compactBetti{ { 0, 0, 0, 0 } };
   if (args.Compact)
   {
-    compactBetti = CompactBettiNumbers(r.Compact);
+    compactBetti = r.Compact.Betti;
     written = vtkSmartPointer<vtkUnstructuredGrid>::New();
     CompactToVTK(r.Compact, r.Samples, r.Nodes, r.NodeThreshold, compactBetti, written);
-    clock("compact output's Betti numbers and VTK grid");
+    clock("compact output's VTK grid");
   }
   vtkNew<vtkXMLUnstructuredGridWriter> writer;
   WriteXML(writer, written, output);
