@@ -10,6 +10,7 @@ vtk_module_add_module(FlowRecon::Filters
     ${_flowrecon_filters_dir}/vtkPointCloudReader
     ${_flowrecon_filters_dir}/vtkPointCloudReconstruction
   PRIVATE_HEADERS
+    ${_flowrecon_filters_dir}/PipelinePorts.h
     ${_flowrecon_filters_dir}/CloudReconstruction.h
     ${_flowrecon_filters_dir}/Conversion/CompactConversion.h
     ${_flowrecon_filters_dir}/Conversion/ContractArrays.h

@@ -1,5 +1,6 @@
 #include "vtkFlowComplex.h"
 
+#include "PipelinePorts.h"
 #include "FlowComplexBuilder.h"
 #include "CoreCall.h"
 #include "FlowReconNames.h"
@@ -33,9 +34,7 @@ const char* vtkFlowComplex::BlockName(int block)
 //------------------------------------------------------------------------------
 int vtkFlowComplex::FillInputPortInformation(int, vtkInformation* info)
 {
-  info->Remove(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE());
-  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
-  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkTable");
+  flowrecon::AcceptPointCloud(info);
   return 1;
 }
 
@@ -43,11 +42,7 @@ int vtkFlowComplex::FillInputPortInformation(int, vtkInformation* info)
 int vtkFlowComplex::RequestUpdateExtent(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
-  // The distance function depends on all samples: ask for the whole input.
-  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+  flowrecon::RequestWholeInput(inputVector);
   return 1;
 }
 
@@ -62,9 +57,7 @@ int vtkFlowComplex::RequestData(
     vtkErrorMacro("Missing output.");
     return 0;
   }
-  vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) &&
-    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) > 0)
+  if (flowrecon::IsLaterPiece(outputVector))
   {
     output->Initialize(); // piece 0 holds the whole (global) flow complex
     return 1;

@@ -1,5 +1,6 @@
 #include "vtkFlowReconstruction.h"
 
+#include "PipelinePorts.h"
 #include "AutomaticThresholds.h"
 #include "CoreCall.h"
 #include "DeferredReconstruction.h"
@@ -90,18 +91,6 @@ void AddThresholds(const InputPersistence& tp, double tr, const flowrecon::Thres
   flowrecon::ThresholdWarningsToVTK(lines, grid);
 }
 
-/// What every early return leaves: every output empty.
-void EmptyOutputs(vtkInformationVector* outputVector)
-{
-  for (int port = 0; port < outputVector->GetNumberOfInformationObjects(); ++port)
-  {
-    if (vtkDataObject* output = vtkDataObject::GetData(outputVector, port))
-    {
-      output->Initialize();
-    }
-  }
-}
-
 } // namespace
 
 /// The t_r = infinity run of one input and what the outputs need from it.
@@ -166,14 +155,9 @@ int vtkFlowReconstruction::FillInputPortInformation(int, vtkInformation* info)
 //------------------------------------------------------------------------------
 int vtkFlowReconstruction::FillOutputPortInformation(int port, vtkInformation* info)
 {
-  const char* types[6] = { "vtkUnstructuredGrid", "vtkTable", "vtkPolyData", "vtkTable",
-    "vtkPolyData", "vtkTable" };
-  if (port < 0 || port > 5)
-  {
-    return 0;
-  }
-  info->Set(vtkDataObject::DATA_TYPE_NAME(), types[port]);
-  return 1;
+  static const char* const types[] = { "vtkUnstructuredGrid", "vtkTable", "vtkPolyData",
+    "vtkTable", "vtkPolyData", "vtkTable" };
+  return flowrecon::SetOutputType(info, port, types) ? 1 : 0;
 }
 
 //------------------------------------------------------------------------------
@@ -194,7 +178,7 @@ int vtkFlowReconstruction::RequestData(
   {
     // Empty in, empty out: what the other ranks of a parallel run receive
     // (vtkFlowComplex computes on rank 0 only).
-    EmptyOutputs(outputVector);
+    flowrecon::EmptyOutputs(outputVector);
     return 1;
   }
   // The queue runs only for a new input; a new threshold only re-selects.
@@ -203,7 +187,7 @@ int vtkFlowReconstruction::RequestData(
     bool aborted = false;
     if (!this->RunQueue(input, aborted))
     {
-      EmptyOutputs(outputVector);
+      flowrecon::EmptyOutputs(outputVector);
       return aborted ? 1 : 0; // an abort is no error (nothing cached)
     }
   }
@@ -214,12 +198,12 @@ int vtkFlowReconstruction::RequestData(
     vtkErrorMacro(<< "Maximum Threshold (T_max) " << tmax << " is above the input's Defer "
                   << "Patches Above (" << this->Cached->FC.DeferralRatio
                   << "): lower T_max, or raise Defer Patches Above in Flow Complex");
-    EmptyOutputs(outputVector);
+    flowrecon::EmptyOutputs(outputVector);
     return 0;
   }
   if (this->Cached->GeometryThreshold != tmax && !this->DrawGeometry(tmax))
   {
-    EmptyOutputs(outputVector);
+    flowrecon::EmptyOutputs(outputVector);
     return this->GetAbortExecute() ? 1 : 0;
   }
   // Once per drawing and cell limit, when asked for (also when turned on later).
@@ -231,7 +215,7 @@ int vtkFlowReconstruction::RequestData(
   Selection selection;
   if (!this->SelectThreshold(tmax, selection))
   {
-    EmptyOutputs(outputVector);
+    flowrecon::EmptyOutputs(outputVector);
     return 0;
   }
   this->UsedReconstructionThreshold = selection.Threshold;

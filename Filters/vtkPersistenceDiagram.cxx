@@ -1,5 +1,6 @@
 #include "vtkPersistenceDiagram.h"
 
+#include "PipelinePorts.h"
 #include "CoreCall.h"
 #include "DeferredPatches.h"
 #include "FlowComplexConversion.h"
@@ -37,12 +38,8 @@ int vtkPersistenceDiagram::FillInputPortInformation(int, vtkInformation* info)
 //------------------------------------------------------------------------------
 int vtkPersistenceDiagram::FillOutputPortInformation(int port, vtkInformation* info)
 {
-  if (port != DIAGRAM && port != CURVE)
-  {
-    return 0;
-  }
-  info->Set(vtkDataObject::DATA_TYPE_NAME(), port == DIAGRAM ? "vtkUnstructuredGrid" : "vtkTable");
-  return 1;
+  static const char* const types[] = { "vtkUnstructuredGrid", "vtkTable" }; // DIAGRAM, CURVE
+  return flowrecon::SetOutputType(info, port, types) ? 1 : 0;
 }
 
 //------------------------------------------------------------------------------
@@ -57,10 +54,7 @@ int vtkPersistenceDiagram::RequestData(
     vtkErrorMacro("Missing input or output.");
     return 0;
   }
-  auto empty = [&]() {
-    diagram->Initialize();
-    curve->Initialize();
-  };
+  const auto empty = [outputVector]() { flowrecon::EmptyOutputs(outputVector); };
   if (input->GetNumberOfBlocks() == 0)
   {
     // Empty in, empty out: what the other ranks of a parallel run receive

@@ -1,10 +1,11 @@
 // vtkPointCloudReader: the class, the choice of a format by extension and the
-// output (double points, one vertex each). Each format's parser, and the
-// guards that keep malformed VTK files from VTK 9.2's readers, are in files
-// of their own (PointCloudTextFormats, PlyPoints, VtkFilePoints and the
-// guards it runs), all in namespace flowrecon::reader.
+// output (double points, one vertex each). Each format's parser is in a file
+// of its own (PointCloudTextFormats, PlyPoints, and VtkFilePoints, which runs
+// VTK's readers in a child process: IsolatedRead), all in namespace
+// flowrecon::reader.
 #include "vtkPointCloudReader.h"
 
+#include "PipelinePorts.h"
 #include "PlyPoints.h"
 #include "PointCloudParsing.h"
 #include "PointCloudTextFormats.h"
@@ -177,8 +178,7 @@ int vtkPointCloudReader::RequestData(
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   vtkPolyData* output = vtkPolyData::GetData(outInfo);
   // The whole cloud goes to piece 0; other pieces (parallel runs) stay empty.
-  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) &&
-    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) > 0)
+  if (flowrecon::IsLaterPiece(outputVector))
   {
     return 1;
   }

@@ -1,5 +1,6 @@
 #include "vtkPointCloudReconstruction.h"
 
+#include "PipelinePorts.h"
 #include "CloudReconstruction.h"
 #include "CoreCall.h"
 #include "FlowComplexBuilder.h"
@@ -37,36 +38,76 @@ vtkPointCloudReconstruction::~vtkPointCloudReconstruction() = default;
 //------------------------------------------------------------------------------
 int vtkPointCloudReconstruction::FillInputPortInformation(int, vtkInformation* info)
 {
-  info->Remove(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE());
-  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
-  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkTable");
+  flowrecon::AcceptPointCloud(info);
   return 1;
 }
 
 //------------------------------------------------------------------------------
 int vtkPointCloudReconstruction::FillOutputPortInformation(int port, vtkInformation* info)
 {
-  const char* types[6] = { "vtkUnstructuredGrid", "vtkTable", "vtkUnstructuredGrid", "vtkTable",
-    "vtkPolyData", "vtkTable" };
-  if (port < 0 || port > 5)
-  {
-    return 0;
-  }
-  info->Set(vtkDataObject::DATA_TYPE_NAME(), types[port]);
-  return 1;
+  static const char* const types[] = { "vtkUnstructuredGrid", "vtkTable", "vtkUnstructuredGrid",
+    "vtkTable", "vtkPolyData", "vtkTable" };
+  return flowrecon::SetOutputType(info, port, types) ? 1 : 0;
 }
 
 //------------------------------------------------------------------------------
 int vtkPointCloudReconstruction::RequestUpdateExtent(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
-  // The distance function depends on all samples: ask for the whole input.
-  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+  flowrecon::RequestWholeInput(inputVector);
   return 1;
 }
+
+namespace
+{
+
+// The persistence pairs of the cloud's whole flow complex; false with `error`
+// when it does not fit, since the reconstruction is still worth having (it
+// never holds the whole flow complex).
+bool CloudDiagramPairs(const std::vector<flowrecon::Point3>& samples,
+  const flowrecon::Progress& progress, std::vector<flowrecon::PersistencePair>& pairs,
+  std::string& error)
+{
+  try
+  {
+    flowrecon::BuildOptions build;
+    build.StableManifolds = false;
+    build.UnstableManifolds = false;
+    pairs = flowrecon::DiagramPairs(flowrecon::BuildFlowComplex(samples, build, progress));
+    return true;
+  }
+  catch (const flowrecon::InputError& e)
+  {
+    error = e.what();
+  }
+  catch (const std::bad_alloc&)
+  {
+    error = "out of memory";
+  }
+  return false;
+}
+
+// The choice's warnings and the answer in words, as the command line writes
+// them, and the chosen t_r marked on the profile.
+void AnswerToVTK(const flowrecon::CloudReconstructionReport& report,
+  const flowrecon::CloudReconstructionSettings& settings, vtkUnstructuredGrid* grid,
+  vtkTable* profile, vtkTable* topology, vtkPolyData* undersampling, vtkTable* text)
+{
+  const double tr = report.ReconstructionThreshold;
+  const std::vector<double>& tps = settings.PersistenceCandidates;
+  if (report.Automatic)
+  {
+    flowrecon::ThresholdWarningsToVTK(
+      flowrecon::ChoiceWarnings(report.Choice, tps, true, tps.size() > 1), grid);
+  }
+  flowrecon::TopologyTextToVTK(
+    flowrecon::TopologyLine(grid, topology, undersampling, tr, settings.Cap,
+      report.TopologyError.empty() ? "" : ": " + report.TopologyError),
+    grid, text);
+  flowrecon::MarkProfile(profile, tr);
+}
+
+} // namespace
 
 //------------------------------------------------------------------------------
 int vtkPointCloudReconstruction::RequestData(
@@ -84,17 +125,9 @@ int vtkPointCloudReconstruction::RequestData(
     vtkErrorMacro("Missing output.");
     return 0;
   }
-  auto empty = [&]() {
-    for (vtkDataObject* output :
-      std::vector<vtkDataObject*>{ grid, profile, diagram, topology, undersampling, text })
-    {
-      output->Initialize();
-    }
-  };
+  const auto empty = [outputVector]() { flowrecon::EmptyOutputs(outputVector); };
   empty();
-  vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) &&
-    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) > 0)
+  if (flowrecon::IsLaterPiece(outputVector))
   {
     return 1; // piece 0 holds the whole reconstruction (as vtkFlowComplex's)
   }
@@ -128,28 +161,8 @@ int vtkPointCloudReconstruction::RequestData(
   const int ok = flowrecon::CallCore(
     this, "point cloud reconstruction",
     [&]() {
-      if (this->ComputePersistenceDiagram)
-      {
-        // Without it the reconstruction is still worth having (a cloud too
-        // large for the whole flow complex, which the reconstruction never holds).
-        try
-        {
-          flowrecon::BuildOptions build;
-          build.StableManifolds = false;
-          build.UnstableManifolds = false;
-          pairs = flowrecon::DiagramPairs(
-            flowrecon::BuildFlowComplex(samples, build, progress.Range(0, diagramShare)));
-          diagramDone = true;
-        }
-        catch (const flowrecon::InputError& e)
-        {
-          diagramError = e.what();
-        }
-        catch (const std::bad_alloc&)
-        {
-          diagramError = "out of memory";
-        }
-      }
+      diagramDone = this->ComputePersistenceDiagram &&
+        CloudDiagramPairs(samples, progress.Range(0, diagramShare), pairs, diagramError);
       report = flowrecon::ReconstructCloud(samples, settings,
         { grid, profile, topology, undersampling }, progress.Range(diagramShare, 0.95),
         [](const char*) {});
@@ -170,18 +183,7 @@ int vtkPointCloudReconstruction::RequestData(
   {
     vtkWarningMacro(<< "no Betti numbers: " << report.TopologyError);
   }
-  // The choice's warnings and the answer in words, as the command line writes them.
-  const std::vector<double>& tps = settings.PersistenceCandidates;
-  if (report.Automatic)
-  {
-    flowrecon::ThresholdWarningsToVTK(
-      flowrecon::ChoiceWarnings(report.Choice, tps, true, tps.size() > 1), grid);
-  }
-  flowrecon::TopologyTextToVTK(
-    flowrecon::TopologyLine(grid, topology, undersampling, tr, settings.Cap,
-      report.TopologyError.empty() ? "" : ": " + report.TopologyError),
-    grid, text);
-  flowrecon::MarkProfile(profile, tr);
+  AnswerToVTK(report, settings, grid, profile, topology, undersampling, text);
   if (!diagramError.empty())
   {
     vtkWarningMacro(<< "no persistence diagram: " << diagramError

@@ -92,14 +92,10 @@ void MakeRoomBesideRenderView(vtkSMProxy* repr, const char* spec)
     right = layout->SplitVertical(right, 1.0 / k) + 1;
   }
 }
-} // namespace
 
-//------------------------------------------------------------------------------
-void vtkFlowReconDisplayInitializationHelper::PostInitializeProxy(
-  vtkSMProxy* repr, vtkPVXMLElement* xml, vtkMTimeType ts)
+// blocks="...": the blocks shown.
+bool BlockSelectorsHint(vtkSMProxy* repr, vtkPVXMLElement* xml, vtkMTimeType ts)
 {
-  bool changed = false;
-
   vtkSMProperty* blocks = repr->GetProperty("BlockSelectors");
   const char* selectors = xml->GetAttribute("blocks");
   if (selectors && IsFree(repr, blocks, "BlockSelectors", ts))
@@ -113,9 +109,14 @@ void vtkFlowReconDisplayInitializationHelper::PostInitializeProxy(
     {
       helper.Set(i, list[i].c_str());
     }
-    changed = true;
+    return true;
   }
+  return false;
+}
 
+// color_array, color_association: the array coloured by, where the input has it.
+bool ColorArrayHint(vtkSMProxy* repr, vtkPVXMLElement* xml, vtkMTimeType ts)
+{
   vtkSMProperty* color = repr->GetProperty("ColorArrayName");
   const char* array = xml->GetAttribute("color_array");
   const char* association = xml->GetAttribute("color_association");
@@ -131,12 +132,16 @@ void vtkFlowReconDisplayInitializationHelper::PostInitializeProxy(
     if (info && info->GetArrayInformation(array, field))
     {
       vtkSMPropertyHelper(color).SetInputArrayToProcess(field, array);
-      changed = true;
+      return true;
     }
   }
+  return false;
+}
 
-  // Lines drawn as arrows: one glyph per point, oriented and scaled by a point
-  // vector that is the line itself at its start and zero at its end.
+// glyph_vectors: lines drawn as arrows, one glyph per point, oriented and scaled
+// by a point vector that is the line itself at its start and zero at its end.
+bool ArrowGlyphsHint(vtkSMProxy* repr, vtkPVXMLElement* xml, vtkMTimeType ts)
+{
   const char* glyphs = xml->GetAttribute("glyph_vectors");
   vtkSMProperty* representation = repr->GetProperty("Representation");
   if (glyphs && IsFree(repr, representation, "Representation", ts))
@@ -168,11 +173,17 @@ void vtkFlowReconDisplayInitializationHelper::PostInitializeProxy(
       vtkSMPropertyHelper(p).Set(1.0);
       p->Modified();
     }
-    changed = true;
+    return true;
   }
+  return false;
+}
 
-  // Spheres sized by a point array: Point Gaussian, radius = factor x value.
+// sphere_radius_array, sphere_radius_factor, opacity: spheres sized by a point
+// array (Point Gaussian, radius = factor x value).
+bool SpheresHint(vtkSMProxy* repr, vtkPVXMLElement* xml, vtkMTimeType ts)
+{
   const char* scaleArray = xml->GetAttribute("sphere_radius_array");
+  vtkSMProperty* representation = repr->GetProperty("Representation");
   if (scaleArray && IsFree(repr, representation, "Representation", ts))
   {
     double factor = 1;
@@ -206,20 +217,47 @@ void vtkFlowReconDisplayInitializationHelper::PostInitializeProxy(
     {
       vtkSMPropertyHelper(p).Set(opacity);
     }
-    changed = true;
+    return true;
   }
+  return false;
+}
 
-  // Text lines justified (0 left, 1 centred, 2 right).
+// text_justification: text lines justified (0 left, 1 centred, 2 right).
+bool JustificationHint(vtkSMProxy* repr, vtkPVXMLElement* xml, vtkMTimeType ts)
+{
   int justification = 0;
   vtkSMProperty* justify = repr->GetProperty("Justification");
   if (xml->GetScalarAttribute("text_justification", &justification) &&
     IsFree(repr, justify, "Justification", ts))
   {
     vtkSMPropertyHelper(justify).Set(justification);
-    changed = true;
+    return true;
   }
+  return false;
+}
 
-  // One colour (no array, no legend), replacing the palette's.
+// point_size: vertices drawn as shaded spheres of that many pixels. One display
+// draws every block of a multiblock alike in ParaView 5.11, so the critical points
+// cannot be world-size glyphs beside the Gabriel edges' lines.
+bool PointSpheresHint(vtkSMProxy* repr, vtkPVXMLElement* xml, vtkMTimeType ts)
+{
+  double size = 0;
+  vtkSMProperty* pointSize = repr->GetProperty("PointSize");
+  vtkSMProperty* spheres = repr->GetProperty("RenderPointsAsSpheres");
+  if (!xml->GetScalarAttribute("point_size", &size) || !spheres ||
+    !IsFree(repr, pointSize, "PointSize", ts) || !IsFree(repr, spheres, "RenderPointsAsSpheres", ts))
+  {
+    return false;
+  }
+  vtkSMPropertyHelper(pointSize).Set(size);
+  vtkSMPropertyHelper(spheres).Set(1);
+  return true;
+}
+
+// solid_color: one colour (no array, no legend), replacing the palette's.
+bool SolidColorHint(vtkSMProxy* repr, vtkPVXMLElement* xml, vtkMTimeType ts)
+{
+  bool changed = false;
   const char* rgb = xml->GetAttribute("solid_color");
   if (rgb)
   {
@@ -235,6 +273,20 @@ void vtkFlowReconDisplayInitializationHelper::PostInitializeProxy(
         changed = true;
       }
     }
+  }
+  return changed;
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+void vtkFlowReconDisplayInitializationHelper::PostInitializeProxy(
+  vtkSMProxy* repr, vtkPVXMLElement* xml, vtkMTimeType ts)
+{
+  bool changed = false;
+  for (auto hint : { BlockSelectorsHint, ColorArrayHint, ArrowGlyphsHint, SpheresHint,
+         JustificationHint, PointSpheresHint, SolidColorHint })
+  {
+    changed = hint(repr, xml, ts) || changed;
   }
 
   // A chart opened beside the render view (Apply): the render view keeps a

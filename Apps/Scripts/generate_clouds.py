@@ -175,373 +175,14 @@ import sys
 
 import numpy as np
 
-# --------------------------------------------------------------------------- samplers
-
-
-def unit_vectors(n, rng):
-    """n directions uniform on the unit sphere (normalised Gaussians)."""
-    v = rng.standard_normal((n, 3))
-    return v / np.linalg.norm(v, axis=1)[:, None]
-
-
-def sphere(n, rng, center=(0.0, 0.0, 0.0), radius=1.0):
-    return np.asarray(center, dtype=float) + radius * unit_vectors(n, rng)
-
-
-def torus(n, rng, R=1.0, r=0.35, center=(0.0, 0.0, 0.0)):
-    """Uniform w.r.t. area: the area element is r (R + r cos v) du dv, so accept a
-    uniform (u, v) with probability (R + r cos v) / (R + r)."""
-    out = []
-    count = 0
-    while count < n:
-        m = 2 * (n - count) + 16
-        u = rng.uniform(0.0, 2.0 * math.pi, m)
-        v = rng.uniform(0.0, 2.0 * math.pi, m)
-        keep = rng.uniform(0.0, 1.0, m) * (R + r) < R + r * np.cos(v)
-        u, v = u[keep], v[keep]
-        p = np.column_stack(
-            ((R + r * np.cos(v)) * np.cos(u), (R + r * np.cos(v)) * np.sin(u), r * np.sin(v)))
-        out.append(p)
-        count += len(p)
-    return np.vstack(out)[:n] + np.asarray(center, dtype=float)
-
-
-def _inside_solid_torus(p, R, r, center):
-    q = p - np.asarray(center, dtype=float)
-    rho = np.hypot(q[:, 0], q[:, 1])
-    return (rho - R) ** 2 + q[:, 2] ** 2 < r * r
-
-
-def genus2(n, rng, R=1.0, r=0.35, offset=1.2):
-    """Boundary of the union of two solid tori centred at (+-offset, 0, 0). Their
-    intersection is a single lens (the core circles are 2*offset - 2R = 0.4 < 2r
-    apart), so the union is a genus-2 handlebody. Both tori have the same area:
-    draw from either with probability 1/2 and drop the points inside the other."""
-    centers = ((-offset, 0.0, 0.0), (offset, 0.0, 0.0))
-    out = []
-    count = 0
-    while count < n:
-        m = 2 * (n - count) + 16
-        which = rng.integers(0, 2, m)
-        p = torus(m, rng, R, r)
-        p[:, 0] += np.where(which == 0, -offset, offset)
-        other0 = _inside_solid_torus(p, R, r, centers[1])  # points of torus 0 inside torus 1
-        other1 = _inside_solid_torus(p, R, r, centers[0])
-        keep = np.where(which == 0, ~other0, ~other1)
-        p = p[keep]
-        out.append(p)
-        count += len(p)
-    return np.vstack(out)[:n]
-
-
-def _trefoil_curve(t):
-    return np.column_stack(
-        (np.sin(t) + 2.0 * np.sin(2.0 * t), np.cos(t) - 2.0 * np.cos(2.0 * t), -np.sin(3.0 * t))) / 3.0
-
-
-def trefoil(n, rng):
-    """Uniform w.r.t. arc length (inverse of a fine arc-length table)."""
-    t = np.linspace(0.0, 2.0 * math.pi, 200001)
-    p = _trefoil_curve(t)
-    s = np.concatenate(([0.0], np.cumsum(np.linalg.norm(np.diff(p, axis=0), axis=1))))
-    target = rng.uniform(0.0, s[-1], n)
-    return _trefoil_curve(np.interp(target, s, t))
-
-
-def ball(n, rng, radius=1.0):
-    return unit_vectors(n, rng) * (radius * rng.uniform(0.0, 1.0, n) ** (1.0 / 3.0))[:, None]
-
-
-def two_spheres(n, rng):
-    a = n // 2
-    return np.vstack((sphere(a, rng, (-0.5, 0.0, 0.0)), sphere(n - a, rng, (0.5, 0.0, 0.0))))
-
-
-def upper_hemisphere(n, rng, center):
-    v = unit_vectors(n, rng)
-    v[:, 2] = np.abs(v[:, 2])
-    return v + np.asarray(center, dtype=float)
-
-
-def two_hemispheres(n, rng):
-    a = n // 2
-    return np.vstack((upper_hemisphere(a, rng, (-0.5, 0.0, 0.0)),
-                      upper_hemisphere(n - a, rng, (0.5, 0.0, 0.0))))
-
-
-def sphere_with_segment(n, rng):
-    """n points on the unit sphere, plus the segment (1,0,0)-(2,0,0) at the mean
-    spacing of the sphere sample, every point moved by a random offset of at most
-    a tenth of the spacing (so no three are collinear)."""
-    s = sphere(n, rng)
-    spacing = math.sqrt(4.0 * math.pi / n)
-    k = max(2, int(math.ceil(1.0 / spacing)))
-    x = 1.0 + np.arange(1, k + 1) / k  # the attachment point (1,0,0) itself is left to the sphere
-    seg = np.column_stack((x, np.zeros(k), np.zeros(k)))
-    seg += rng.uniform(-0.1 * spacing, 0.1 * spacing, seg.shape) / math.sqrt(3.0)
-    return np.vstack((s, seg))
-
-
-def grid(k, jitter=0.0, rng=None):
-    g = np.arange(k, dtype=float)
-    p = np.array([(x, y, z) for x in g for y in g for z in g], dtype=float)
-    if jitter:
-        p += rng.uniform(-jitter, jitter, p.shape)
-    return p
-
-
-def grid5_jittered(k, rng):
-    return grid(k, 1e-3, rng)
-
-
-def grid4_exact(k, rng):
-    return grid(k)
-
-
-# --------------------------------------------------------------------------- quasi-uniform
-
-QU_FACTOR = 30
-
-
-def farthest_points(candidates, n):
-    """Greedy farthest-point subsampling: n of the candidates, starting from the
-    first, each next one the farthest from those already chosen (ties: the lowest
-    index). Deterministic; the chosen points are about evenly spaced."""
-    c = np.ascontiguousarray(candidates, dtype=float)
-    if n >= len(c):
-        return c.copy()
-    chosen = np.empty(n, dtype=np.int64)
-    chosen[0] = 0
-    d = np.einsum("ij,ij->i", c - c[0], c - c[0])
-    for i in range(1, n):
-        j = int(np.argmax(d))
-        chosen[i] = j
-        diff = c - c[j]
-        np.minimum(d, np.einsum("ij,ij->i", diff, diff), out=d)
-    return c[chosen]
-
-
-def _qu(func, factor=QU_FACTOR):
-    def sampler(n, rng):
-        return farthest_points(func(factor * n, rng), n)
-    sampler.__name__ = func.__name__ + "_qu"
-    sampler.__doc__ = "Farthest-point subsample of %s (quasi-uniform)." % func.__name__
-    return sampler
-
-
-sphere_qu = _qu(sphere)
-torus_qu = _qu(torus)
-genus2_qu = _qu(genus2)
-ball_qu = _qu(ball)
-two_spheres_qu = _qu(two_spheres)
-two_hemispheres_qu = _qu(two_hemispheres)
-
-
-def trefoil_qu(n, rng):
-    """Evenly spaced in arc length, each point moved by at most a tenth of the
-    spacing along the curve."""
-    t = np.linspace(0.0, 2.0 * math.pi, 200001)
-    p = _trefoil_curve(t)
-    s = np.concatenate(([0.0], np.cumsum(np.linalg.norm(np.diff(p, axis=0), axis=1))))
-    target = (np.arange(n) + rng.uniform(-0.1, 0.1, n)) * (s[-1] / n)
-    return _trefoil_curve(np.interp(np.mod(target, s[-1]), s, t))
-
-
-def _segment_points(a, b, spacing, rng):
-    """Points of the segment a-b (a excluded, b included) at about `spacing`,
-    each moved by a random offset of at most a tenth of the spacing."""
-    a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
-    k = max(2, int(math.ceil(np.linalg.norm(b - a) / spacing)))
-    seg = a + (np.arange(1, k + 1) / k)[:, None] * (b - a)
-    return seg + rng.uniform(-0.1 * spacing, 0.1 * spacing, seg.shape) / math.sqrt(3.0)
-
-
-def sphere_with_segment_qu(n, rng):
-    s = sphere_qu(n, rng)
-    spacing = math.sqrt(4.0 * math.pi / n)
-    return np.vstack((s, _segment_points((1.0, 0.0, 0.0), (2.0, 0.0, 0.0), spacing, rng)))
-
-
-def _vase_radius(z):
-    return 0.55 + 0.25 * np.sin(1.5 * math.pi * z / 2.0 + 0.3)
-
-
-def _vase_surface(n, rng, height=2.0):
-    """i.i.d. w.r.t. area: the wall (rejection on r(z) sqrt(1 + r'(z)^2)) and the
-    flat bottom disk z = 0."""
-    zz = np.linspace(0.0, height, 4001)
-    r = _vase_radius(zz)
-    dr = np.gradient(r, zz)
-    density = r * np.sqrt(1.0 + dr * dr)
-    wall_area = 2.0 * math.pi * np.trapz(density, zz)
-    r0 = float(_vase_radius(0.0))
-    bottom_area = math.pi * r0 * r0
-    n_bottom = int(round(n * bottom_area / (wall_area + bottom_area)))
-    out, count, dmax = [], 0, density.max()
-    while count < n - n_bottom:
-        m = 2 * (n - n_bottom - count) + 16
-        z = rng.uniform(0.0, height, m)
-        keep = rng.uniform(0.0, dmax, m) < np.interp(z, zz, density)
-        z = z[keep]
-        a = rng.uniform(0.0, 2.0 * math.pi, len(z))
-        rz = _vase_radius(z)
-        out.append(np.column_stack((rz * np.cos(a), rz * np.sin(a), z)))
-        count += len(z)
-    wall = np.vstack(out)[: n - n_bottom]
-    rho = r0 * np.sqrt(rng.uniform(0.0, 1.0, n_bottom))
-    a = rng.uniform(0.0, 2.0 * math.pi, n_bottom)
-    bottom = np.column_stack((rho * np.cos(a), rho * np.sin(a), np.zeros(n_bottom)))
-    return np.vstack((wall, bottom)), wall_area + bottom_area
-
-
-def vase_qu(n, rng):
-    """The vase: a quasi-uniform sample of the surface (n points) plus two handles
-    sampled as curves at the surface's spacing: the arcs
-    wall(z(s)) + 0.5 sin(pi s) (cos th, sin th, 0), z(s) = 0.6 + 0.9 s, 0 < s < 1,
-    for th = 0 and pi (their ends are on the wall)."""
-    dense, area = _vase_surface(QU_FACTOR * n, rng)
-    surf = farthest_points(dense, n)
-    spacing = math.sqrt(area / n)
-    handles = []
-    for th in (0.0, math.pi):
-        s = np.linspace(0.0, 1.0, 20001)
-        z = 0.6 + 0.9 * s
-        rad = _vase_radius(z) + 0.5 * np.sin(math.pi * s)
-        curve = np.column_stack((rad * math.cos(th), rad * math.sin(th), z))
-        length = np.concatenate(([0.0], np.cumsum(np.linalg.norm(np.diff(curve, axis=0), axis=1))))
-        k = max(2, int(math.ceil(length[-1] / spacing)))
-        target = (np.arange(1, k) + rng.uniform(-0.1, 0.1, k - 1)) * (length[-1] / k)
-        si = np.interp(target, length, s)
-        zi = 0.6 + 0.9 * si
-        radi = _vase_radius(zi) + 0.5 * np.sin(math.pi * si)
-        handles.append(np.column_stack((radi * math.cos(th), radi * math.sin(th), zi)))
-    return np.vstack([surf] + handles)
-
-
-PLATE_HALF = (2.0, 0.8, 0.25)
-PLATE_HOLES = (-1.3, 0.0, 1.3)
-PLATE_HOLE_RADIUS = 0.4
-
-
-def _plate_surface(n, rng):
-    """i.i.d. w.r.t. area on the surface of the plate with three through holes:
-    top and bottom faces minus the disks, the four sides, the three hole walls."""
-    ax, ay, az = PLATE_HALF
-    rh = PLATE_HOLE_RADIUS
-    holes = np.asarray(PLATE_HOLES)
-    faces_area = 2.0 * (4.0 * ax * ay - len(holes) * math.pi * rh * rh)
-    sides_x = 2.0 * (2.0 * ay * 2.0 * az)   # faces x = +-ax
-    sides_y = 2.0 * (2.0 * ax * 2.0 * az)   # faces y = +-ay
-    walls = len(holes) * 2.0 * math.pi * rh * 2.0 * az
-    areas = np.array([faces_area, sides_x, sides_y, walls])
-    which = rng.choice(4, size=n, p=areas / areas.sum())
-    out = []
-    # top / bottom faces: rejection of the hole disks
-    m = int(np.sum(which == 0))
-    pts, count = [], 0
-    while count < m:
-        k = 2 * (m - count) + 16
-        x = rng.uniform(-ax, ax, k)
-        y = rng.uniform(-ay, ay, k)
-        ok = np.all((x[:, None] - holes[None, :]) ** 2 + y[:, None] ** 2 >= rh * rh, axis=1)
-        z = np.where(rng.integers(0, 2, k) == 0, -az, az)
-        pts.append(np.column_stack((x, y, z))[ok])
-        count += int(ok.sum())
-    out.append(np.vstack(pts)[:m])
-    m = int(np.sum(which == 1))
-    out.append(np.column_stack((np.where(rng.integers(0, 2, m) == 0, -ax, ax),
-                                rng.uniform(-ay, ay, m), rng.uniform(-az, az, m))))
-    m = int(np.sum(which == 2))
-    out.append(np.column_stack((rng.uniform(-ax, ax, m),
-                                np.where(rng.integers(0, 2, m) == 0, -ay, ay),
-                                rng.uniform(-az, az, m))))
-    m = int(np.sum(which == 3))
-    a = rng.uniform(0.0, 2.0 * math.pi, m)
-    c = holes[rng.integers(0, len(holes), m)]
-    out.append(np.column_stack((c + rh * np.cos(a), rh * np.sin(a), rng.uniform(-az, az, m))))
-    return np.vstack(out)
-
-
-def plate3_qu(n, rng):
-    return farthest_points(_plate_surface(4 * n, rng), n)
-
-
-def _segment_distance(p0, p1, q0, q1, samples=64):
-    """Distance between two segments (on 64 points each: enough for a clearance test)."""
-    s = np.linspace(0.0, 1.0, samples)
-    a = p0 + s[:, None] * (p1 - p0)
-    b = q0 + s[:, None] * (q1 - q0)
-    return float(np.sqrt(np.min(np.sum((a[:, None, :] - b[None, :, :]) ** 2, axis=2))))
-
-
-TREE_CLEARANCE = 0.1
-
-
-def _tree_branches(depth, rng):
-    """Segments (start, end, radius) of a random branching tree: a trunk of length
-    1 along z, then per level 2 or 3 children from the end of their parent, length
-    x0.7, radius x0.7, directions at 25..55 degrees from the parent's, spread
-    evenly around it with a random phase. A child that would come closer than
-    TREE_CLEARANCE to a branch it does not touch is drawn again (up to 20 times,
-    then left out), so the tree of curves has no extra loop at the sampling scale."""
-    branches = [(np.zeros(3), np.array([0.0, 0.0, 1.0]), 0.012)]
-    frontier = [0]
-    for _level in range(depth):
-        nxt = []
-        for b in frontier:
-            start, end, radius = branches[b]
-            axis = (end - start) / np.linalg.norm(end - start)
-            helper = np.array([1.0, 0.0, 0.0]) if abs(axis[0]) < 0.9 else np.array([0.0, 1.0, 0.0])
-            u = np.cross(axis, helper)
-            u /= np.linalg.norm(u)
-            v = np.cross(axis, u)
-            k = int(rng.integers(2, 4))
-            phase = rng.uniform(0.0, 2.0 * math.pi)
-            length = np.linalg.norm(end - start) * 0.7
-            for i in range(k):
-                for _attempt in range(20):
-                    tilt = math.radians(rng.uniform(25.0, 55.0))
-                    turn = phase + 2.0 * math.pi * i / k + rng.uniform(-0.3, 0.3)
-                    d = math.cos(tilt) * axis + math.sin(tilt) * (
-                        math.cos(turn) * u + math.sin(turn) * v)
-                    tip = end + length * d
-                    clear = True
-                    for (s0, s1, _r) in branches:
-                        touching = min(np.linalg.norm(a - c) for a in (end, tip)
-                                       for c in (s0, s1)) < 1e-12
-                        if not touching and _segment_distance(end, tip, s0, s1) < TREE_CLEARANCE:
-                            clear = False
-                            break
-                    if clear:
-                        break
-                if clear:
-                    branches.append((end, tip, radius * 0.7))
-                    nxt.append(len(branches) - 1)
-        frontier = nxt
-    return branches
-
-
-def tree(depth, rng, step=0.02):
-    """Points on the thin cylinders around the branches of _tree_branches, one
-    every `step` along each axis at a random angle, plus the root (0, 0, 0)."""
-    branches = _tree_branches(depth, rng)
-    out = []
-    for start, end, radius in branches:
-        axis = end - start
-        length = np.linalg.norm(axis)
-        axis /= length
-        helper = np.array([1.0, 0.0, 0.0]) if abs(axis[0]) < 0.9 else np.array([0.0, 1.0, 0.0])
-        u = np.cross(axis, helper)
-        u /= np.linalg.norm(u)
-        v = np.cross(axis, u)
-        k = max(2, int(math.ceil(length / step)))
-        t = (np.arange(1, k + 1) / k) * length  # the start is the parent's end
-        a = rng.uniform(0.0, 2.0 * math.pi, k)
-        out.append(start + t[:, None] * axis
-                   + radius * (np.cos(a)[:, None] * u + np.sin(a)[:, None] * v))
-    root = np.zeros((1, 3))
-    return np.vstack([root] + out)
-
+from shapes import (  # noqa: F401 (unit_vectors: also read as generate_clouds.NAME)
+    _inside_solid_torus, _segment_points, ball, ball_qu, genus2, genus2_qu, grid,
+    grid4_exact, grid5_jittered, plate3_qu, sphere, sphere_qu, sphere_with_segment,
+    sphere_with_segment_qu, torus, torus_qu, tree, trefoil, trefoil_qu, two_hemispheres,
+    two_hemispheres_qu, two_spheres, two_spheres_qu, unit_vectors, vase_qu)
+from sampling import (  # noqa: F401 (some also read as generate_clouds.NAME)
+    QU_FACTOR, density_varying, farthest_points, graded_poisson_disk_of, poisson_disk,
+    poisson_disk_of, quasi_uniform)
 
 # --------------------------------------------------------------------------- study shapes
 # Shapes added for the t_r / t_p study (Benchmarks/Study/tr_study.py): thin parts,
@@ -640,143 +281,24 @@ def genus4(n, rng):
     return torus_row(n, rng, 4)
 
 
-thin_tube_qu = _qu(thin_tube)
-thin_plate_qu = _qu(thin_plate)
-genus4_qu = _qu(genus4)
+thin_tube_qu = quasi_uniform(thin_tube)
+thin_plate_qu = quasi_uniform(thin_plate)
+genus4_qu = quasi_uniform(genus4)
 
 # density-varying i.i.d. samples
 
-DV_RATIO = 10.0
-
-
-def _accept_along_x(points, rng, xmin, xmax, ratio=DV_RATIO):
-    """Keep each point with the probability (1 + (ratio - 1) t) / ratio, t = (x - xmin)
-    / (xmax - xmin): the density grows linearly with x, ratio times from xmin to xmax."""
-    t = (points[:, 0] - xmin) / (xmax - xmin)
-    return points[rng.uniform(0.0, 1.0, len(points)) * ratio < 1.0 + (ratio - 1.0) * t]
-
-
-def _dv(func, xmin, xmax):
-    def sampler(n, rng):
-        out, count = [], 0
-        while count < n:
-            p = _accept_along_x(func(2 * (n - count) + 16, rng), rng, xmin, xmax)
-            out.append(p)
-            count += len(p)
-        return np.vstack(out)[:n]
-    sampler.__name__ = func.__name__ + "_dv"
-    sampler.__doc__ = ("i.i.d. sample of %s whose density grows linearly along x, %g times "
-                       "from x = %g to x = %g." % (func.__name__, DV_RATIO, xmin, xmax))
-    return sampler
-
-
-sphere_dv = _dv(sphere, -1.0, 1.0)
-torus_dv = _dv(torus, -1.35, 1.35)
+sphere_dv = density_varying(sphere, -1.0, 1.0)
+torus_dv = density_varying(torus, -1.35, 1.35)
 
 # Poisson-disk (quasi-uniform) samples: O(candidates), for large n
 
-PD_FACTOR = 20            # i.i.d. candidates per point ...
-PD_MAX_CANDIDATES = 10 ** 7   # ... but at most this many (10 per point at 10^6)
-
-
-def _greedy_disk(c, r2, cell, kept, grid, limit):
-    """One dart-throwing pass over the candidates c in their order: keep a candidate
-    when no kept point is closer than sqrt(r2) (r2 a number or one per candidate),
-    until `limit` points are kept. `grid` maps a cell (side `cell` >= the radius) to
-    its kept points, so 27 cells are looked at per candidate."""
-    lo = c.min(axis=0)
-    ijk = np.floor((c - lo) / cell).astype(np.int64) + 1
-    dims = ijk.max(axis=0) + 2
-    keys = ijk[:, 0] + dims[0] * (ijk[:, 1] + dims[1] * ijk[:, 2])
-    deltas = sorted(((dx, dy, dz) for dx in (-1, 0, 1) for dy in (-1, 0, 1) for dz in (-1, 0, 1)),
-                    key=lambda d: abs(d[0]) + abs(d[1]) + abs(d[2]))
-    offs = [int(dx + dims[0] * (dy + dims[1] * dz)) for dx, dy, dz in deltas]
-    get = grid.get
-    per_point = not np.isscalar(r2)
-    chunk = 200000
-    for s in range(0, len(c), chunk):
-        pts = c[s:s + chunk].tolist()
-        ks = keys[s:s + chunk].tolist()
-        rs = r2[s:s + chunk].tolist() if per_point else None
-        for j, (x, y, z) in enumerate(pts):
-            key = ks[j]
-            rr = rs[j] if per_point else r2
-            for d in offs:
-                cellpts = get(key + d)
-                if cellpts is not None:
-                    for (a, b, e) in cellpts:
-                        if (a - x) * (a - x) + (b - y) * (b - y) + (e - z) * (e - z) < rr:
-                            break
-                    else:
-                        continue
-                    break
-            else:
-                grid.setdefault(key, []).append((x, y, z))
-                kept.append(s + j)
-                if len(kept) >= limit:
-                    return
-
-
-def poisson_disk(candidates, n, measure, dim, weight=None):
-    """Exactly n of the candidates, about evenly spaced (a quasi-uniform sample, like
-    farthest_points but in time linear in the candidates: about 3 us each). A greedy
-    Poisson-disk (dart-throwing) pass keeps, in the candidates' (random) order, every
-    candidate with no kept point closer than a radius r; r is first guessed from the
-    `measure` (length, area or volume) of the `dim`-dimensional sampled set, then
-    rescaled until the pass keeps 95 % to 100 % of n; a second pass with the radius
-    0.85 r (0.85^2 r, ... if needed) adds the missing points, the first candidates that
-    fit, so they are spread all over. The kept points are >= 0.85 r apart and every
-    candidate is within r of one. `weight` (in (0, 1], one per candidate) scales the
-    radius by weight^(-1/dim): a density proportional to the weight (graded samples)."""
-    c = np.ascontiguousarray(candidates, dtype=float)
-    scale = np.ones(len(c)) if weight is None else np.asarray(weight, dtype=float) ** (-1.0 / dim)
-    effective = measure * float(np.mean(scale ** (-dim)))
-    r = (0.7 * effective / n) ** (1.0 / dim)  # maximal greedy packings: ~0.7 measure / r^dim
-    for _attempt in range(12):
-        kept, grid = [], {}
-        _greedy_disk(c, (r * scale) ** 2 if weight is not None else r * r,
-                     r * scale.max(), kept, grid, n + 1)
-        if 0.95 * n <= len(kept) <= n:
-            break
-        r *= (len(kept) / (0.98 * n)) ** (1.0 / dim)
-    else:
-        raise RuntimeError("poisson_disk: no radius keeps 95-100 %% of %d points" % n)
-    r2 = 0.85 * r
-    while len(kept) < n:
-        _greedy_disk(c, (r2 * scale) ** 2 if weight is not None else r2 * r2,
-                     r * scale.max(), kept, grid, n)
-        r2 *= 0.85
-    return c[np.asarray(kept, dtype=np.int64)]
-
-
-def _pd(func, measure, dim=2):
-    def sampler(n, rng):
-        m = min(PD_FACTOR * n, max(PD_MAX_CANDIDATES, n))
-        return poisson_disk(func(m, rng), n, measure, dim)
-    sampler.__name__ = func.__name__ + "_pd"
-    sampler.__doc__ = "Poisson-disk subsample of %s (quasi-uniform)." % func.__name__
-    return sampler
-
-
-def _dvqu(func, measure, xmin, xmax, dim=2):
-    def sampler(n, rng):
-        c = func(min(PD_FACTOR * n, max(PD_MAX_CANDIDATES, n)), rng)
-        t = (c[:, 0] - xmin) / (xmax - xmin)
-        return poisson_disk(c, n, measure, dim, (1.0 + (DV_RATIO - 1.0) * t) / DV_RATIO)
-    sampler.__name__ = func.__name__ + "_dvqu"
-    sampler.__doc__ = ("Graded Poisson-disk sample of %s: locally even, density growing "
-                       "linearly along x, %g times from x = %g to x = %g."
-                       % (func.__name__, DV_RATIO, xmin, xmax))
-    return sampler
-
-
 TORUS_AREA = 4.0 * math.pi ** 2 * 1.0 * 0.35
 THIN_TUBE_AREA = 2.0 * math.pi * 1.9 * 2.0 + 2.0 * (2.0 * math.pi ** 2 * 0.95 * 0.05)
-sphere_pd = _pd(sphere, 4.0 * math.pi)
-torus_pd = _pd(torus, TORUS_AREA)
-thin_tube_pd = _pd(thin_tube, THIN_TUBE_AREA)
-sphere_dvqu = _dvqu(sphere, 4.0 * math.pi, -1.0, 1.0)
-torus_dvqu = _dvqu(torus, TORUS_AREA, -1.35, 1.35)
+sphere_pd = poisson_disk_of(sphere, 4.0 * math.pi)
+torus_pd = poisson_disk_of(torus, TORUS_AREA)
+thin_tube_pd = poisson_disk_of(thin_tube, THIN_TUBE_AREA)
+sphere_dvqu = graded_poisson_disk_of(sphere, 4.0 * math.pi, -1.0, 1.0)
+torus_dvqu = graded_poisson_disk_of(torus, TORUS_AREA, -1.35, 1.35)
 
 # regular lattices (degenerate on purpose: cospherical, cocircular, coplanar points)
 
@@ -882,16 +404,16 @@ def sphere_with_segment_pd(n, rng):
 
 
 THIN_PLATE_AREA = 2.0 * math.pi + 2.0 * math.pi * 0.05 * (math.pi + 0.1)
-genus2_pd = _pd(genus2, torus_row_area(2))
-genus3_pd = _pd(genus3, torus_row_area(3))
-genus4_pd = _pd(genus4, torus_row_area(4))
-ball_pd = _pd(ball, 4.0 * math.pi / 3.0, dim=3)
-cube_pd = _pd(cube, 8.0, dim=3)
-thin_plate_pd = _pd(thin_plate, THIN_PLATE_AREA)
-two_spheres_pd = _pd(two_spheres, 8.0 * math.pi)
-two_hemispheres_pd = _pd(two_hemispheres, 4.0 * math.pi)
-genus3_qu = _qu(genus3)
-cube_qu = _qu(cube)
+genus2_pd = poisson_disk_of(genus2, torus_row_area(2))
+genus3_pd = poisson_disk_of(genus3, torus_row_area(3))
+genus4_pd = poisson_disk_of(genus4, torus_row_area(4))
+ball_pd = poisson_disk_of(ball, 4.0 * math.pi / 3.0, dim=3)
+cube_pd = poisson_disk_of(cube, 8.0, dim=3)
+thin_plate_pd = poisson_disk_of(thin_plate, THIN_PLATE_AREA)
+two_spheres_pd = poisson_disk_of(two_spheres, 8.0 * math.pi)
+two_hemispheres_pd = poisson_disk_of(two_hemispheres, 4.0 * math.pi)
+genus3_qu = quasi_uniform(genus3)
+cube_qu = quasi_uniform(cube)
 
 # name -> (function(size, rng), default size, seed, (b0, b1, b2))
 SHAPES = {

@@ -9,6 +9,8 @@
 #include "vtkSmartPointer.h"
 #include "vtkType.h"
 
+#include <functional>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -27,6 +29,22 @@ vtkSmartPointer<A> NamedArray(const char* name, int components = 1)
   auto a = vtkSmartPointer<A>::New();
   a->SetName(name);
   a->SetNumberOfComponents(components);
+  return a;
+}
+
+/// An array of type A named `name` with one value per item of `items`, `value(item)`
+/// (a member pointer or a function): a column of the data contract from the core's
+/// records.
+template <class A, class Items, class Value>
+vtkSmartPointer<A> Column(const char* name, const Items& items, Value value)
+{
+  auto a = NamedArray<A>(name);
+  a->SetNumberOfTuples(static_cast<vtkIdType>(std::size(items)));
+  vtkIdType k = 0;
+  for (const auto& item : items)
+  {
+    a->SetValue(k++, static_cast<typename A::ValueType>(std::invoke(value, item)));
+  }
   return a;
 }
 

@@ -185,27 +185,29 @@ void ProfileJumpsToVTK(const FlowComplex& fc, const ReconstructionResult& run, s
   {
     thresholds[k] = run.Nodes[run.Order[k]].Threshold;
   }
-  auto step = NamedArray<vtkIdTypeArray>(flowrecon::names::JumpStep);
-  auto before = NamedArray<vtkDoubleArray>(flowrecon::names::JumpThresholdBefore);
-  auto after = NamedArray<vtkDoubleArray>(flowrecon::names::JumpThresholdAfter);
-  auto nodeId = NamedArray<vtkIdTypeArray>(flowrecon::names::JumpNodeId);
-  auto index = NamedArray<vtkIntArray>(flowrecon::names::JumpIndex);
-  auto value = NamedArray<vtkDoubleArray>(flowrecon::names::JumpCriticalValue);
+  const std::vector<ProfileJump> jumps = LargestJumps(thresholds, count);
+  const auto node = [&](const ProfileJump& jump) -> const Node& {
+    return fc.Nodes[run.Order[jump.Step]];
+  };
   auto location = NamedArray<vtkDoubleArray>(flowrecon::names::JumpLocation, 3);
-  for (const ProfileJump& jump : LargestJumps(thresholds, count))
+  for (const ProfileJump& jump : jumps)
   {
-    const Id node = run.Order[jump.Step];
-    step->InsertNextValue(static_cast<vtkIdType>(jump.Step));
-    before->InsertNextValue(jump.Before);
-    after->InsertNextValue(jump.After);
-    nodeId->InsertNextValue(node);
-    index->InsertNextValue(fc.Nodes[node].Index);
-    value->InsertNextValue(fc.Nodes[node].Value);
-    location->InsertNextTuple(fc.Nodes[node].Location.data());
+    location->InsertNextTuple(node(jump).Location.data());
   }
+  const vtkSmartPointer<vtkDataArray> columns[] = {
+    Column<vtkIdTypeArray>(flowrecon::names::JumpStep, jumps, &ProfileJump::Step),
+    Column<vtkDoubleArray>(flowrecon::names::JumpThresholdBefore, jumps, &ProfileJump::Before),
+    Column<vtkDoubleArray>(flowrecon::names::JumpThresholdAfter, jumps, &ProfileJump::After),
+    Column<vtkIdTypeArray>(flowrecon::names::JumpNodeId, jumps,
+      [&](const ProfileJump& jump) { return run.Order[jump.Step]; }),
+    Column<vtkIntArray>(flowrecon::names::JumpIndex, jumps,
+      [&](const ProfileJump& jump) { return node(jump).Index; }),
+    Column<vtkDoubleArray>(flowrecon::names::JumpCriticalValue, jumps,
+      [&](const ProfileJump& jump) { return node(jump).Value; }),
+    location
+  };
   vtkFieldData* fd = profile->GetFieldData();
-  for (vtkDataArray* a :
-    std::initializer_list<vtkDataArray*>{ step, before, after, nodeId, index, value, location })
+  for (vtkDataArray* a : columns)
   {
     fd->RemoveArray(a->GetName());
     if (count > 0)

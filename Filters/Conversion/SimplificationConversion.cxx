@@ -49,12 +49,6 @@ vtkSmartPointer<vtkPolyData> PersistencePairsBlock(const FlowComplex& fc, const 
 {
   std::vector<Point3> pts;
   vtkNew<vtkCellArray> lines;
-  auto ratio = NamedArray<vtkDoubleArray>(flowrecon::names::Ratio);
-  auto birth = NamedArray<vtkDoubleArray>(flowrecon::names::Birth);
-  auto death = NamedArray<vtkDoubleArray>(flowrecon::names::Death);
-  auto type = NamedArray<vtkIntArray>(flowrecon::names::PairType);
-  auto lowerId = NamedArray<vtkIdTypeArray>(flowrecon::names::LowerNodeId);
-  auto upperId = NamedArray<vtkIdTypeArray>(flowrecon::names::UpperNodeId);
   for (const CancelledPair& p : s.Pairs)
   {
     const vtkIdType ids[2] = { static_cast<vtkIdType>(pts.size()),
@@ -62,22 +56,17 @@ vtkSmartPointer<vtkPolyData> PersistencePairsBlock(const FlowComplex& fc, const 
     pts.push_back(fc.Nodes[p.Lower].Location);
     pts.push_back(fc.Nodes[p.Upper].Location);
     lines->InsertNextCell(2, ids);
-    ratio->InsertNextValue(p.Ratio);
-    birth->InsertNextValue(p.Birth);
-    death->InsertNextValue(p.Death);
-    type->InsertNextValue(p.PairType);
-    lowerId->InsertNextValue(p.Lower);
-    upperId->InsertNextValue(p.Upper);
   }
   vtkNew<vtkPolyData> pd;
   pd->SetPoints(MakePoints(pts));
   pd->SetLines(lines);
-  for (vtkDataArray* a : { static_cast<vtkDataArray*>(ratio), static_cast<vtkDataArray*>(birth),
-         static_cast<vtkDataArray*>(death), static_cast<vtkDataArray*>(type),
-         static_cast<vtkDataArray*>(lowerId), static_cast<vtkDataArray*>(upperId) })
-  {
-    pd->GetCellData()->AddArray(a);
-  }
+  vtkCellData* cd = pd->GetCellData();
+  cd->AddArray(Column<vtkDoubleArray>(flowrecon::names::Ratio, s.Pairs, &CancelledPair::Ratio));
+  cd->AddArray(Column<vtkDoubleArray>(flowrecon::names::Birth, s.Pairs, &CancelledPair::Birth));
+  cd->AddArray(Column<vtkDoubleArray>(flowrecon::names::Death, s.Pairs, &CancelledPair::Death));
+  cd->AddArray(Column<vtkIntArray>(flowrecon::names::PairType, s.Pairs, &CancelledPair::PairType));
+  cd->AddArray(Column<vtkIdTypeArray>(flowrecon::names::LowerNodeId, s.Pairs, &CancelledPair::Lower));
+  cd->AddArray(Column<vtkIdTypeArray>(flowrecon::names::UpperNodeId, s.Pairs, &CancelledPair::Upper));
   pd->GetCellData()->SetActiveScalars(flowrecon::names::Ratio);
   return pd;
 }

@@ -115,43 +115,44 @@ void AddStaircase(const std::vector<TopologyStep>& profile, double t, double lim
 void UnderSamplingToVTK(const std::vector<TopologyChange>& changes,
   const std::vector<Id>& cellNodes, const FlowComplex& fc, vtkPolyData* output)
 {
+  struct Place
+  {
+    const TopologyChange* Change;
+    Id Node;
+  };
+  std::vector<Place> places;
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   vtkNew<vtkCellArray> vertices;
-  auto threshold = NamedArray<vtkDoubleArray>(flowrecon::names::Threshold);
-  auto dimension = NamedArray<vtkIntArray>(flowrecon::names::Dimension);
-  auto change = NamedArray<vtkIntArray>(flowrecon::names::Change);
-  auto spacing = NamedArray<vtkDoubleArray>(flowrecon::names::Spacing);
-  auto nodeId = NamedArray<vtkIdTypeArray>(flowrecon::names::NodeId);
   for (const TopologyChange& c : changes)
   {
     const Id node = cellNodes.empty()
       ? (c.Cell >= 0 && c.Cell < static_cast<Id>(fc.Nodes.size()) ? c.Cell : -1)
       : (c.Cell >= 0 && c.Cell < static_cast<Id>(cellNodes.size()) ? cellNodes[c.Cell] : -1);
-    if (node < 0)
+    if (node >= 0)
     {
-      continue;
+      const vtkIdType id = points->InsertNextPoint(fc.Nodes[node].Location.data());
+      vertices->InsertNextCell(1, &id);
+      places.push_back({ &c, node });
     }
-    const vtkIdType id = points->InsertNextPoint(fc.Nodes[node].Location.data());
-    vertices->InsertNextCell(1, &id);
-    threshold->InsertNextValue(c.Threshold);
-    dimension->InsertNextValue(c.Dimension);
-    change->InsertNextValue(c.Change);
-    // The diameter of the empty ball at the node's critical point: the gap in
-    // the sampling there (a sample's node has value 0: its nearest Gabriel edge
-    // would do, but a sample brings no change above t_r > 1).
-    spacing->InsertNextValue(2 * fc.Nodes[node].Value);
-    nodeId->InsertNextValue(node);
   }
   output->Initialize();
   output->SetPoints(points);
   output->SetVerts(vertices);
-  for (vtkDataArray* a : std::initializer_list<vtkDataArray*>{ threshold, dimension, change,
-         spacing, nodeId })
-  {
-    output->GetPointData()->AddArray(a);
-  }
-  output->GetPointData()->SetActiveScalars(flowrecon::names::Threshold);
+  vtkPointData* pd = output->GetPointData();
+  pd->AddArray(Column<vtkDoubleArray>(
+    flowrecon::names::Threshold, places, [](const Place& p) { return p.Change->Threshold; }));
+  pd->AddArray(Column<vtkIntArray>(
+    flowrecon::names::Dimension, places, [](const Place& p) { return p.Change->Dimension; }));
+  pd->AddArray(Column<vtkIntArray>(
+    flowrecon::names::Change, places, [](const Place& p) { return p.Change->Change; }));
+  // The diameter of the empty ball at the node's critical point: the gap in
+  // the sampling there (a sample's node has value 0: its nearest Gabriel edge
+  // would do, but a sample brings no change above t_r > 1).
+  pd->AddArray(Column<vtkDoubleArray>(flowrecon::names::Spacing, places,
+    [&](const Place& p) { return 2 * fc.Nodes[p.Node].Value; }));
+  pd->AddArray(Column<vtkIdTypeArray>(flowrecon::names::NodeId, places, &Place::Node));
+  pd->SetActiveScalars(flowrecon::names::Threshold);
 }
 
 void TopologyToVTK(const std::vector<Bar>& bars, double t, double limit,

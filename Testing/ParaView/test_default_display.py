@@ -147,6 +147,10 @@ def check_plugin_display(label, display, view):
     check_categorical(label, "Index", INDEX_NAMES)
     check(legends(view) == ["Index"], "%s: colour legends %s, expected Index" % (
         label, legends(view)))
+    # The critical points visible, not 1-2 pixel dots: shaded spheres of 6 pixels.
+    check(display.PointSize == 6 and display.RenderPointsAsSpheres == 1,
+          "%s: critical points drawn %g pixels wide, as spheres %s; expected 6, 1" % (
+              label, display.PointSize, display.RenderPointsAsSpheres))
 
 
 def check_active_scalars(label, source):
