@@ -98,8 +98,9 @@ Reconstruction FromCloud(const std::string& input,
   return r;
 }
 
-// --compact from a stored complex: the nodes of the written cells below t_r,
-// walked again on the samples' triangulation (Retriangulation).
+// --compact from a stored complex (simplified or not: the same nodes and
+// samples): the nodes of the written cells below t_r, walked again on the
+// samples' triangulation (Retriangulation).
 void CompactFromStored(vtkMultiBlockDataSet* complex, const std::string& input, Reconstruction& r)
 {
   FlowComplex stored;
@@ -256,10 +257,6 @@ Reconstruction FromComplex(const Arguments& args, vtkMultiBlockDataSet* complex,
       CheckFilled(r.Choice, stored.Points, static_cast<Id>(maxima.size()));
     }
     r.Nodes = std::move(stored.Nodes);
-  }
-  if (args.Compact)
-  {
-    CompactFromStored(simplified[pick], input, r);
   }
   return r;
 }
@@ -476,9 +473,13 @@ int RunReconstruct(const Arguments& args)
   options.Unstable = false;
   vtkSmartPointer<vtkMultiBlockDataSet> complex = LoadStoredFlowComplex(args.Input);
   PhaseClock clock;
-  const Reconstruction r = complex
+  Reconstruction r = complex
     ? FromComplex(args, complex, settings, request.CellBudget, options, clock, args.Jumps.Given)
     : FromCloud(args.Input, settings, options, clock);
+  if (complex && args.Compact)
+  {
+    CompactFromStored(complex, args.Input, r); // its nodes are the simplified ones'
+  }
   const bool tpChosen = settings.AutomaticPersistence && r.Tps.size() > 1;
   const std::vector<std::string> choiceWarnings = r.Automatic
     ? ChoiceWarnings(r.Choice, r.Tps, settings.AutomaticReconstruction, tpChosen)
