@@ -5,6 +5,7 @@ file sizes and times.
 
   PYTHONPATH=Apps/Scripts /usr/bin/python3 Benchmarks/Study/compact_study.py OUTDIR
       [--flowrecon build/bin/flowrecon] [--only REGEX] [--large] [--args "--tp 1.1 --tr 2"]
+      [--sweep]
 
 For each cloud (Data/*.xyz; generate_clouds.make with its fixed seeds; noisy ones
 are Poisson-disk samples plus Gaussian noise of standard deviation `noise` x their
@@ -23,6 +24,12 @@ i.i.d. 10^5-point clouds too. For the compact file's triangles it also counts th
 border edges (in one triangle), the non-manifold edges (in more than two) and the
 singular vertices (whose triangles do not make one disc or sphere around them):
 all 0 for a closed surface.
+
+With --sweep, only `reconstruct ID.xyz -o OUT --compact --tp P --tr T --tr-max T` runs
+(it prints the exact Betti numbers beside the compact ones), for t_p in 0, 1.1 and
+t_r in 1.2, 1.5, 3, 5, inf; the report OUTDIR/sweep.md has one row per cloud: the
+configurations where the two agree, and the voids without a maximum filled
+(every run in OUTDIR/sweep.json).
 """
 import argparse
 import json
@@ -170,6 +177,46 @@ def study(cid, source, size, noise, cls, opts):
     return row
 
 
+SWEEP = [(tp, tr) for tp in ("0", "1.1") for tr in ("1.2", "1.5", "3", "5", "inf")]
+
+
+def sweep(cid, source, size, noise, cls, opts):
+    path = os.path.join(opts.outdir, "clouds", cid + ".xyz")
+    make_cloud(cid, source, size, noise, path)
+    out = os.path.join(opts.outdir, "runs", cid + ".sweep.vtu")
+    row = {"id": cid, "class": cls, "runs": []}
+    for tp, tr in SWEEP:
+        code, so, se, wall, peak = run([opts.flowrecon, "reconstruct", path, "-o", out, "--compact",
+                                        "--tp", tp, "--tr", tr, "--tr-max", tr])
+        counts = numbers(r"(\d+) voids without a maximum filled", so)
+        row["runs"].append({"tp": tp, "tr": tr, "exit": code,
+                            "exact": numbers(r"^Betti numbers: (\d+) (\d+) (\d+)$", so),
+                            "compact": numbers(r"^compact output's Betti numbers (\d+) (\d+) (\d+)$", so),
+                            "filled": counts[0] if counts else None})
+    if os.path.exists(out):
+        os.remove(out)
+    return row
+
+
+def sweep_report(rows):
+    lines = ["| cloud | configurations agreeing | voids filled (sum) | where they differ |",
+             "|---|---:|---:|---|"]
+    agree = total = 0
+    for r in rows:
+        ok = [x for x in r["runs"] if x["exit"] == 0 and x["exact"] is not None]
+        same = [x for x in ok if x["exact"] == x["compact"]]
+        differ = ["t_p %s t_r %s: %s vs %s" % (x["tp"], x["tr"], btext(x["exact"]), btext(x["compact"]))
+                  for x in ok if x["exact"] != x["compact"]]
+        agree += len(same)
+        total += len(ok)
+        lines.append("| %s | %d of %d | %d | %s |" % (r["id"], len(same), len(ok),
+                                                   sum(x["filled"] or 0 for x in ok), "; ".join(differ)))
+    lines.append("")
+    lines.append("Betti numbers of the compact output equal the exact output's in %d of %d runs "
+                 "(t_p 0 and 1.1 x t_r 1.2, 1.5, 3, 5, inf)." % (agree, total))
+    return "\n".join(lines)
+
+
 def btext(b):
     return "–" if b is None else " ".join(str(x) for x in b)
 
@@ -207,6 +254,7 @@ def main(argv=None):
     ap.add_argument("--large", action="store_true")
     ap.add_argument("--keep-vtu", action="store_true")
     ap.add_argument("--args", default="", help="more arguments of both runs")
+    ap.add_argument("--sweep", action="store_true", help="t_p x t_r sweep of --compact runs")
     opts = ap.parse_args(argv)
     for sub in ("clouds", "runs"):
         os.makedirs(os.path.join(opts.outdir, sub), exist_ok=True)
@@ -217,12 +265,12 @@ def main(argv=None):
         if cls == "i.i.d. 10^5" and not opts.large:
             continue
         start = time.time()
-        rows.append(study(cid, source, size, noise, cls, opts))
+        rows.append((sweep if opts.sweep else study)(cid, source, size, noise, cls, opts))
         print("%s: %.1f s" % (cid, time.time() - start), file=sys.stderr, flush=True)
-        with open(os.path.join(opts.outdir, "results.json"), "w") as f:
+        with open(os.path.join(opts.outdir, "sweep.json" if opts.sweep else "results.json"), "w") as f:
             json.dump(rows, f, indent=1)
-    text = report(rows)
-    with open(os.path.join(opts.outdir, "study.md"), "w") as f:
+    text = sweep_report(rows) if opts.sweep else report(rows)
+    with open(os.path.join(opts.outdir, "sweep.md" if opts.sweep else "study.md"), "w") as f:
         f.write(text + "\n")
     print(text)
     return 0
