@@ -4,6 +4,7 @@
 
 #include "CliError.h"
 #include "CloudReconstruction.h"
+#include "CompactConversion.h"
 #include "FlowComplexConversion.h"
 #include "FlowComplexFromVTK.h"
 #include "FlowReconNames.h"
@@ -11,6 +12,7 @@
 #include "OutputFiles.h"
 #include "PhaseClock.h"
 #include "ReconstructionReport.h"
+#include "Retriangulation.h"
 #include "TopologyConversion.h"
 #include "vtkFlowComplexSimplification.h"
 #include "vtkFlowReconstruction.h"
@@ -50,6 +52,11 @@ struct Reconstruction
   std::vector<double> Tps; // the t_p candidates (NaN: the stored file's)
   bool Automatic = false;  // Choice is set
   ThresholdChoice Choice;
+  // --compact: the compact complex at t_r, each node's Threshold (NaN when
+  // not in it), and the samples it is written over.
+  CompactComplex Compact;
+  std::vector<double> NodeThreshold;
+  std::vector<Point3> Samples;
 };
 
 // A point cloud, through the core (CloudReconstruction).
@@ -82,7 +89,51 @@ Reconstruction FromCloud(const std::string& input,
                                         : std::vector<double>{ settings.PersistenceThreshold };
   r.Automatic = report.Automatic;
   r.Choice = report.Choice;
+  if (settings.Compact)
+  {
+    r.Compact = std::move(report.Compact);
+    r.NodeThreshold = std::move(report.NodeThreshold);
+    r.Samples = samples;
+  }
   return r;
+}
+
+// --compact from a stored complex (simplified or not: the same nodes and
+// samples): the nodes of the written cells below t_r, walked again on the
+// samples' triangulation (Retriangulation).
+void CompactFromStored(vtkMultiBlockDataSet* complex, const std::string& input, Reconstruction& r)
+{
+  FlowComplex stored;
+  std::string error;
+  if (!FromMultiBlock(complex, stored, error, true) || !ReadSamples(complex, stored, error))
+  {
+    throw Failure(input + ": " + error);
+  }
+  vtkDataArray* node = r.Grid->GetCellData()->GetArray(names::NodeId);
+  vtkDataArray* threshold = r.Grid->GetCellData()->GetArray(names::Threshold);
+  std::vector<Id> selected;
+  r.NodeThreshold.assign(stored.Nodes.size(), std::nan(""));
+  for (vtkIdType c = 0; node && threshold && c < r.Grid->GetNumberOfCells(); ++c)
+  {
+    const Id n = static_cast<Id>(node->GetComponent(c, 0));
+    const double t = threshold->GetComponent(c, 0);
+    if (t < r.Tr && n >= 0 && n < static_cast<Id>(stored.Nodes.size()))
+    {
+      selected.push_back(n);
+      r.NodeThreshold[n] = t;
+    }
+  }
+  vtkSmartPointer<ProgressLine> line = ProgressLine::Make(); // Ctrl-C only
+  CallCore(input, *line, "compact output", "out of memory making the compact output", [&]() {
+    const std::unique_ptr<Retriangulation> re =
+      Retriangulation::OfStoredComplex(stored, line->Core(), "lower --tr");
+    r.Compact = CompactReconstruction(*re, stored.Nodes, selected);
+  });
+  r.Samples.assign(stored.Points.begin(), stored.Points.begin() + stored.NumberOfInputPoints);
+  if (r.Nodes.empty())
+  {
+    r.Nodes = std::move(stored.Nodes);
+  }
 }
 
 // A stored flow complex, through the filters: one simplification per t_p
@@ -309,17 +360,18 @@ Request ReadRequest(const Arguments& args)
   settings.UnderSamplingWindow = args.NoBetti ? 1 : window;
   SetCapAndDrawn(args, trmax, automatic, settings);
   settings.Advice = "lower --tr (or --tr-max)";
+  settings.Compact = args.Compact;
   return request;
 }
 
 // The summary line, then "Betti numbers: b0 b1 b2" at t_r (scripts read this
 // line), the thresholds chosen and their warnings; the topology profile.
 void ReportResult(const Arguments& args, const Reconstruction& r, const std::string& output,
-  bool automaticTr, bool tpChosen, const std::vector<std::string>& choiceWarnings)
+  vtkIdType written, bool automaticTr, bool tpChosen, const std::vector<std::string>& choiceWarnings)
 {
   if (!args.Quiet)
   {
-    std::cout << output << ": " << r.Grid->GetNumberOfCells() << " cells, "
+    std::cout << output << ": " << written << " cells, "
               << StepsBelow(r.Profile, r.Tr) << " of " << r.Profile->GetNumberOfRows()
               << " steps at t_r " << r.Tr << "\n";
   }
@@ -344,6 +396,31 @@ void ReportResult(const Arguments& args, const Reconstruction& r, const std::str
   {
     WriteCsv(r.Topology, { names::Threshold, "b0", "b1", "b2" }, "threshold,b0,b1,b2",
       args.TopologyProfile);
+  }
+}
+
+// --compact: what the compact output holds, its Betti numbers, and a warning
+// when they are not the exact reconstruction's.
+void ReportCompact(const Reconstruction& r, const std::array<Id, 4>& betti)
+{
+  const CompactComplex& c = r.Compact;
+  std::cout << "compact output: " << c.Triangles.size() << " triangles, " << c.Tetrahedra.size()
+            << " tetrahedra, " << c.Edges.size() << " edges, " << c.Vertices.size()
+            << " samples, "
+            << static_cast<double>(c.NumberOfCells()) /
+      static_cast<double>(std::max<std::size_t>(1, r.Samples.size()))
+            << " cells per sample; " << c.SharedTriangles << " triangles shared by two patches, "
+            << c.RevisitedTriangles << " crossed twice by one walk, " << c.FilledVoids
+            << " voids without a maximum filled\n";
+  std::cout << "compact output's Betti numbers " << betti[0] << " " << betti[1] << " " << betti[2]
+            << "\n";
+  std::array<long long, 3> exact;
+  if (BettiNumbersAt(r.Topology, r.Tr, exact) &&
+    (exact[0] != betti[0] || exact[1] != betti[1] || exact[2] != betti[2]))
+  {
+    std::cerr << "warning: the compact output's Betti numbers " << betti[0] << " " << betti[1]
+              << " " << betti[2] << " differ from the reconstruction's " << exact[0] << " "
+              << exact[1] << " " << exact[2] << "\n";
   }
 }
 
@@ -396,9 +473,13 @@ int RunReconstruct(const Arguments& args)
   options.Unstable = false;
   vtkSmartPointer<vtkMultiBlockDataSet> complex = LoadStoredFlowComplex(args.Input);
   PhaseClock clock;
-  const Reconstruction r = complex
+  Reconstruction r = complex
     ? FromComplex(args, complex, settings, request.CellBudget, options, clock, args.Jumps.Given)
     : FromCloud(args.Input, settings, options, clock);
+  if (complex && args.Compact)
+  {
+    CompactFromStored(complex, args.Input, r); // its nodes are the simplified ones'
+  }
   const bool tpChosen = settings.AutomaticPersistence && r.Tps.size() > 1;
   const std::vector<std::string> choiceWarnings = r.Automatic
     ? ChoiceWarnings(r.Choice, r.Tps, settings.AutomaticReconstruction, tpChosen)
@@ -412,8 +493,17 @@ int RunReconstruct(const Arguments& args)
   TopologyTextToVTK(TopologyLine(r.Grid, r.Topology, r.UnderSampling, r.Tr, r.Limit,
                       settings.Topology ? "" : " (--no-betti)"),
     r.Grid, nullptr);
+  vtkSmartPointer<vtkUnstructuredGrid> written = r.Grid;
+  std::array<Id, 4> compactBetti{ { 0, 0, 0, 0 } };
+  if (args.Compact)
+  {
+    compactBetti = r.Compact.Betti;
+    written = vtkSmartPointer<vtkUnstructuredGrid>::New();
+    CompactToVTK(r.Compact, r.Samples, r.Nodes, r.NodeThreshold, compactBetti, written);
+    clock("compact output's VTK grid");
+  }
   vtkNew<vtkXMLUnstructuredGridWriter> writer;
-  WriteXML(writer, r.Grid, output);
+  WriteXML(writer, written, output);
   clock("writing");
   if (args.Timings)
   {
@@ -426,7 +516,12 @@ int RunReconstruct(const Arguments& args)
       { names::Step, names::NodeId, names::Index, names::Priority, names::Threshold },
       "Step,NodeId,Index,Priority,Threshold", args.Profile);
   }
-  ReportResult(args, r, output, settings.AutomaticReconstruction, tpChosen, choiceWarnings);
+  ReportResult(args, r, output, written->GetNumberOfCells(), settings.AutomaticReconstruction,
+    tpChosen, choiceWarnings);
+  if (args.Compact && !args.Quiet)
+  {
+    ReportCompact(r, compactBetti);
+  }
   if (!args.Quiet)
   {
     WarnUnderSampled(r);

@@ -96,6 +96,10 @@ void ReconstructOptions(CLI::App* c, Arguments& args)
   c->add_flag("--no-betti", args.NoBetti,
     "skip the Betti numbers, the topology profile and the\n"
     "warnings (on solids of millions of tetrahedra they cost about as much as the rest)");
+  c->add_flag("--compact", args.Compact,
+    "write instead Delaunay simplices on the samples (a prototype):\n"
+    "the Delaunay triangles the stable manifolds' walks cross, the Delaunay cells\n"
+    "that flow into each maximum; prints their Betti numbers beside the exact ones");
   AddNumber(c, "--jumps", args.Jumps, "K", "print the K largest jumps of the profile (tracking back)");
   c->add_flag("--timings", args.Timings,
     "print the seconds of each phase (and, from a cloud,\n"

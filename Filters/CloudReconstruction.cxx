@@ -171,6 +171,7 @@ public:
   void BuildAndChoose(); ///< [0, 0.7]: the flow complex, a run per t_p, the choice
   void SetThresholds();  ///< t_r and t_p used; what is written and drawn
   void Draw();           ///< [0.7, 0.9]: the cells of the nodes below the drawn threshold
+  void DrawCompact();    ///< [0.9, 0.95]: the compact complex at t_r (settings.Compact)
   void WriteOutputs();   ///< [0.95, 1]: the grid, the profile, the topology and warnings
 
   CloudReconstructionReport Result;
@@ -314,7 +315,11 @@ void CloudRun::Draw()
   {
     try
     {
-      const std::vector<Id> draw = NodesToDraw(r.Complex.Nodes, r.Carriers, r.Run, this->DrawThreshold);
+      // The compact output stands in for the stable manifolds: none is drawn
+      // (the grid keeps its samples and Gabriel edges, which nothing writes).
+      const std::vector<Id> draw = this->Settings.Compact
+        ? std::vector<Id>()
+        : NodesToDraw(r.Complex.Nodes, r.Carriers, r.Run, this->DrawThreshold);
       CompleteCones(r, draw);
       // What only the queue needed goes before the drawing, the largest phase.
       linesDeferred = r.Lines ? r.Lines->LinesDeferred() : this->Chosen.LinesDeferred;
@@ -326,6 +331,11 @@ void CloudRun::Draw()
       ReleaseFreedMemory();
       DrawStableManifolds(this->Samples, this->Options, draw, r.Complex, this->Report.Range(0.7, 0.9),
         this->Settings.Advice, &r.Cones, r.Triangulation.get());
+      if (this->Settings.Compact)
+      {
+        this->PhaseDone("drawing");
+        this->DrawCompact(); // on the triangulation, before it goes
+      }
       break;
     }
     catch (const Degenerate&)
@@ -348,7 +358,29 @@ void CloudRun::Draw()
   // The triangulation is the largest block until here (~0.7 KB per point, in
   // tbbmalloc's pools): the VTK arrays below need that memory back.
   ReleaseFreedMemory();
-  this->PhaseDone("drawing");
+  if (!this->Settings.Compact)
+  {
+    this->PhaseDone("drawing");
+  }
+}
+
+void CloudRun::DrawCompact()
+{
+  const CappedReconstruction& r = this->Chosen.R;
+  std::vector<Id> selected;
+  this->Result.NodeThreshold.assign(r.Complex.Nodes.size(), std::nan(""));
+  for (std::size_t i = 0; i < r.Complex.Nodes.size(); ++i)
+  {
+    const Id carrier = r.Carriers[i];
+    if (carrier >= 0 && r.Run.Contains(carrier, this->Tr))
+    {
+      selected.push_back(static_cast<Id>(i));
+      this->Result.NodeThreshold[i] = r.Run.Nodes[carrier].Threshold;
+    }
+  }
+  this->Result.Compact =
+    CompactReconstruction(*r.Triangulation, r.Complex.Nodes, selected, this->Report.Range(0.9, 0.95));
+  this->PhaseDone("compact output");
 }
 
 void CloudRun::WriteOutputs()

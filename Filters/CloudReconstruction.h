@@ -9,6 +9,7 @@
 #define CloudReconstruction_h
 
 #include "AutomaticThresholds.h" // core data structure
+#include "CompactReconstruction.h" // core data structure
 #include "FlowComplex.h"         // core data structure
 #include "Progress.h"    // core progress
 
@@ -41,6 +42,10 @@ struct CloudReconstructionSettings
   double UnderSamplingWindow = 1.1;    ///< changes in [t_r, window t_r) are reported
   bool Topology = true;                ///< Betti numbers, topology profile, under-sampling
   std::string Advice = "lower the threshold"; ///< for a run that would not fit in memory
+  /// The compact complex of the reconstruction at t_r (CompactReconstruction.h),
+  /// from the run's own triangulation, instead of the stable manifolds: the
+  /// grid then holds the samples and Gabriel edges only.
+  bool Compact = false;
 };
 
 /// vtkFlowReconstruction's ports 0, 1, 3 and 4, all required. The grid's
@@ -64,6 +69,10 @@ struct CloudReconstructionReport
   /// candidate's (in PersistenceCandidates order).
   ThresholdChoice Choice;
   bool Automatic = false;
+  /// With settings.Compact: the compact complex at t_r, and each node's
+  /// Threshold (NaN for the nodes not in it).
+  CompactComplex Compact;
+  std::vector<double> NodeThreshold;
 };
 
 /// Reconstructs `samples` into `outputs`. `phaseDone(name)` is called at the

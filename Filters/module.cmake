@@ -12,6 +12,7 @@ vtk_module_add_module(FlowRecon::Filters
   PRIVATE_HEADERS
     ${_flowrecon_filters_dir}/PipelinePorts.h
     ${_flowrecon_filters_dir}/CloudReconstruction.h
+    ${_flowrecon_filters_dir}/Conversion/CompactConversion.h
     ${_flowrecon_filters_dir}/Conversion/ContractArrays.h
     ${_flowrecon_filters_dir}/Conversion/CoreCall.h
     ${_flowrecon_filters_dir}/Conversion/FlowComplexConversion.h
@@ -33,6 +34,7 @@ vtk_module_add_module(FlowRecon::Filters
     ${_flowrecon_filters_dir}/IO/VtkMessageCapture.h
   SOURCES
     ${_flowrecon_filters_dir}/CloudReconstruction.cxx
+    ${_flowrecon_filters_dir}/Conversion/CompactConversion.cxx
     ${_flowrecon_filters_dir}/Conversion/ContractArrays.cxx
     ${_flowrecon_filters_dir}/Conversion/FlowComplexFromVTK.cxx
     ${_flowrecon_filters_dir}/Conversion/FlowComplexToVTK.cxx

@@ -62,3 +62,8 @@ flowrecon_add_cli_python_test(py.reconstruction.automatic_thresholds test_automa
 # points: exact on grids and cospherical sets, equal to GUDHI's exact alpha
 # persistence within 1e-12 relative, lazy reconstruction equal to eager.
 flowrecon_add_cli_python_test(py.exact_perturbed_values test_exact_perturbed_values.py exact_perturbed_values)
+
+# reconstruct --compact: the Betti numbers of the written Delaunay simplices
+# (GUDHI over the file) equal the exact reconstruction's on surfaces, a solid,
+# a curve, a mix and two touching spheres; the file is on the input points.
+flowrecon_add_cli_python_test(py.reconstruction.compact test_compact.py compact)

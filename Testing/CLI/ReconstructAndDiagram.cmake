@@ -55,6 +55,14 @@ flowrecon_add_cli_test(ReconstructTetrahedron EXIT 0 STDERR_LINES 0
   STDOUT "tet_all\\.vtu: [0-9]+ cells, 15 of 15 steps at t_r 2\n"
   VTM "${_w}/tet_all.vtu"
   ARGS reconstruct "${_d}/tetrahedron.xyz" -o "${_w}/tet_all.vtu" --tp 0 --tr 2)
+# --compact on the regular tetrahedron, whose answer is known: at t_r 2 the
+# solid (its 4 faces and the cell), at t_r 1.1 its 6 edges (b1 = 3).
+flowrecon_add_cli_test(ReconstructCompactTetrahedron EXIT 0 STDERR_LINES 0
+  STDOUT "tet_compact\\.vtu: 5 cells, 15 of 15 steps at t_r 2\nBetti numbers: 1 0 0\ncompact output: 4 triangles, 1 tetrahedra, 0 edges, 0 samples, 1\\.25 cells per sample; 0 triangles shared by two patches, 0 crossed twice by one walk, 0 voids without a maximum filled\ncompact output's Betti numbers 1 0 0\n"
+  ARGS reconstruct "${_d}/tetrahedron.xyz" -o "${_w}/tet_compact.vtu" --tp 0 --tr 2 --compact)
+flowrecon_add_cli_test(ReconstructCompactTetrahedronEdges EXIT 0 STDERR_LINES 3
+  STDOUT "compact output: 0 triangles, 0 tetrahedra, 6 edges, 0 samples, 1\\.5 cells per sample;.*\ncompact output's Betti numbers 1 3 0\n"
+  ARGS reconstruct "${_d}/tetrahedron.xyz" -o "${_w}/tet_compact_edges.vtu" --tp 0 --tr 1.1 --compact)
 flowrecon_add_cli_test(ReconstructTetrahedronEdges EXIT 0 STDERR_LINES 0
   STDOUT "tet_edges\\.vtu: 10 cells, 10 of 15 steps at t_r 1\\.1\n"
   FIXTURES_REQUIRED flowrecon_cli_vtm

@@ -27,7 +27,7 @@ struct Item
 
 template <class FT>
 Patch Walk(const Triangulation& tri, const CriticalSimplices& cs, const std::array<Id, 3>& f,
-  CellHandle cell, bool withGeometry)
+  CellHandle cell, bool withGeometry, bool withWalked)
 {
   Patch patch;
   std::vector<EdgePoint<FT>> points{ EdgePoint<FT>{ f, FT(0) } }; // c = c_f
@@ -67,6 +67,10 @@ Patch Walk(const Triangulation& tri, const CriticalSimplices& cs, const std::arr
     {
       throw Degenerate("descending walk found no exit");
     }
+    if (withWalked)
+    {
+      patch.Walked.push_back({ { it.U, it.V, s } });
+    }
     const Id yRef = -1 - static_cast<Id>(points.size());
     points.push_back(y);
     if (withGeometry)
@@ -102,12 +106,13 @@ Patch Walk(const Triangulation& tri, const CriticalSimplices& cs, const std::arr
 } // namespace
 
 Patch ComputeStableManifold(const Triangulation& tri, const CriticalSimplices& cs,
-  std::size_t facet, bool withGeometry, Id& fallbacks, bool exactOnly)
+  std::size_t facet, bool withGeometry, Id& fallbacks, bool exactOnly, bool withWalked)
 {
   return Filtered(
     [&](auto ft) {
       return Walk<decltype(ft)>(
-        tri, cs, Widen(cs.Facets[facet].Vertices), tri.Cell(cs.Facets[facet].Cell), withGeometry);
+        tri, cs, Widen(cs.Facets[facet].Vertices), tri.Cell(cs.Facets[facet].Cell), withGeometry,
+        withWalked);
     },
     fallbacks, exactOnly);
 }

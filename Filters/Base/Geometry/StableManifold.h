@@ -20,14 +20,18 @@ struct Patch
   std::vector<std::array<Id, 3>> Triangles;
   /// Positions in CriticalSimplices::Edges.Values of the Gabriel edges reached, one per arrival.
   std::vector<Id> Arrivals;
+  /// The Delaunay triangles (u, v, s*) whose Voronoi edges the walk crosses, one
+  /// per exit, in triangulation vertex ids (only when asked for): with the
+  /// critical facet, the Delaunay triangles a compact output puts in its place.
+  std::vector<std::array<Id, 3>> Walked;
 };
 
 /// Stable manifold of the acute Gabriel facet cs.Facets[facet]. With `withGeometry` false
 /// only Arrivals are filled. Throws Degenerate if the walk meets a Voronoi vertex.
 /// `fallbacks` counts walks redone in exact arithmetic; `exactOnly` skips the
-/// interval stage (tests).
+/// interval stage (tests). `withWalked` fills Walked.
 Patch ComputeStableManifold(const Triangulation& tri, const CriticalSimplices& cs,
-  std::size_t facet, bool withGeometry, Id& fallbacks, bool exactOnly);
+  std::size_t facet, bool withGeometry, Id& fallbacks, bool exactOnly, bool withWalked = false);
 
 /// The side of the critical facet cs.Facets[facet] that the normals of its
 /// patch's triangles ((b - a) x (c - a)) face: 0 toward the vertex opposite the

@@ -1,0 +1,558 @@
+#include "CompactReconstruction.h"
+
+#include "CellHomology.h"
+#include "ParallelSlices.h"
+#include "Retriangulation.h"
+#include "StableManifold.h"
+#include "SuccessorForest.h"
+#include "UnionFind.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+
+namespace flowrecon
+{
+
+namespace
+{
+
+/// A Delaunay triangle (sorted vertex ids: input or triangulation ones) and
+/// the node whose walk crosses it.
+struct Claim
+{
+  std::array<Id, 3> Triangle;
+  Id Node;
+  bool operator<(const Claim& o) const
+  {
+    return this->Triangle != o.Triangle ? this->Triangle < o.Triangle : this->Node < o.Node;
+  }
+};
+
+template <std::size_t N>
+std::array<Id, N> InputSimplex(const Retriangulation& re, const std::array<Id, N>& vertices)
+{
+  std::array<Id, N> s;
+  for (std::size_t k = 0; k < N; ++k)
+  {
+    s[k] = re.Prepared().InputId[vertices[k]];
+  }
+  std::sort(s.begin(), s.end());
+  return s;
+}
+
+/// Whether `node`'s simplex is `simplex` (input ids, sorted).
+template <std::size_t N>
+bool SameSimplex(const Node& node, const std::array<Id, N>& simplex)
+{
+  for (std::size_t k = 0; k < N; ++k)
+  {
+    if (node.Simplex[k] != simplex[k])
+    {
+      return false;
+    }
+  }
+  return N == 4 || node.Simplex[N] < 0;
+}
+
+/// The triangles the walks of `patches` (index-2 node ids) cross, each kept
+/// once; shared and revisited ones counted.
+void AddPatchTriangles(const Retriangulation& re, const std::vector<Node>& nodes,
+  const std::vector<Id>& patches, const Progress& progress, CompactComplex& out)
+{
+  const CriticalSimplices& cs = re.Critical();
+  const Id facets = static_cast<Id>(cs.Facets.size());
+  std::vector<std::vector<Claim>> claims(patches.size());
+  std::vector<Id> fallbacks(patches.size(), 0);
+  std::vector<char> foreign(patches.size(), 0);
+  ParallelSlices(static_cast<Id>(patches.size()), Id(1) << 14, progress, 0.0, 0.6,
+    "compact patches", [&](Id first, Id last) {
+      for (Id k = first; k < last; ++k)
+      {
+        const Id node = patches[k];
+        const Id f = node - re.Base2();
+        if (f < 0 || f >= facets)
+        {
+          foreign[k] = 1;
+          continue;
+        }
+        const CriticalFacet& facet = cs.Facets[f];
+        const std::array<Id, 3> own =
+          InputSimplex<3>(re, { { facet.Vertices[0], facet.Vertices[1], facet.Vertices[2] } });
+        if (!SameSimplex(nodes[node], own))
+        {
+          foreign[k] = 1;
+          continue;
+        }
+        const Patch patch = ComputeStableManifold(
+          re.Tri(), cs, static_cast<std::size_t>(f), false, fallbacks[k], false, true);
+        claims[k].push_back({ own, node });
+        for (const std::array<Id, 3>& t : patch.Walked)
+        {
+          claims[k].push_back({ InputSimplex<3>(re, t), node });
+        }
+      }
+    });
+  std::vector<Claim> all;
+  for (std::size_t k = 0; k < patches.size(); ++k)
+  {
+    if (foreign[k])
+    {
+      throw InputError(Retriangulation::Mismatch());
+    }
+    out.ExactFallbacks += fallbacks[k];
+    all.insert(all.end(), claims[k].begin(), claims[k].end());
+  }
+  std::sort(all.begin(), all.end());
+  for (std::size_t k = 0; k < all.size();)
+  {
+    std::size_t end = k + 1;
+    bool revisited = false;
+    int claims = 1;
+    for (; end < all.size() && all[end].Triangle == all[k].Triangle; ++end)
+    {
+      const bool same = all[end].Node == all[end - 1].Node;
+      revisited = revisited || same;
+      claims += same ? 0 : 1;
+    }
+    out.SharedTriangles += claims > 1 ? 1 : 0;
+    out.RevisitedTriangles += revisited ? 1 : 0;
+    out.Triangles.push_back(all[k].Triangle);
+    out.TriangleNode.push_back(all[k].Node);
+    out.TriangleClaims.push_back(claims);
+    k = end;
+  }
+}
+
+/// The Delaunay cells whose Voronoi vertex flows to one of `maxima` (index-3
+/// node ids, sorted); `cellNode` (per cell) receives their maximum.
+void AddConeTetrahedra(const Retriangulation& re, const std::vector<Node>& nodes,
+  const std::vector<Id>& maxima, const Progress& progress, CompactComplex& out,
+  std::vector<Id>& cellNode)
+{
+  const CriticalSimplices& cs = re.Critical();
+  const Triangulation& tri = re.Tri();
+  const Id infinity = re.Base3() + static_cast<Id>(cs.Cells.size());
+  std::vector<std::int32_t> maximumOfCell(static_cast<std::size_t>(tri.NumberOfCells()), -1);
+  for (const Id node : maxima)
+  {
+    const Id c = node - re.Base3();
+    if (c < 0 || c >= static_cast<Id>(cs.Cells.size()) ||
+      !SameSimplex(nodes[node], InputSimplex<4>(re, { { cs.Cells[c].Vertices[0],
+        cs.Cells[c].Vertices[1], cs.Cells[c].Vertices[2], cs.Cells[c].Vertices[3] } })))
+    {
+      throw InputError(Retriangulation::Mismatch());
+    }
+  }
+  for (std::size_t i = 0; i < cs.Cells.size(); ++i)
+  {
+    maximumOfCell[cs.Cells[i].Cell] = static_cast<std::int32_t>(re.Base3() + static_cast<Id>(i));
+  }
+  // d_P grows along the flow: a flow line that passes the largest selected
+  // value cannot end at a selected maximum, so it is stopped there (on surface
+  // samples most lines run on to the medial axis). The margin covers rounding
+  // and the perturbation of degenerate clouds (1e-6 of the diagonal).
+  double largest = 0;
+  for (const Id node : maxima)
+  {
+    largest = std::max(largest, nodes[node].Value);
+  }
+  const double limit = 1.01 * std::ldexp(largest, -re.Prepared().ScaleExponent) +
+    1e-5 * re.Prepared().Diagonal;
+  SuccessorForest forest(tri, maximumOfCell, infinity, 0, false, false);
+  ParallelSlices(tri.NumberOfCells(), Id(1) << 16, progress, 0.6, 0.9, "compact cells",
+    [&](Id first, Id last) {
+      for (Id c = first; c < last; ++c)
+      {
+        double bound = 0;
+        const Id root = forest.RootBelow(c, limit * limit, &bound);
+        cellNode[c] = root >= 0 && std::binary_search(maxima.begin(), maxima.end(), root) ? root : -1;
+      }
+    });
+  for (Id c = 0; c < tri.NumberOfCells(); ++c)
+  {
+    if (cellNode[c] >= 0)
+    {
+      out.Tetrahedra.push_back(InputSimplex<4>(re, tri.SortedVertices(tri.Cell(c))));
+      out.TetrahedronNode.push_back(cellNode[c]);
+    }
+  }
+}
+
+/// The walls of the complement's regions: the compact triangles (triangulation
+/// ids, sorted, with their node) and, per cell, a bit per facet that is one
+/// (the search below looks at millions of facets).
+struct Walls
+{
+  std::vector<Claim> Triangles;
+  std::vector<std::uint8_t> Facets;
+};
+
+Walls FindWalls(const Retriangulation& re, const CompactComplex& out)
+{
+  const Triangulation& tri = re.Tri();
+  const std::vector<Id>& inputId = re.Prepared().InputId;
+  std::vector<Id> vertexOf(
+    inputId.empty() ? 0 : static_cast<std::size_t>(*std::max_element(inputId.begin(), inputId.end()) + 1), -1);
+  for (Id v = 0; v < static_cast<Id>(inputId.size()); ++v)
+  {
+    vertexOf[inputId[v]] = v;
+  }
+  Walls walls;
+  for (std::size_t k = 0; k < out.Triangles.size(); ++k)
+  {
+    std::array<Id, 3> t{ { vertexOf[out.Triangles[k][0]], vertexOf[out.Triangles[k][1]],
+      vertexOf[out.Triangles[k][2]] } };
+    std::sort(t.begin(), t.end());
+    walls.Triangles.push_back({ t, out.TriangleNode[k] });
+  }
+  std::sort(walls.Triangles.begin(), walls.Triangles.end());
+  walls.Facets.assign(static_cast<std::size_t>(tri.NumberOfCells()), 0);
+  for (const Claim& w : walls.Triangles)
+  {
+    CellHandle cell;
+    int opposite = 0;
+    if (!tri.Facet(w.Triangle[0], w.Triangle[1], w.Triangle[2], cell, opposite))
+    {
+      throw std::logic_error("compact reconstruction: a triangle that is not a Delaunay facet");
+    }
+    for (int side = 0; side < 2; ++side)
+    {
+      if (!tri.Dt().is_infinite(cell))
+      {
+        walls.Facets[tri.CellId(cell)] |= static_cast<std::uint8_t>(1u << opposite);
+      }
+      const CellHandle other = cell->neighbor(opposite);
+      opposite = other->index(cell);
+      cell = other;
+    }
+  }
+  return walls;
+}
+
+/// The region of the complement that holds cell `start` (cells joined across
+/// facets that are not walls), searched until it is known to be unbounded: it
+/// meets an infinite cell or a region searched before (`mark`: the search of
+/// each cell, 0 for none; a bounded region is closed by walls, so another
+/// search cannot reach it). Returns whether it is bounded; then `component`
+/// holds its cells, `maximum` whether one is a maximum, and `wall` the wall
+/// node of largest value.
+bool SearchRegion(const Retriangulation& re, const std::vector<Node>& nodes,
+  const std::vector<Id>& cellNode, const Walls& walls, const std::vector<char>& isMaximum,
+  Id start, std::int32_t search, std::vector<std::int32_t>& mark, std::vector<Id>& component,
+  Id& wall, bool& maximum)
+{
+  const Triangulation& tri = re.Tri();
+  auto meet = [&](Id node) {
+    if (wall < 0 || nodes[node].Value > nodes[wall].Value)
+    {
+      wall = node;
+    }
+  };
+  wall = -1;
+  maximum = false;
+  component.clear();
+  std::vector<Id> stack{ start };
+  mark[start] = search;
+  while (!stack.empty())
+  {
+    const Id c = stack.back();
+    stack.pop_back();
+    component.push_back(c);
+    const CellHandle cell = tri.Cell(c);
+    maximum = maximum || isMaximum[c] != 0;
+    bool open = false;
+    for (int k = 0; k < 4 && !open; ++k)
+    {
+      const CellHandle next = cell->neighbor(k);
+      if (walls.Facets[c] & (1u << k))
+      {
+        std::array<Id, 3> t;
+        for (int j = 0, m = 0; j < 4; ++j)
+        {
+          if (j != k)
+          {
+            t[m++] = cell->vertex(j)->info();
+          }
+        }
+        std::sort(t.begin(), t.end());
+        meet(std::lower_bound(walls.Triangles.begin(), walls.Triangles.end(), Claim{ t, -1 })->Node);
+        continue;
+      }
+      open = tri.Dt().is_infinite(next);
+      const Id n = open ? -1 : tri.CellId(next);
+      if (open || (!cellNode.empty() && cellNode[n] >= 0))
+      {
+        if (!open)
+        {
+          meet(cellNode[n]);
+        }
+        continue;
+      }
+      open = mark[n] != 0 && mark[n] != search;
+      if (!open && mark[n] == 0)
+      {
+        mark[n] = search;
+        stack.push_back(n);
+      }
+    }
+    if (open)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+/// The bounded regions of the complement of the compact complex (Delaunay
+/// cells joined across facets that are not its triangles) that hold no
+/// maximum, filled with their cells. Every bounded region of the complement
+/// of the exact reconstruction holds the stable manifold of a maximum, hence
+/// its Voronoi vertex, so these voids are not the exact one's: they appear
+/// where two patches cross the Voronoi edges around a Voronoi vertex, the
+/// region between them escaping through Voronoi facets, which no Delaunay
+/// simplex stands for. The filling's cells go to the wall node of largest
+/// value. Only regions next to a wall are searched, each until it is seen to
+/// be unbounded; the bounded ones with a maximum are counted in out.Voids.
+void FillVoidsWithoutMaximum(const Retriangulation& re, const std::vector<Node>& nodes,
+  const std::vector<Id>& cellNode, CompactComplex& out)
+{
+  const Triangulation& tri = re.Tri();
+  const Walls walls = FindWalls(re, out);
+  std::vector<Id> starts;
+  for (Id c = 0; c < tri.NumberOfCells(); ++c)
+  {
+    const bool inside = !cellNode.empty() && cellNode[c] >= 0;
+    if (!inside && walls.Facets[c] != 0)
+    {
+      starts.push_back(c);
+    }
+    for (int k = 0; inside && k < 4; ++k)
+    {
+      const CellHandle next = tri.Cell(c)->neighbor(k);
+      if (!tri.Dt().is_infinite(next) && cellNode[tri.CellId(next)] < 0)
+      {
+        starts.push_back(tri.CellId(next));
+      }
+    }
+  }
+  std::vector<char> isMaximum(static_cast<std::size_t>(tri.NumberOfCells()), 0);
+  for (const CriticalCell& c : re.Critical().Cells)
+  {
+    isMaximum[c.Cell] = 1;
+  }
+  std::vector<std::int32_t> mark(static_cast<std::size_t>(tri.NumberOfCells()), 0);
+  std::vector<Id> component;
+  std::int32_t search = 0;
+  for (const Id start : starts)
+  {
+    if (mark[start] != 0)
+    {
+      continue;
+    }
+    Id wall = -1;
+    bool maximum = false;
+    if (!SearchRegion(re, nodes, cellNode, walls, isMaximum, start, ++search, mark, component, wall,
+          maximum) || wall < 0)
+    {
+      continue;
+    }
+    if (maximum)
+    {
+      ++out.Voids; // a void of the exact reconstruction too
+    }
+    else
+    {
+      ++out.FilledVoids;
+      for (const Id c : component)
+      {
+        out.Tetrahedra.push_back(InputSimplex<4>(re, tri.SortedVertices(tri.Cell(c))));
+        out.TetrahedronNode.push_back(wall);
+      }
+    }
+  }
+}
+
+/// Index-1 and index-0 nodes whose edge or sample no triangle or tetrahedron holds.
+void AddEdgesAndSamples(
+  const std::vector<Node>& nodes, const std::vector<Id>& selected, CompactComplex& out)
+{
+  std::vector<std::array<Id, 2>> held;
+  std::vector<Id> used;
+  auto hold = [&](const Id* v, int n) {
+    for (int a = 0; a < n; ++a)
+    {
+      used.push_back(v[a]);
+      for (int b = a + 1; b < n; ++b)
+      {
+        held.push_back({ { v[a], v[b] } }); // sorted simplices: v[a] < v[b]
+      }
+    }
+  };
+  for (const std::array<Id, 3>& t : out.Triangles)
+  {
+    hold(t.data(), 3);
+  }
+  for (const std::array<Id, 4>& t : out.Tetrahedra)
+  {
+    hold(t.data(), 4);
+  }
+  std::sort(held.begin(), held.end());
+  held.erase(std::unique(held.begin(), held.end()), held.end());
+  for (const Id node : selected)
+  {
+    const Node& n = nodes[node];
+    if (n.Index == 1)
+    {
+      const std::array<Id, 2> e{ { n.Simplex[0], n.Simplex[1] } };
+      if (!std::binary_search(held.begin(), held.end(), e))
+      {
+        out.Edges.push_back(e);
+        out.EdgeNode.push_back(node);
+        used.push_back(e[0]);
+        used.push_back(e[1]);
+      }
+    }
+  }
+  std::sort(used.begin(), used.end());
+  for (const Id node : selected)
+  {
+    const Node& n = nodes[node];
+    if (n.Index == 0 && !n.IsInfinity() &&
+      !std::binary_search(used.begin(), used.end(), static_cast<Id>(n.Simplex[0])))
+    {
+      out.Vertices.push_back(n.Simplex[0]);
+      out.VertexNode.push_back(node);
+    }
+  }
+}
+
+template <class T>
+void SortUnique(std::vector<T>& v)
+{
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+}
+
+/// b0 by union-find over the edges; b2 = out.Voids by Alexander duality (the
+/// complex lies in a triangulation of R^3: its voids are the bounded regions
+/// of the complement); b1 from the Euler characteristic V - E + F - T =
+/// b0 - b1 + b2. Linear after sorting, where cell homology of millions of
+/// triangles reduces a large H1 matrix (50 s at 10^6 sphere points).
+void SetBettiNumbers(CompactComplex& out)
+{
+  std::vector<Id> vertices(out.Vertices);
+  std::vector<std::array<Id, 2>> edges(out.Edges);
+  std::vector<std::array<Id, 3>> faces(out.Triangles);
+  for (const std::array<Id, 4>& t : out.Tetrahedra)
+  {
+    for (int k = 0; k < 4; ++k)
+    {
+      std::array<Id, 3> f;
+      for (int j = 0, m = 0; j < 4; ++j)
+      {
+        if (j != k)
+        {
+          f[m++] = t[j];
+        }
+      }
+      faces.push_back(f);
+    }
+  }
+  SortUnique(faces);
+  for (const std::array<Id, 3>& f : faces)
+  {
+    edges.push_back({ { f[0], f[1] } });
+    edges.push_back({ { f[0], f[2] } });
+    edges.push_back({ { f[1], f[2] } });
+  }
+  SortUnique(edges);
+  for (const std::array<Id, 2>& e : edges)
+  {
+    vertices.push_back(e[0]);
+    vertices.push_back(e[1]);
+  }
+  SortUnique(vertices);
+  UnionFind components(vertices.size());
+  auto at = [&](Id v) {
+    return static_cast<std::int32_t>(std::lower_bound(vertices.begin(), vertices.end(), v) - vertices.begin());
+  };
+  Id b0 = static_cast<Id>(vertices.size());
+  for (const std::array<Id, 2>& e : edges)
+  {
+    b0 -= components.Merge(at(e[0]), at(e[1])) >= 0 ? 1 : 0;
+  }
+  const Id chi = static_cast<Id>(vertices.size()) - static_cast<Id>(edges.size()) +
+    static_cast<Id>(faces.size()) - static_cast<Id>(out.Tetrahedra.size());
+  out.Betti = { { b0, b0 + out.Voids - chi, out.Voids, 0 } };
+}
+
+} // namespace
+
+CompactComplex CompactReconstruction(const Retriangulation& re, const std::vector<Node>& nodes,
+  const std::vector<Id>& selected, const Progress& progress)
+{
+  std::vector<Id> sorted(selected);
+  std::sort(sorted.begin(), sorted.end());
+  sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
+  std::vector<Id> patches, maxima;
+  for (const Id node : sorted)
+  {
+    if (node < 0 || node >= static_cast<Id>(nodes.size()))
+    {
+      throw InputError("compact reconstruction: node " + std::to_string(node) + " out of range");
+    }
+    if (nodes[node].IsInfinity())
+    {
+      continue;
+    }
+    if (nodes[node].Index == 2)
+    {
+      patches.push_back(node);
+    }
+    else if (nodes[node].Index == 3)
+    {
+      maxima.push_back(node);
+    }
+  }
+  CompactComplex out;
+  AddPatchTriangles(re, nodes, patches, progress, out);
+  std::vector<Id> cellNode;
+  if (!maxima.empty())
+  {
+    cellNode.assign(static_cast<std::size_t>(re.Tri().NumberOfCells()), -1);
+    AddConeTetrahedra(re, nodes, maxima, progress, out, cellNode);
+  }
+  progress(0.9, "compact voids");
+  FillVoidsWithoutMaximum(re, nodes, cellNode, out);
+  AddEdgesAndSamples(nodes, sorted, out);
+  SetBettiNumbers(out);
+  progress(1.0, "compact output");
+  return out;
+}
+
+std::array<Id, 4> CompactBettiNumbers(const CompactComplex& compact)
+{
+  FilteredCells cells;
+  for (const Id& v : compact.Vertices)
+  {
+    cells.Add(&v, 1, 0);
+  }
+  for (const std::array<Id, 2>& e : compact.Edges)
+  {
+    cells.Add(e.data(), 2, 0);
+  }
+  for (const std::array<Id, 3>& t : compact.Triangles)
+  {
+    cells.Add(t.data(), 3, 0);
+  }
+  for (const std::array<Id, 4>& t : compact.Tetrahedra)
+  {
+    cells.Add(t.data(), 4, 0);
+  }
+  return BettiNumbersBelow(CellBarcode(cells), 1);
+}
+
+} // namespace flowrecon

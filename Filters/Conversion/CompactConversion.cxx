@@ -1,0 +1,97 @@
+#include "CompactConversion.h"
+
+#include "ContractArrays.h"
+#include "FlowReconNames.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkCellType.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkIdTypeArray.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkPoints.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkUnstructuredGrid.h"
+
+namespace flowrecon
+{
+
+void CompactToVTK(const CompactComplex& compact, const std::vector<Point3>& samples,
+  const std::vector<Node>& nodes, const std::vector<double>& nodeThreshold,
+  const std::array<Id, 4>& betti, vtkUnstructuredGrid* grid)
+{
+  const vtkIdType cells = static_cast<vtkIdType>(compact.NumberOfCells());
+  vtkNew<vtkCellArray> cellArray;
+  cellArray->AllocateExact(cells,
+    static_cast<vtkIdType>(compact.Vertices.size() + 2 * compact.Edges.size() +
+      3 * compact.Triangles.size() + 4 * compact.Tetrahedra.size()));
+  vtkNew<vtkUnsignedCharArray> types;
+  types->SetNumberOfValues(cells);
+  auto nodeId = NamedArray<vtkIntArray>(names::NodeId);
+  auto index = NamedArray<vtkIntArray>(names::Index);
+  auto threshold = NamedArray<vtkDoubleArray>(names::Threshold);
+  auto claims = NamedArray<vtkIntArray>(names::Claims);
+  for (vtkDataArray* a : std::initializer_list<vtkDataArray*>{ nodeId, index, threshold, claims })
+  {
+    a->SetNumberOfTuples(cells);
+  }
+  vtkIdType c = 0;
+  auto add = [&](const Id* v, int n, Id node, unsigned char type, int claimed) {
+    vtkIdType ids[4];
+    for (int k = 0; k < n; ++k)
+    {
+      ids[k] = static_cast<vtkIdType>(v[k]);
+    }
+    cellArray->InsertNextCell(n, ids);
+    types->SetValue(c, type);
+    nodeId->SetValue(c, static_cast<int>(node));
+    index->SetValue(c, nodes[node].Index);
+    threshold->SetValue(c, nodeThreshold[node]);
+    claims->SetValue(c, claimed);
+    ++c;
+  };
+  for (std::size_t k = 0; k < compact.Vertices.size(); ++k)
+  {
+    add(&compact.Vertices[k], 1, compact.VertexNode[k], VTK_VERTEX, 1);
+  }
+  for (std::size_t k = 0; k < compact.Edges.size(); ++k)
+  {
+    add(compact.Edges[k].data(), 2, compact.EdgeNode[k], VTK_LINE, 1);
+  }
+  for (std::size_t k = 0; k < compact.Triangles.size(); ++k)
+  {
+    add(compact.Triangles[k].data(), 3, compact.TriangleNode[k], VTK_TRIANGLE,
+      compact.TriangleClaims[k]);
+  }
+  for (std::size_t k = 0; k < compact.Tetrahedra.size(); ++k)
+  {
+    add(compact.Tetrahedra[k].data(), 4, compact.TetrahedronNode[k], VTK_TETRA, 1);
+  }
+  grid->Initialize();
+  grid->SetPoints(MakePoints(samples));
+  grid->SetCells(types, cellArray);
+  for (vtkDataArray* a : std::initializer_list<vtkDataArray*>{ nodeId, index, threshold, claims })
+  {
+    grid->GetCellData()->AddArray(a);
+  }
+  grid->GetCellData()->SetActiveScalars(names::Index);
+  auto field = NamedArray<vtkIdTypeArray>(names::BettiNumbers);
+  for (int d = 0; d < 3; ++d)
+  {
+    field->InsertNextValue(static_cast<vtkIdType>(betti[d]));
+  }
+  grid->GetFieldData()->AddArray(field);
+  const std::pair<const char*, Id> counts[3] = { { names::SharedTriangles, compact.SharedTriangles },
+    { names::RevisitedTriangles, compact.RevisitedTriangles },
+    { names::FilledVoids, compact.FilledVoids } };
+  for (const auto& count : counts)
+  {
+    auto a = NamedArray<vtkIdTypeArray>(count.first);
+    a->InsertNextValue(static_cast<vtkIdType>(count.second));
+    grid->GetFieldData()->AddArray(a);
+  }
+}
+
+} // namespace flowrecon

@@ -1,0 +1,305 @@
+// The compact output (Delaunay simplices on the samples) on clouds whose answer
+// is known without it: the icosahedron's 20 faces; configuration D of
+// docs/algorithm.md §8.3, whose walk crosses one more Delaunay triangle; and
+// reconstructions of a quasi-uniform sphere and torus, which must come out as
+// closed 2-manifolds (each edge in exactly two triangles) of Euler
+// characteristic 2 and 0, counted here from the cells; at t_r = inf, the
+// complement of an open cell (contractible); and each patch alone, whose
+// Delaunay triangles must have the Betti numbers of its exact stable manifold.
+#include "Check.h"
+#include "Clouds.h"
+#include "ReconFixtures.h"
+
+#include "CellHomology.h"
+#include "CompactReconstruction.h"
+#include "FlowComplexBuilder.h"
+#include "Progress.h"
+#include "Reconstruction.h"
+#include "Retriangulation.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace
+{
+using namespace flowrecon;
+
+/// The flow complex of `points` with its triangulation kept.
+struct Built
+{
+  FlowComplex Complex;
+  std::unique_ptr<Retriangulation> Re;
+};
+
+Built Build(const std::vector<Point3>& points)
+{
+  BuildOptions options;
+  options.StableManifolds = false;
+  options.UnstableManifolds = false;
+  Built b;
+  b.Complex = BuildFlowComplex(points, options, Progress(), &b.Re);
+  return b;
+}
+
+/// The nodes of the reconstruction at t_r (no simplification): what
+/// `reconstruct --tp 0 --tr T` writes.
+std::vector<Id> ReconstructionNodes(const FlowComplex& fc, double tr)
+{
+  const std::vector<bool> all(fc.Nodes.size(), true);
+  const std::vector<Id> init =
+    InitializationEdges(fc.Nodes, NearestNeighboursFromDiagram(fc.Nodes, fc.Arcs));
+  const ReconstructionResult run = Reconstruct(fc.Nodes, fc.Arcs, all, init, HUGE_VAL, Progress());
+  const std::vector<Id> carriers = CellCarriers(run, nullptr);
+  std::vector<Id> selected;
+  for (std::size_t i = 0; i < fc.Nodes.size(); ++i)
+  {
+    if (carriers[i] >= 0 && run.Contains(carriers[i], tr))
+    {
+      selected.push_back(static_cast<Id>(i));
+    }
+  }
+  return selected;
+}
+
+/// Checks that the cells are a closed 2-manifold surface (triangles only, each
+/// edge in exactly two, the link of every vertex one cycle) of Euler
+/// characteristic `chi`, connected.
+void CheckClosedSurface(const CompactComplex& c, Id chi, const std::string& name)
+{
+  std::cout << "-- " << name << ": " << c.Triangles.size() << " triangles, "
+            << c.SharedTriangles << " shared, " << c.RevisitedTriangles << " revisited\n";
+  CHECK(c.Tetrahedra.empty());
+  CHECK(c.Edges.empty());
+  CHECK(c.Vertices.empty());
+  std::map<std::array<Id, 2>, int> edges;
+  std::map<Id, std::vector<std::array<Id, 2>>> links;
+  for (const std::array<Id, 3>& t : c.Triangles)
+  {
+    CHECK(t[0] < t[1] && t[1] < t[2]);
+    ++edges[{ { t[0], t[1] } }];
+    ++edges[{ { t[0], t[2] } }];
+    ++edges[{ { t[1], t[2] } }];
+    links[t[0]].push_back({ { t[1], t[2] } });
+    links[t[1]].push_back({ { t[0], t[2] } });
+    links[t[2]].push_back({ { t[0], t[1] } });
+  }
+  Id notTwo = 0;
+  for (const auto& e : edges)
+  {
+    notTwo += e.second == 2 ? 0 : 1;
+  }
+  CHECK(notTwo == 0);
+  // The link of a vertex of a closed surface is one cycle: its edges form a
+  // connected graph in which every vertex has degree 2.
+  Id badLinks = 0;
+  for (const auto& l : links)
+  {
+    std::map<Id, std::vector<Id>> adjacent;
+    for (const std::array<Id, 2>& e : l.second)
+    {
+      adjacent[e[0]].push_back(e[1]);
+      adjacent[e[1]].push_back(e[0]);
+    }
+    bool ok = std::all_of(adjacent.begin(), adjacent.end(),
+      [](const auto& a) { return a.second.size() == 2; });
+    std::set<Id> seen{ adjacent.begin()->first };
+    std::vector<Id> stack{ adjacent.begin()->first };
+    while (!stack.empty())
+    {
+      const Id v = stack.back();
+      stack.pop_back();
+      for (const Id w : adjacent[v])
+      {
+        if (seen.insert(w).second)
+        {
+          stack.push_back(w);
+        }
+      }
+    }
+    badLinks += ok && seen.size() == adjacent.size() ? 0 : 1;
+  }
+  CHECK(badLinks == 0);
+  const Id v = static_cast<Id>(links.size()), e = static_cast<Id>(edges.size()),
+           f = static_cast<Id>(c.Triangles.size());
+  std::cout << "   V - E + F = " << v << " - " << e << " + " << f << " = " << v - e + f
+            << ", edges not in two triangles " << notTwo << ", bad vertex links " << badLinks << "\n";
+  CHECK(v - e + f == chi);
+  CHECK(c.SharedTriangles == 0);
+}
+
+/// Regular icosahedron (cospherical: a perturbed run): below the circumradius
+/// of the sphere (1.902) and above that of a face (1.155), the nodes are its
+/// vertices, edges and faces, so the compact complex is its 20 faces, the
+/// triples of vertices at mutual distance 2.
+void Icosahedron()
+{
+  const double t = (1 + std::sqrt(5.0)) / 2;
+  std::vector<Point3> p;
+  for (const double a : { -1.0, 1.0 })
+    for (const double b : { -t, t })
+    {
+      p.push_back({ { 0, a, b } });
+      p.push_back({ { a, b, 0 } });
+      p.push_back({ { b, 0, a } });
+    }
+  Built b = Build(p);
+  CHECK(b.Complex.Report.Perturbed());
+  std::vector<Id> selected;
+  for (std::size_t i = 0; i < b.Complex.Nodes.size(); ++i)
+  {
+    if (b.Complex.Nodes[i].Value < 1.5)
+    {
+      selected.push_back(static_cast<Id>(i));
+    }
+  }
+  const CompactComplex c = CompactReconstruction(*b.Re, b.Complex.Nodes, selected);
+  std::set<std::array<Id, 3>> faces;
+  auto d2 = [&](Id i, Id j) {
+    double s = 0;
+    for (int k = 0; k < 3; ++k)
+      s += (p[i][k] - p[j][k]) * (p[i][k] - p[j][k]);
+    return s;
+  };
+  for (Id i = 0; i < 12; ++i)
+    for (Id j = i + 1; j < 12; ++j)
+      for (Id k = j + 1; k < 12; ++k)
+        if (std::abs(d2(i, j) - 4) < 1e-9 && std::abs(d2(i, k) - 4) < 1e-9 &&
+          std::abs(d2(j, k) - 4) < 1e-9)
+          faces.insert({ { i, j, k } });
+  CHECK(faces.size() == 20);
+  CHECK((std::set<std::array<Id, 3>>(c.Triangles.begin(), c.Triangles.end()) == faces));
+  CheckClosedSurface(c, 2, "icosahedron");
+  CHECK((CompactBettiNumbers(c) == std::array<Id, 4>{ { 1, 0, 1, 0 } }));
+  CHECK(c.Betti == CompactBettiNumbers(c));
+}
+
+/// Configuration D: the walk of facet (2,3,4) leaves through the Voronoi edge
+/// of (0,3,4) (docs/algorithm.md §8.3 D): its compact patch is those two
+/// Delaunay triangles, glued along (3,4), with its Gabriel boundary edges.
+void ConfigurationD()
+{
+  const std::vector<Point3> p = { { { -0.9, -0.8, -0.2 } }, { { -0.8, 0.8, -0.9 } },
+    { { 0.1, -0.3, 0.7 } }, { { -0.7, -0.3, -0.3 } }, { { -0.5, -1.0, -0.1 } } };
+  Built b = Build(p);
+  std::vector<Id> selected;
+  for (std::size_t i = 0; i < b.Complex.Nodes.size(); ++i)
+  {
+    if (b.Complex.Nodes[i].Index == 2 && !b.Complex.Nodes[i].IsInfinity())
+    {
+      selected.push_back(static_cast<Id>(i));
+    }
+  }
+  CHECK(selected.size() == 1);
+  const CompactComplex c = CompactReconstruction(*b.Re, b.Complex.Nodes, selected);
+  const std::vector<std::array<Id, 3>> expected = { { { 0, 3, 4 } }, { { 2, 3, 4 } } };
+  CHECK(c.Triangles == expected);
+  CHECK(c.SharedTriangles == 0 && c.RevisitedTriangles == 0);
+  CHECK((c.TriangleClaims == std::vector<int>{ 1, 1 }));
+  CHECK(c.Edges.empty() && c.Vertices.empty() && c.Tetrahedra.empty());
+  // With every node but the maximum at infinity: the Gabriel edge (1,3) and
+  // sample 1 hang off the patch; the other Gabriel edges are its sides.
+  std::vector<Id> all;
+  for (std::size_t i = 0; i < b.Complex.Nodes.size(); ++i)
+  {
+    all.push_back(static_cast<Id>(i));
+  }
+  const CompactComplex d = CompactReconstruction(*b.Re, b.Complex.Nodes, all);
+  CHECK(d.Triangles == expected);
+  CHECK((d.Edges == std::vector<std::array<Id, 2>>{ { { 1, 3 } } }));
+  CHECK(d.Vertices.empty());
+  CHECK((CompactBettiNumbers(d) == std::array<Id, 4>{ { 1, 0, 0, 0 } }));
+  CHECK(d.Betti == CompactBettiNumbers(d));
+}
+
+void Reconstructed(const std::string& name, const std::vector<Point3>& p, double tr, Id chi)
+{
+  Built b = Build(p);
+  const CompactComplex c =
+    CompactReconstruction(*b.Re, b.Complex.Nodes, ReconstructionNodes(b.Complex, tr));
+  CheckClosedSurface(c, chi, name);
+  CHECK(c.Betti == CompactBettiNumbers(c));
+  std::cout << "   " << static_cast<double>(c.NumberOfCells()) / static_cast<double>(p.size())
+            << " cells per sample\n";
+}
+
+/// At t_r = inf without simplification the reconstruction holds every finite
+/// node: the complement of the stable manifold of the maximum at infinity, an
+/// open cell, so contractible (Alexander duality), whatever the cloud.
+void Everything(const std::string& name, const std::vector<Point3>& p)
+{
+  Built b = Build(p);
+  const CompactComplex c =
+    CompactReconstruction(*b.Re, b.Complex.Nodes, ReconstructionNodes(b.Complex, HUGE_VAL));
+  const std::array<Id, 4> betti = CompactBettiNumbers(c);
+  std::cout << "-- " << name << " at t_r = inf: " << c.Triangles.size() << " triangles, "
+            << c.Tetrahedra.size() << " tetrahedra, " << c.FilledVoids << " voids filled; Betti "
+            << betti[0] << " " << betti[1] << " " << betti[2] << "\n";
+  CHECK((betti == std::array<Id, 4>{ { 1, 0, 0, 0 } }));
+  CHECK(c.Betti == betti);
+}
+
+/// Each index-2 node alone: T(c) (its compact triangles) has the Betti
+/// numbers of S(c), its exact stable manifold drawn by the builder, both
+/// computed by cell homology over their own cells.
+void PatchByPatch(const std::string& name, const std::vector<Point3>& p)
+{
+  BuildOptions options;
+  options.UnstableManifolds = false;
+  const FlowComplex fc = BuildFlowComplex(p, options, Progress()); // with geometry
+  const Built b = Build(p);
+  CHECK(b.Complex.Nodes.size() == fc.Nodes.size());
+  std::vector<FilteredCells> exact(fc.Nodes.size());
+  for (std::size_t t = 0; t < fc.Triangles.size(); ++t)
+  {
+    exact[fc.TriangleNode[t]].Add(fc.Triangles[t].data(), 3, 0);
+  }
+  Id patches = 0, differ = 0, revisited = 0, fast = 0;
+  for (std::size_t i = 0; i < fc.Nodes.size(); ++i)
+  {
+    if (fc.Nodes[i].Index != 2 || fc.Nodes[i].IsInfinity())
+    {
+      continue;
+    }
+    const CompactComplex c = CompactReconstruction(*b.Re, fc.Nodes, { static_cast<Id>(i) });
+    const std::array<Id, 4> s = BettiNumbersBelow(CellBarcode(exact[i]), 1);
+    const std::array<Id, 4> t = CompactBettiNumbers(c);
+    ++patches;
+    differ += s == t ? 0 : 1;
+    fast += c.Betti == t ? 0 : 1;
+    revisited += c.RevisitedTriangles > 0 ? 1 : 0;
+    if (s != t)
+    {
+      std::cout << "   node " << i << ": S(c) " << s[0] << " " << s[1] << " " << s[2] << ", T(c) "
+                << t[0] << " " << t[1] << " " << t[2] << ", " << c.Triangles.size()
+                << " triangles, " << c.RevisitedTriangles << " revisited\n";
+    }
+  }
+  std::cout << "-- " << name << ": " << patches << " patches, " << differ
+            << " of other Betti numbers than S(c), " << revisited << " with a triangle crossed twice\n";
+  CHECK(patches > 0);
+  CHECK(differ == 0);
+  CHECK(fast == 0); // Euler characteristic and duality against cell homology
+}
+
+} // namespace
+
+int main()
+{
+  Icosahedron();
+  ConfigurationD();
+  Reconstructed("Fibonacci sphere, 600 points, t_r 2", fixtures::FibonacciSphere(600, 3), 2, 2);
+  Reconstructed("grid torus, 80 x 28 points, t_r 2", fixtures::GridTorus(80, 4), 2, 0);
+  Everything("cube, 2000 i.i.d. points", clouds::Cube(2000, 5));
+  Everything("sphere, 2000 i.i.d. points", clouds::Sphere(2000, 6));
+  Everything("torus, 3000 i.i.d. points", clouds::Torus(3000, 7));
+  PatchByPatch("cube, 1500 i.i.d. points", clouds::Cube(1500, 8));
+  PatchByPatch("torus, 1500 i.i.d. points", clouds::Torus(1500, 9));
+  return check::Finish("TestCompactReconstruction");
+}
