@@ -18,10 +18,12 @@
 
 #include <cstdlib>
 #include <cstring>
+#include <initializer_list>
 #include <iterator>
 #include <limits>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 vtkStandardNewMacro(vtkFlowReconDisplayInitializationHelper);
@@ -93,6 +95,18 @@ void MakeRoomBesideRenderView(vtkSMProxy* repr, const char* spec)
   }
 }
 
+// Integer properties of `repr` set, those it has.
+void SetInts(vtkSMProxy* repr, std::initializer_list<std::pair<const char*, int>> values)
+{
+  for (const auto& value : values)
+  {
+    if (vtkSMProperty* p = repr->GetProperty(value.first))
+    {
+      vtkSMPropertyHelper(p).Set(value.second);
+    }
+  }
+}
+
 // blocks="...": the blocks shown.
 bool BlockSelectorsHint(vtkSMProxy* repr, vtkPVXMLElement* xml, vtkMTimeType ts)
 {
@@ -147,18 +161,7 @@ bool ArrowGlyphsHint(vtkSMProxy* repr, vtkPVXMLElement* xml, vtkMTimeType ts)
   if (glyphs && IsFree(repr, representation, "Representation", ts))
   {
     vtkSMPropertyHelper(representation).Set("3D Glyphs");
-    const struct
-    {
-      const char* Name;
-      int Value;
-    } flags[] = { { "Orient", 1 }, { "Scaling", 1 }, { "ScaleMode", 1 /* magnitude */ } };
-    for (const auto& flag : flags)
-    {
-      if (vtkSMProperty* p = repr->GetProperty(flag.Name))
-      {
-        vtkSMPropertyHelper(p).Set(flag.Value);
-      }
-    }
+    SetInts(repr, { { "Orient", 1 }, { "Scaling", 1 }, { "ScaleMode", 1 /* magnitude */ } });
     for (const char* name : { "SelectOrientationVectors", "SelectScaleArray" })
     {
       if (vtkSMProperty* p = repr->GetProperty(name))
@@ -189,19 +192,8 @@ bool SpheresHint(vtkSMProxy* repr, vtkPVXMLElement* xml, vtkMTimeType ts)
     double factor = 1;
     xml->GetScalarAttribute("sphere_radius_factor", &factor);
     vtkSMPropertyHelper(representation).Set("Point Gaussian");
-    const struct
-    {
-      const char* Name;
-      int Value;
-    } settings[] = { { "ShaderPreset", 1 /* Sphere */ }, { "ScaleByArray", 1 },
-      { "UseScaleFunction", 0 } };
-    for (const auto& setting : settings)
-    {
-      if (vtkSMProperty* p = repr->GetProperty(setting.Name))
-      {
-        vtkSMPropertyHelper(p).Set(setting.Value);
-      }
-    }
+    SetInts(repr, { { "ShaderPreset", 1 /* Sphere */ }, { "ScaleByArray", 1 },
+                    { "UseScaleFunction", 0 } });
     if (vtkSMProperty* p = repr->GetProperty("SetScaleArray"))
     {
       vtkSMPropertyHelper(p).SetInputArrayToProcess(vtkDataObject::FIELD_ASSOCIATION_POINTS, scaleArray);
