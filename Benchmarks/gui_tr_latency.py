@@ -23,7 +23,6 @@ Prints lines "gui_tr_latency: ..." with os.write (print() goes to the GUI's Outp
 Messages window), ends with "gui_tr_latency: done" and os._exit()s.
 """
 
-import ctypes
 import os
 import time
 
@@ -31,23 +30,7 @@ from paraview.simple import *  # noqa: F401,F403
 
 from flowrecon_testing.gui_plugin import load_plugin
 from flowrecon_testing.gui_qt import Qt, check, run_in_gui, say
-
-
-def mark_modified(qt, proxy):
-    """pqProxy::setModifiedState(MODIFIED) on the GUI's item of `proxy`, as editing a
-    property in the Properties panel does: a change made from Python leaves Apply off."""
-    model = qt.find(qt._app_core(), "", qt.pq, "pqServerManagerModel")
-    find = qt.pq._ZN20pqServerManagerModel14findItemHelperEPKS_RK11QMetaObjectP10vtkSMProxy
-    find.argtypes = [ctypes.c_void_p, ctypes.c_void_p, ctypes.c_void_p]
-    find.restype = ctypes.c_void_p
-    address = int(proxy.SMProxy.__this__[1:].split("_")[0], 16)
-    item = find(model, qt.meta(qt.pq, "pqPipelineSource"), address)
-    check(item, "no pqPipelineSource for %s" % proxy.GetXMLName())
-    set_state = qt.pq._ZN7pqProxy16setModifiedStateENS_13ModifiedStateE
-    set_state.argtypes = [ctypes.c_void_p, ctypes.c_int]
-    set_state.restype = None
-    set_state(item, 1)
-    qt.process_events()
+from flowrecon_testing.gui_views import mark_modified
 
 
 class Renders:

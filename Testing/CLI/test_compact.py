@@ -22,26 +22,12 @@ import numpy as np
 
 from flowrecon_testing import clouds as cl
 from flowrecon_testing import run as fr
+from flowrecon_testing.oracles import gudhi_betti
 
 FLOWRECON, WORK = sys.argv[1], sys.argv[2]
 DATA = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Data")
 os.makedirs(WORK, exist_ok=True)
 failures = []
-
-
-def gudhi_betti(grid):
-    import gudhi
-    from vtkmodules.util.numpy_support import vtk_to_numpy
-    types = vtk_to_numpy(grid.GetCellTypesArray())
-    conn = vtk_to_numpy(grid.GetCells().GetConnectivityArray())
-    off = vtk_to_numpy(grid.GetCells().GetOffsetsArray())
-    st = gudhi.SimplexTree()
-    for vtk_type, k in ((10, 4), (5, 3), (3, 2), (1, 1)):
-        idx = np.nonzero(types == vtk_type)[0]
-        if len(idx):
-            st.insert_batch(np.stack([conn[off[idx] + j] for j in range(k)]), np.zeros(len(idx)))
-    st.compute_persistence(persistence_dim_max=True)
-    return tuple((st.betti_numbers() + [0, 0, 0])[:3])
 
 
 def check(name, points):

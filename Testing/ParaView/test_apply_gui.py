@@ -40,6 +40,7 @@ import numpy as np
 
 from flowrecon_testing.gui_plugin import load_plugin
 from flowrecon_testing.gui_qt import Qt, check, run_in_gui, say
+from flowrecon_testing.gui_views import label_texts
 
 from paraview import servermanager
 from paraview.simple import *  # noqa: F401,F403
@@ -177,24 +178,6 @@ def check_text_and_spheres(view, recon, shown, out):
     check(with_spheres >= 0.5 * diff.sum() and without <= 0.1 * diff.sum(),
           "the spheres are not magenta: %d of %d pixels (%d without them)"
           % (with_spheres, diff.sum(), without))
-
-
-def label_texts(view):
-    """The texts of the point labels the render view draws (its visible label
-    mappers' input, in the built-in session)."""
-    import vtkmodules.vtkRenderingLabel  # noqa: F401 (vtkLabeledDataMapper in Python)
-    actors = view.GetClientSideObject().GetNonCompositedRenderer().GetActors2D()
-    actors.InitTraversal()
-    texts = []
-    for _ in range(actors.GetNumberOfItems()):
-        actor = actors.GetNextItem()
-        mapper = actor.GetMapper()
-        if actor.GetVisibility() and mapper is not None and mapper.IsA("vtkLabeledDataMapper"):
-            data = mapper.GetInput()
-            labels = data.GetPointData().GetAbstractArray("Label") if data else None
-            if labels is not None:
-                texts += [labels.GetValue(k) for k in range(labels.GetNumberOfValues())]
-    return sorted(t for t in texts if t)
 
 
 def label_changes(texts):

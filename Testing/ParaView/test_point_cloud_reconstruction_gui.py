@@ -30,6 +30,7 @@ import os
 
 from flowrecon_testing.gui_plugin import load_plugin
 from flowrecon_testing.gui_qt import Qt, check, run_in_gui, say
+from flowrecon_testing.gui_views import label_texts, mark_modified
 
 from paraview import servermanager
 from paraview.simple import *  # noqa: F401,F403
@@ -48,24 +49,6 @@ def displays(source):
             if helper.GetProxy(0) == source.SMProxy and r.Visibility:
                 found[(view.GetXMLName(), helper.GetOutputPortForConnection(0))] = r
     return found
-
-
-def label_texts(view):
-    """The texts of the point labels the render view draws (its visible label
-    mappers' input, in the built-in session)."""
-    import vtkmodules.vtkRenderingLabel  # noqa: F401 (vtkLabeledDataMapper in Python)
-    actors = view.GetClientSideObject().GetNonCompositedRenderer().GetActors2D()
-    actors.InitTraversal()
-    texts = []
-    for _ in range(actors.GetNumberOfItems()):
-        actor = actors.GetNextItem()
-        mapper = actor.GetMapper()
-        if actor.GetVisibility() and mapper is not None and mapper.IsA("vtkLabeledDataMapper"):
-            data = mapper.GetInput()
-            labels = data.GetPointData().GetAbstractArray("Label") if data else None
-            if labels is not None:
-                texts += [labels.GetValue(k) for k in range(labels.GetNumberOfValues())]
-    return sorted(t for t in texts if t)
 
 
 def main():
@@ -167,24 +150,6 @@ def main():
     check(again == ["FlowReconDiagramChartView", "FlowReconTopologyChartView", "RenderView"],
           "after a second Apply the views are %s" % again)
     say("%s: PASS" % NAME)
-
-
-def mark_modified(qt, proxy):
-    """pqProxy::setModifiedState(MODIFIED) on the GUI's item of `proxy`, as editing a
-    property in the Properties panel does: a change made from Python leaves Apply off."""
-    import ctypes
-    model = qt.find(qt._app_core(), "", qt.pq, "pqServerManagerModel")
-    find = qt.pq._ZN20pqServerManagerModel14findItemHelperEPKS_RK11QMetaObjectP10vtkSMProxy
-    find.argtypes = [ctypes.c_void_p, ctypes.c_void_p, ctypes.c_void_p]
-    find.restype = ctypes.c_void_p
-    address = int(proxy.SMProxy.__this__[1:].split("_")[0], 16)
-    item = find(model, qt.meta(qt.pq, "pqPipelineSource"), address)
-    check(item, "no pqPipelineSource for %s" % proxy.GetXMLName())
-    set_state = qt.pq._ZN7pqProxy16setModifiedStateENS_13ModifiedStateE
-    set_state.argtypes = [ctypes.c_void_p, ctypes.c_int]
-    set_state.restype = None
-    set_state(item, 1)
-    qt.process_events()
 
 
 run_in_gui(main, NAME)
