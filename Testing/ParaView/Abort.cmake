@@ -25,19 +25,6 @@ if (FLOWRECON_BUILD_PARAVIEW_PLUGIN AND TARGET FlowRecon)
       TIMEOUT 240)
   endif ()
   if (FLOWRECON_PARAVIEW_GUI)
-    # --script runs the test in the GUI's own Python, which os._exit()s (pitfall 11)
-    add_test(NAME gui.abort
-      COMMAND sh "${CMAKE_CURRENT_LIST_DIR}/need_display.sh" "${FLOWRECON_PARAVIEW_GUI}" --dr
-              "--script=${CMAKE_CURRENT_LIST_DIR}/test_abort_gui.py")
-    set_tests_properties(gui.abort PROPERTIES
-      ENVIRONMENT "FLOWRECON_EXIT=1;FLOWRECON_PLUGIN=$<TARGET_FILE:FlowRecon>;FLOWRECON_ABORT_POINTS=50000"
-      PASS_REGULAR_EXPRESSION "test_abort_gui: PASS"
-      FAIL_REGULAR_EXPRESSION "test_abort_gui: FAIL"
-      SKIP_RETURN_CODE 77
-      LABELS "paraview;gui"
-      # One GUI window at a time: gui.abort clicks at a screen position, which
-      # another test's window opened on the same X server can cover.
-      RESOURCE_LOCK flowrecon_x_screen
-      TIMEOUT 300)
+    flowrecon_add_gui_script_test(gui.abort test_abort_gui.py 300 "FLOWRECON_ABORT_POINTS=50000")
   endif ()
 endif ()

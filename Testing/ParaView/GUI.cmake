@@ -2,7 +2,7 @@
 # (gui.pipeline) and the demo's pictures (render.demo). Debian's ParaView renders
 # through X11/GLX only, so run the suite under ONE X server,
 #     xvfb-run -a -s "-screen 0 1280x1024x24" ctest --output-on-failure
-# (one xvfb-run per test is flaky, recipe pitfall 10). Without $DISPLAY these tests
+# (one xvfb-run per test is flaky: several X servers starting at once collide). Without $DISPLAY these tests
 # exit 77 through need_display.sh and are reported as skipped.
 # Included from Testing/ParaView/CMakeLists.txt (needs _data_dir).
 if (FLOWRECON_BUILD_PARAVIEW_PLUGIN AND TARGET FlowRecon)
@@ -10,37 +10,13 @@ if (FLOWRECON_BUILD_PARAVIEW_PLUGIN AND TARGET FlowRecon)
   find_program(FLOWRECON_PARAVIEW_GUI paraview DOC "ParaView's Qt GUI")
   find_program(FLOWRECON_PVBATCH pvbatch DOC "ParaView's batch Python interpreter")
   if (FLOWRECON_PARAVIEW_GUI)
-    # --script runs gui_pipeline.py in the GUI's own Python after start-up; the
-    # script os._exit()s because the GUI has no quit from Python (pitfall 11) and
-    # prints its markers with os.write (print() goes to the Output Messages window).
-    add_test(NAME gui.pipeline
-      COMMAND sh "${_need_x}" "${FLOWRECON_PARAVIEW_GUI}" --dr
-              "--script=${CMAKE_CURRENT_LIST_DIR}/gui_pipeline.py")
-    set_tests_properties(gui.pipeline PROPERTIES
-      ENVIRONMENT "FLOWRECON_EXIT=1;FLOWRECON_PLUGIN=$<TARGET_FILE:FlowRecon>;FLOWRECON_DATA=${_data_dir}/two_hemispheres.xyz;FLOWRECON_OUT=${CMAKE_CURRENT_BINARY_DIR}/gui_pipeline"
-      PASS_REGULAR_EXPRESSION "gui_pipeline: PASS"
-      FAIL_REGULAR_EXPRESSION "gui_pipeline: FAIL"
-      SKIP_RETURN_CODE 77
-      LABELS "paraview;gui"
-      # One GUI window at a time: gui.abort clicks at a screen position, which
-      # another test's window opened on the same X server can cover.
-      RESOURCE_LOCK flowrecon_x_screen
-      TIMEOUT 180)
+    flowrecon_add_gui_script_test(gui.pipeline gui_pipeline.py 180
+      "FLOWRECON_DATA=${_data_dir}/two_hemispheres.xyz"
+      "FLOWRECON_OUT=${CMAKE_CURRENT_BINARY_DIR}/gui_pipeline")
     # The defaults a user gets from the Filters menu and the Apply button, and the
     # sponsor arrows drawn as arrows.
-    add_test(NAME gui.apply_defaults
-      COMMAND sh "${_need_x}" "${FLOWRECON_PARAVIEW_GUI}" --dr
-              "--script=${CMAKE_CURRENT_LIST_DIR}/test_apply_gui.py")
-    set_tests_properties(gui.apply_defaults PROPERTIES
-      ENVIRONMENT "FLOWRECON_EXIT=1;FLOWRECON_PLUGIN=$<TARGET_FILE:FlowRecon>;FLOWRECON_DATA=${_data_dir}/torus.xyz;FLOWRECON_OUT=${CMAKE_CURRENT_BINARY_DIR}/apply_gui"
-      PASS_REGULAR_EXPRESSION "test_apply_gui: PASS"
-      FAIL_REGULAR_EXPRESSION "test_apply_gui: FAIL"
-      SKIP_RETURN_CODE 77
-      LABELS "paraview;gui"
-      # One GUI window at a time: gui.abort clicks at a screen position, which
-      # another test's window opened on the same X server can cover.
-      RESOURCE_LOCK flowrecon_x_screen
-      TIMEOUT 240)
+    flowrecon_add_gui_script_test(gui.apply_defaults test_apply_gui.py 240
+      "FLOWRECON_DATA=${_data_dir}/torus.xyz" "FLOWRECON_OUT=${CMAKE_CURRENT_BINARY_DIR}/apply_gui")
     # No warning (no Output Messages window) on Apply of each filter from the menu
     # and on loading each example state: e.g. a view hint whose type has no
     # Pipeline Browser icon in 5.11.

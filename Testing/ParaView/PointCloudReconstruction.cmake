@@ -17,16 +17,8 @@ if (FLOWRECON_BUILD_PARAVIEW_PLUGIN AND TARGET FlowRecon)
       TIMEOUT 600)
   endif ()
   if (FLOWRECON_PARAVIEW_GUI)
-    add_test(NAME gui.point_cloud_reconstruction
-      COMMAND sh "${CMAKE_CURRENT_LIST_DIR}/need_display.sh" "${FLOWRECON_PARAVIEW_GUI}" --dr
-              "--script=${CMAKE_CURRENT_LIST_DIR}/test_point_cloud_reconstruction_gui.py")
-    set_tests_properties(gui.point_cloud_reconstruction PROPERTIES
-      ENVIRONMENT "FLOWRECON_EXIT=1;FLOWRECON_PLUGIN=$<TARGET_FILE:FlowRecon>;FLOWRECON_DATA=${_data_dir}/torus.xyz;FLOWRECON_OUT=${CMAKE_CURRENT_BINARY_DIR}/point_cloud_reconstruction_gui"
-      PASS_REGULAR_EXPRESSION "test_point_cloud_reconstruction_gui: PASS"
-      FAIL_REGULAR_EXPRESSION "test_point_cloud_reconstruction_gui: FAIL"
-      SKIP_RETURN_CODE 77
-      LABELS "paraview;gui"
-      RESOURCE_LOCK flowrecon_x_screen
-      TIMEOUT 300)
+    flowrecon_add_gui_script_test(gui.point_cloud_reconstruction
+      test_point_cloud_reconstruction_gui.py 300 "FLOWRECON_DATA=${_data_dir}/torus.xyz"
+      "FLOWRECON_OUT=${CMAKE_CURRENT_BINARY_DIR}/point_cloud_reconstruction_gui")
   endif ()
 endif ()

@@ -11,7 +11,7 @@ Flow Reconstruction with their defaults, checks the outputs (non-empty, block an
 names, profile columns), colours the reconstruction by CriticalValue in the GUI's render
 view and saves <prefix>.png. Prints (to the terminal, with os.write: print() would go to
 the Output Messages window) "gui_pipeline: PASS" and os._exit(0)s, or the traceback and
-os._exit(1): the GUI has no quit from Python (recipe pitfall 11). FLOWRECON_EXIT=0 keeps
+os._exit(1): the GUI has no quit from Python. FLOWRECON_EXIT=0 keeps
 the GUI open (interactive use).
 """
 
