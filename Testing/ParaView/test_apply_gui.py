@@ -40,7 +40,7 @@ import numpy as np
 
 from flowrecon_testing.gui_plugin import load_plugin
 from flowrecon_testing.gui_qt import Qt, check, run_in_gui, say
-from flowrecon_testing.gui_views import label_texts
+from flowrecon_testing.gui_views import expected_changes, label_changes, label_texts
 
 from paraview import servermanager
 from paraview.simple import *  # noqa: F401,F403
@@ -180,37 +180,11 @@ def check_text_and_spheres(view, recon, shown, out):
           % (with_spheres, diff.sum(), without))
 
 
-def label_changes(texts):
-    """{(t_r as printed, Betti number): change} told by labels "t_r T: bk +-c, ...",
-    a line per t_r."""
-    told = {}
-    for text in texts:
-        for line in text.split("\n"):
-            head, _, terms = line.partition(": ")
-            for term in terms.split(", "):
-                k, c = term.split(" ")
-                key = (head, k)
-                told[key] = told.get(key, 0) + int(c)
-    return told
-
-
-def expected_changes(recon, port=4):
-    """The same, summed over the points of the under-sampling output."""
-    data = servermanager.Fetch(recon, idx=port)
-    pd = data.GetPointData()
-    told = {}
-    for k in range(data.GetNumberOfPoints()):
-        key = ("t_r %.3g" % pd.GetArray("Threshold").GetValue(k),
-               "b%d" % int(pd.GetArray("Dimension").GetValue(k)))
-        told[key] = told.get(key, 0) + int(pd.GetArray("Change").GetValue(k))
-    return told
-
-
 def check_labels(view, spheres, recon, out):
     """The labels drawn tell the changes of output 4 (a label per place, a line per
     t_r: "t_r T: bk +-c"), and they draw text-coloured pixels."""
     drawn = label_texts(view)
-    told, expected = label_changes(drawn), expected_changes(recon)
+    told, expected = label_changes(drawn), expected_changes(servermanager.Fetch(recon, idx=4))
     say("test_apply_gui: labels drawn %s, expected changes %s" % (drawn, expected))
     check(len(drawn) >= 1 and told == expected,
           "the warnings' labels %s tell %s, output 4 holds %s" % (drawn, told, expected))

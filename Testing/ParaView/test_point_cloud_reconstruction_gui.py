@@ -30,7 +30,8 @@ import os
 
 from flowrecon_testing.gui_plugin import load_plugin
 from flowrecon_testing.gui_qt import Qt, check, run_in_gui, say
-from flowrecon_testing.gui_views import label_texts, mark_modified
+from flowrecon_testing.gui_views import (
+    expected_changes, label_changes, label_texts, mark_modified)
 
 from paraview import servermanager
 from paraview.simple import *  # noqa: F401,F403
@@ -122,19 +123,8 @@ def main():
     warnings = servermanager.Fetch(one, idx=4)
     drawn = label_texts(views["RenderView"])
     say("%s: %d under-sampling points, labels drawn %s" % (NAME, warnings.GetNumberOfPoints(), drawn))
-    told = {}
-    for text in drawn:
-        for line in text.split("\n"):
-            head, _, terms = line.partition(": ")
-            for term in terms.split(", "):
-                k, c = term.split(" ")
-                told[(head, k)] = told.get((head, k), 0) + int(c)
-    pd = warnings.GetPointData()
-    expected = {}
-    for k in range(warnings.GetNumberOfPoints()):
-        key = ("t_r %.3g" % pd.GetArray("Threshold").GetValue(k),
-               "b%d" % int(pd.GetArray("Dimension").GetValue(k)))
-        expected[key] = expected.get(key, 0) + int(pd.GetArray("Change").GetValue(k))
+    told = label_changes(drawn)
+    expected = expected_changes(warnings)
     check(len(drawn) >= 1 and told == expected,
           "the labels drawn %s tell %s, output 4 holds %s" % (drawn, told, expected))
     SaveScreenshot(out + "_layout.png", GetLayout(view), ImageResolution=[1600, 900])

@@ -1,6 +1,6 @@
 """What the tests read of the ParaView GUI's views and set on its pipeline items: the
-point labels a render view draws, and an item marked modified as the Properties panel
-does."""
+point labels a render view draws and the changes they tell, and an item marked
+modified as the Properties panel does."""
 import ctypes
 
 from flowrecon_testing.gui_qt import check
@@ -22,6 +22,32 @@ def label_texts(view):
             if labels is not None:
                 texts += [labels.GetValue(k) for k in range(labels.GetNumberOfValues())]
     return sorted(t for t in texts if t)
+
+
+def label_changes(texts):
+    """{(t_r as printed, Betti number): change} told by labels "t_r T: bk +-c, ...",
+    a line per t_r."""
+    told = {}
+    for text in texts:
+        for line in text.split("\n"):
+            head, _, terms = line.partition(": ")
+            for term in terms.split(", "):
+                k, c = term.split(" ")
+                key = (head, k)
+                told[key] = told.get(key, 0) + int(c)
+    return told
+
+
+def expected_changes(data):
+    """The same, summed over the points of an under-sampling output (`data`, a
+    vtkPolyData with Threshold, Dimension and Change)."""
+    pd = data.GetPointData()
+    told = {}
+    for k in range(data.GetNumberOfPoints()):
+        key = ("t_r %.3g" % pd.GetArray("Threshold").GetValue(k),
+               "b%d" % int(pd.GetArray("Dimension").GetValue(k)))
+        told[key] = told.get(key, 0) + int(pd.GetArray("Change").GetValue(k))
+    return told
 
 
 def mark_modified(qt, proxy):
