@@ -17,8 +17,9 @@ namespace
 {
 
 const char* const InputHelp =
-  "INPUT: .xyz .txt .pts (x y z per line, extra columns ignored), .csv, .off, .ply, .obj,\n"
-  "       legacy .vtk, VTK XML (.vtp .vtu .vts .vtr .vti .vtm ...): the points are used.";
+  "INPUT: .xyz .txt .pts (x y z per line, extra columns ignored), .csv, .off,\n"
+  "       .ply, .obj, legacy .vtk, VTK XML (.vtp .vtu .vts .vtr .vti .vtm ...):\n"
+  "       the points are used.";
 
 const char* const ExitHelp =
   "Exit status: 0 success, 1 bad input or failed computation, 2 usage error,\n"
@@ -27,6 +28,31 @@ const char* const ExitHelp =
 // 'flowrecon --help' and 'flowrecon CMD --help': the usage line first, then
 // the description, the options ("-o, --output OUT.vtm"), the commands with
 // their summaries, and the footer.
+// `text` with its spaces turned into line breaks where a line would pass
+// `width`; a word longer than `width` stands on a line of its own.
+std::string Wrap(const std::string& text, std::size_t width)
+{
+  std::istringstream words(text);
+  std::string wrapped, word;
+  std::size_t line = 0;
+  while (words >> word)
+  {
+    if (line > 0 && line + 1 + word.size() > width)
+    {
+      wrapped += '\n';
+      line = 0;
+    }
+    else if (line > 0)
+    {
+      wrapped += ' ';
+      ++line;
+    }
+    wrapped += word;
+    line += word.size();
+  }
+  return wrapped;
+}
+
 class HelpFormatter : public CLI::Formatter
 {
 public:
@@ -51,6 +77,13 @@ public:
     std::ostringstream out;
     CLI::detail::format_help(out, command->get_name(), this->Commands.at(command->get_name()).first, 15);
     return out.str();
+  }
+
+  // Option help is written as plain sentences and wrapped here, so that every
+  // line of 'flowrecon CMD --help' fits in 80 columns.
+  std::string make_option_desc(const CLI::Option* option) const override
+  {
+    return Wrap(option->get_description(), 80 - this->get_column_width());
   }
 
   std::string make_option_name(const CLI::Option* option, bool positional) const override

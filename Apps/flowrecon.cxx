@@ -29,6 +29,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <variant>
 
 #ifndef FLOWRECON_VERSION
 #define FLOWRECON_VERSION "unknown"
@@ -64,46 +65,68 @@ void ComplexOptions(CLI::App* c, Arguments& args)
   ManifoldOptions(c, args);
 }
 
+// An option of a table: a number (NumberArg), a text or a flag of Arguments.
+struct OptionRow
+{
+  const char* Names;
+  std::variant<NumberArg Arguments::*, std::string Arguments::*, bool Arguments::*> Field;
+  const char* Placeholder; // nullptr for a flag
+  const char* Help;
+};
+
+// Adds `rows` to `c`, in their order (which is the order of the help).
+template <std::size_t N>
+void AddOptions(CLI::App* c, Arguments& args, const OptionRow (&rows)[N])
+{
+  for (const OptionRow& row : rows)
+  {
+    if (auto number = std::get_if<NumberArg Arguments::*>(&row.Field))
+      AddNumber(c, row.Names, args.**number, row.Placeholder, row.Help);
+    else if (auto text = std::get_if<std::string Arguments::*>(&row.Field))
+      c->add_option(row.Names, args.**text, row.Help)->type_name(row.Placeholder);
+    else
+      c->add_flag(row.Names, args.*std::get<bool Arguments::*>(row.Field), row.Help);
+  }
+}
+
+const OptionRow ReconstructRows[] = {
+  { "--tr", &Arguments::Tr, "T|auto",
+    "reconstruction threshold t_r > 1, 'inf' for all steps; auto (the default): where the Betti "
+    "numbers are the most stable" },
+  { "--tr-max", &Arguments::TrMax, "T",
+    "write every cell with Threshold < T >= t_r, so any t_r <= T is a selection of the file; "
+    "only those cells are drawn (t_r). From a cloud, also the cap below which the run is exact "
+    "(4 when not given; 'inf': no cap): the patches that cannot matter below it are walked only "
+    "when needed" },
+  { "--tp", &Arguments::Tp, "P|auto",
+    "persistence threshold t_p, 0 for none; auto (the default): 1.1 or 0, the more stable" },
+  { "--profile", &Arguments::Profile, "P.csv",
+    "write the profile of the t_r = inf run as CSV (from a cloud: its steps below --tr-max)" },
+  { "--topology-profile", &Arguments::TopologyProfile, "B.csv",
+    "write the Betti numbers for every t_r up to --tr-max (4 when not given) as CSV: "
+    "threshold,b0,b1,b2, one row per change" },
+  { "--warn-window", &Arguments::WarnWindow, "F",
+    "warn where the Betti numbers change for t_r in [t_r, F t_r): under-sampling (1.1; 1: none)" },
+  { "--betti-max-cells", &Arguments::BettiMaxCells, "N",
+    "from a stored complex (.vtm): skip the Betti numbers (with a warning) when the cells below "
+    "the drawn t_r are more than N (4e6; 'inf' for no limit). A cloud's come from its Hasse "
+    "diagram, at any size" },
+  { "--no-betti", &Arguments::NoBetti, nullptr,
+    "skip the Betti numbers, the topology profile and the warnings (on solids of millions of "
+    "tetrahedra they cost about as much as the rest)" },
+  { "--compact", &Arguments::Compact, nullptr,
+    "write instead Delaunay simplices on the samples (a prototype): the Delaunay triangles the "
+    "stable manifolds' walks cross, the Delaunay cells that flow into each maximum; prints "
+    "their Betti numbers beside the exact ones" },
+  { "--jumps", &Arguments::Jumps, "K", "print the K largest jumps of the profile (tracking back)" },
+  { "--timings", &Arguments::Timings, nullptr,
+    "print the seconds of each phase (and, from a cloud, the patches deferred and walked late)" },
+};
+
 void ReconstructOptions(CLI::App* c, Arguments& args)
 {
   OutputOption(c, args, "OUT.vtu", "the unstructured grid to write (.vtu)");
-  AddNumber(c, "--tr", args.Tr, "T|auto",
-    "reconstruction threshold t_r > 1, 'inf' for all steps;\n"
-    "auto (the default): where the Betti numbers are the most stable");
-  AddNumber(c, "--tr-max", args.TrMax, "T",
-    "write every cell with Threshold < T >= t_r, so any t_r <= T\n"
-    "is a selection of the file; only those cells are drawn (t_r). From a cloud, also\n"
-    "the cap below which the run is exact (4 when not given; 'inf': no cap): the\n"
-    "patches that cannot matter below it are walked only when needed");
-  AddNumber(c, "--tp", args.Tp, "P|auto",
-    "persistence threshold t_p, 0 for none; auto (the default):\n"
-    "1.1 or 0, whichever gives the more stable Betti numbers");
-  c->add_option("--profile", args.Profile,
-     "write the profile of the t_r = inf run as CSV (from a\n"
-     "cloud: its steps below the cap, see --tr-max)")
-    ->type_name("P.csv");
-  c->add_option("--topology-profile", args.TopologyProfile,
-     "write the Betti numbers for every t_r up to\n"
-     "--tr-max (4 when not given) as CSV: threshold,b0,b1,b2, one row per change")
-    ->type_name("B.csv");
-  AddNumber(c, "--warn-window", args.WarnWindow, "F",
-    "warn where the Betti numbers change for a t_r in\n"
-    "[t_r, F t_r): an under-sampled region (1.1; 1 for none)");
-  AddNumber(c, "--betti-max-cells", args.BettiMaxCells, "N",
-    "from a stored complex (.vtm): skip the Betti numbers\n"
-    "(with a warning) when the cells below the drawn t_r are more than N\n"
-    "(4e6; 'inf' for no limit). A cloud's come from its Hasse diagram, at any size");
-  c->add_flag("--no-betti", args.NoBetti,
-    "skip the Betti numbers, the topology profile and the\n"
-    "warnings (on solids of millions of tetrahedra they cost about as much as the rest)");
-  c->add_flag("--compact", args.Compact,
-    "write instead Delaunay simplices on the samples (a prototype):\n"
-    "the Delaunay triangles the stable manifolds' walks cross, the Delaunay cells\n"
-    "that flow into each maximum; prints their Betti numbers beside the exact ones");
-  AddNumber(c, "--jumps", args.Jumps, "K", "print the K largest jumps of the profile (tracking back)");
-  c->add_flag("--timings", args.Timings,
-    "print the seconds of each phase (and, from a cloud,\n"
-    "the patches deferred and walked late)");
+  AddOptions(c, args, ReconstructRows);
 }
 
 void DiagramOptions(CLI::App* c, Arguments& args)

@@ -67,3 +67,6 @@ flowrecon_add_cli_python_test(py.exact_perturbed_values test_exact_perturbed_val
 # (GUDHI over the file) equal the exact reconstruction's on surfaces, a solid,
 # a curve, a mix and two touching spheres; the file is on the input points.
 flowrecon_add_cli_python_test(py.reconstruction.compact test_compact.py compact)
+
+# Every command's help fits 80 columns and describes each of its options.
+flowrecon_add_cli_python_test(py.help test_help.py help)
