@@ -9,6 +9,11 @@
 #include "TopologyConversion.h"
 #include "StableManifoldGeometry.h"
 
+#include "vtkInformationVector.h"
+#include "vtkPolyData.h"
+#include "vtkTable.h"
+#include "vtkUnstructuredGrid.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -444,6 +449,12 @@ CloudReconstructionReport ReconstructCloud(const std::vector<Point3>& samples,
   run.Draw();
   run.WriteOutputs();
   return std::move(run.Result);
+}
+
+CloudReconstructionOutputs ReconstructionPorts(vtkInformationVector* outputVector)
+{
+  return { vtkUnstructuredGrid::GetData(outputVector, 0), vtkTable::GetData(outputVector, 1),
+    vtkTable::GetData(outputVector, 3), vtkPolyData::GetData(outputVector, 4) };
 }
 
 } // namespace flowrecon

@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+class vtkInformationVector;
 class vtkPolyData;
 class vtkTable;
 class vtkUnstructuredGrid;
@@ -57,6 +58,11 @@ struct CloudReconstructionOutputs
   vtkTable* Topology = nullptr;
   vtkPolyData* UnderSampling = nullptr;
 };
+
+/// The outputs on ports 0, 1, 3 and 4 of `outputVector`: where both
+/// reconstruction filters (vtkFlowReconstruction, vtkPointCloudReconstruction)
+/// put the grid, the profile, the topology profile and the under-sampling points.
+CloudReconstructionOutputs ReconstructionPorts(vtkInformationVector* outputVector);
 
 struct CloudReconstructionReport
 {

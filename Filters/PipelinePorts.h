@@ -39,6 +39,14 @@ inline bool IsLaterPiece(vtkInformationVector* outputVector)
     outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) > 0;
 }
 
+/// The number of output ports of a filter whose port types are `types`, so
+/// that the count and the types come from one list.
+template <int N>
+constexpr int PortCount(const char* const (&)[N])
+{
+  return N;
+}
+
 /// Sets output port `port`'s data type from `types`, one per port; false for a
 /// port past them.
 template <int N>
@@ -49,6 +57,22 @@ bool SetOutputType(vtkInformation* info, int port, const char* const (&types)[N]
     return false;
   }
   info->Set(vtkDataObject::DATA_TYPE_NAME(), types[port]);
+  return true;
+}
+
+/// Whether every output port holds a data object of its type in `types`, so
+/// that RequestData can use them unchecked.
+template <int N>
+bool HasOutputs(vtkInformationVector* outputVector, const char* const (&types)[N])
+{
+  for (int port = 0; port < N; ++port)
+  {
+    vtkDataObject* output = vtkDataObject::GetData(outputVector, port);
+    if (!output || !output->IsA(types[port]))
+    {
+      return false;
+    }
+  }
   return true;
 }
 

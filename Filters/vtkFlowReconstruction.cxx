@@ -1,5 +1,7 @@
 #include "vtkFlowReconstruction.h"
 
+#include "CloudReconstruction.h" // ReconstructionPorts
+
 #include "PipelinePorts.h"
 #include "AutomaticThresholds.h"
 #include "CoreCall.h"
@@ -134,12 +136,20 @@ struct vtkFlowReconstruction::Selection
   flowrecon::ThresholdChoice Choice;
 };
 
+namespace
+{
+// The outputs, in the order of OutputPorts: RECONSTRUCTION, PROFILE, SPONSOR_ARROWS,
+// TOPOLOGY_PROFILE, UNDER_SAMPLING, TOPOLOGY_TEXT.
+const char* const OutputTypes[] = { "vtkUnstructuredGrid", "vtkTable", "vtkPolyData", "vtkTable",
+  "vtkPolyData", "vtkTable" };
+} // namespace
+
 vtkStandardNewMacro(vtkFlowReconstruction);
 
 //------------------------------------------------------------------------------
 vtkFlowReconstruction::vtkFlowReconstruction()
 {
-  this->SetNumberOfOutputPorts(6);
+  this->SetNumberOfOutputPorts(flowrecon::PortCount(OutputTypes));
 }
 
 //------------------------------------------------------------------------------
@@ -155,9 +165,7 @@ int vtkFlowReconstruction::FillInputPortInformation(int, vtkInformation* info)
 //------------------------------------------------------------------------------
 int vtkFlowReconstruction::FillOutputPortInformation(int port, vtkInformation* info)
 {
-  static const char* const types[] = { "vtkUnstructuredGrid", "vtkTable", "vtkPolyData",
-    "vtkTable", "vtkPolyData", "vtkTable" };
-  return flowrecon::SetOutputType(info, port, types) ? 1 : 0;
+  return flowrecon::SetOutputType(info, port, OutputTypes) ? 1 : 0;
 }
 
 //------------------------------------------------------------------------------
@@ -165,11 +173,7 @@ int vtkFlowReconstruction::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkMultiBlockDataSet* input = vtkMultiBlockDataSet::GetData(inputVector[0], 0);
-  if (!input || !vtkUnstructuredGrid::GetData(outputVector, RECONSTRUCTION) ||
-    !vtkTable::GetData(outputVector, PROFILE) || !vtkPolyData::GetData(outputVector, SPONSOR_ARROWS) ||
-    !vtkTable::GetData(outputVector, TOPOLOGY_PROFILE) ||
-    !vtkPolyData::GetData(outputVector, UNDER_SAMPLING) ||
-    !vtkTable::GetData(outputVector, TOPOLOGY_TEXT))
+  if (!input || !flowrecon::HasOutputs(outputVector, OutputTypes))
   {
     vtkErrorMacro("Missing input or output.");
     return 0;
@@ -354,11 +358,10 @@ void vtkFlowReconstruction::FillOutputs(vtkMultiBlockDataSet* input, double tmax
 {
   const double t = selection.Threshold;
   const flowrecon::ThresholdChoice* choice = selection.Chosen ? &selection.Choice : nullptr;
-  auto* grid = vtkUnstructuredGrid::GetData(outputVector, RECONSTRUCTION);
-  auto* profile = vtkTable::GetData(outputVector, PROFILE);
+  static_assert(RECONSTRUCTION == 0 && PROFILE == 1 && TOPOLOGY_PROFILE == 3 && UNDER_SAMPLING == 4,
+    "the ports ReconstructionPorts reads");
+  const auto [grid, profile, topology, undersampling] = flowrecon::ReconstructionPorts(outputVector);
   auto* arrows = vtkPolyData::GetData(outputVector, SPONSOR_ARROWS);
-  auto* topology = vtkTable::GetData(outputVector, TOPOLOGY_PROFILE);
-  auto* undersampling = vtkPolyData::GetData(outputVector, UNDER_SAMPLING);
   auto* text = vtkTable::GetData(outputVector, TOPOLOGY_TEXT);
   const Cache& c = *this->Cached;
   const flowrecon::FlowComplex& fc = c.FC;

@@ -17,12 +17,18 @@
 #include <string>
 #include <vector>
 
+namespace
+{
+// The outputs, in the order of OutputPorts: DIAGRAM, CURVE.
+const char* const OutputTypes[] = { "vtkUnstructuredGrid", "vtkTable" };
+} // namespace
+
 vtkStandardNewMacro(vtkPersistenceDiagram);
 
 //------------------------------------------------------------------------------
 vtkPersistenceDiagram::vtkPersistenceDiagram()
 {
-  this->SetNumberOfOutputPorts(2);
+  this->SetNumberOfOutputPorts(flowrecon::PortCount(OutputTypes));
 }
 
 //------------------------------------------------------------------------------
@@ -38,8 +44,7 @@ int vtkPersistenceDiagram::FillInputPortInformation(int, vtkInformation* info)
 //------------------------------------------------------------------------------
 int vtkPersistenceDiagram::FillOutputPortInformation(int port, vtkInformation* info)
 {
-  static const char* const types[] = { "vtkUnstructuredGrid", "vtkTable" }; // DIAGRAM, CURVE
-  return flowrecon::SetOutputType(info, port, types) ? 1 : 0;
+  return flowrecon::SetOutputType(info, port, OutputTypes) ? 1 : 0;
 }
 
 //------------------------------------------------------------------------------

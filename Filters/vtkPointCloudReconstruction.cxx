@@ -25,12 +25,20 @@
 #include <string>
 #include <vector>
 
+namespace
+{
+// The outputs, in the order of OutputPorts: RECONSTRUCTION, PROFILE,
+// PERSISTENCE_DIAGRAM, TOPOLOGY_PROFILE, UNDER_SAMPLING, TOPOLOGY_TEXT.
+const char* const OutputTypes[] = { "vtkUnstructuredGrid", "vtkTable", "vtkUnstructuredGrid",
+  "vtkTable", "vtkPolyData", "vtkTable" };
+} // namespace
+
 vtkStandardNewMacro(vtkPointCloudReconstruction);
 
 //------------------------------------------------------------------------------
 vtkPointCloudReconstruction::vtkPointCloudReconstruction()
 {
-  this->SetNumberOfOutputPorts(6);
+  this->SetNumberOfOutputPorts(flowrecon::PortCount(OutputTypes));
 }
 
 vtkPointCloudReconstruction::~vtkPointCloudReconstruction() = default;
@@ -45,9 +53,7 @@ int vtkPointCloudReconstruction::FillInputPortInformation(int, vtkInformation* i
 //------------------------------------------------------------------------------
 int vtkPointCloudReconstruction::FillOutputPortInformation(int port, vtkInformation* info)
 {
-  static const char* const types[] = { "vtkUnstructuredGrid", "vtkTable", "vtkUnstructuredGrid",
-    "vtkTable", "vtkPolyData", "vtkTable" };
-  return flowrecon::SetOutputType(info, port, types) ? 1 : 0;
+  return flowrecon::SetOutputType(info, port, OutputTypes) ? 1 : 0;
 }
 
 //------------------------------------------------------------------------------
@@ -114,17 +120,17 @@ int vtkPointCloudReconstruction::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0);
-  auto* grid = vtkUnstructuredGrid::GetData(outputVector, RECONSTRUCTION);
-  auto* profile = vtkTable::GetData(outputVector, PROFILE);
-  auto* diagram = vtkUnstructuredGrid::GetData(outputVector, PERSISTENCE_DIAGRAM);
-  auto* topology = vtkTable::GetData(outputVector, TOPOLOGY_PROFILE);
-  auto* undersampling = vtkPolyData::GetData(outputVector, UNDER_SAMPLING);
-  auto* text = vtkTable::GetData(outputVector, TOPOLOGY_TEXT);
-  if (!grid || !profile || !diagram || !topology || !undersampling || !text)
+  if (!flowrecon::HasOutputs(outputVector, OutputTypes))
   {
     vtkErrorMacro("Missing output.");
     return 0;
   }
+  static_assert(RECONSTRUCTION == 0 && PROFILE == 1 && TOPOLOGY_PROFILE == 3 && UNDER_SAMPLING == 4,
+    "the ports ReconstructionPorts reads");
+  const flowrecon::CloudReconstructionOutputs ports = flowrecon::ReconstructionPorts(outputVector);
+  const auto& [grid, profile, topology, undersampling] = ports;
+  auto* diagram = vtkUnstructuredGrid::GetData(outputVector, PERSISTENCE_DIAGRAM);
+  auto* text = vtkTable::GetData(outputVector, TOPOLOGY_TEXT);
   const auto empty = [outputVector]() { flowrecon::EmptyOutputs(outputVector); };
   empty();
   if (flowrecon::IsLaterPiece(outputVector))
@@ -164,7 +170,7 @@ int vtkPointCloudReconstruction::RequestData(
       diagramDone = this->ComputePersistenceDiagram &&
         CloudDiagramPairs(samples, progress.Range(0, diagramShare), pairs, diagramError);
       report = flowrecon::ReconstructCloud(samples, settings,
-        { grid, profile, topology, undersampling }, progress.Range(diagramShare, 0.95),
+        ports, progress.Range(diagramShare, 0.95),
         [](const char*) {});
     },
     empty);

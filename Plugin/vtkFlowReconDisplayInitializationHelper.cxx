@@ -152,66 +152,79 @@ bool ColorArrayHint(vtkSMProxy* repr, vtkPVXMLElement* xml, vtkMTimeType ts)
   return false;
 }
 
+// The value of hint `attribute` when it applies: given, with the representation
+// still the user's to choose; the representation is then set to `representation`.
+const char* RepresentationHint(vtkSMProxy* repr, vtkPVXMLElement* xml, vtkMTimeType ts,
+  const char* attribute, const char* representation)
+{
+  const char* value = xml->GetAttribute(attribute);
+  vtkSMProperty* p = repr->GetProperty("Representation");
+  if (!value || !IsFree(repr, p, "Representation", ts))
+  {
+    return nullptr;
+  }
+  vtkSMPropertyHelper(p).Set(representation);
+  return value;
+}
+
+// A size property of `repr` set to `value`, if it has it. Marked modified, so
+// that its bounds domain (a tenth of the data) does not replace it when `value`
+// equals the XML default.
+void SetSize(vtkSMProxy* repr, const char* name, double value)
+{
+  if (vtkSMProperty* p = repr->GetProperty(name))
+  {
+    vtkSMPropertyHelper(p).Set(value);
+    p->Modified();
+  }
+}
+
 // glyph_vectors: lines drawn as arrows, one glyph per point, oriented and scaled
 // by a point vector that is the line itself at its start and zero at its end.
 bool ArrowGlyphsHint(vtkSMProxy* repr, vtkPVXMLElement* xml, vtkMTimeType ts)
 {
-  const char* glyphs = xml->GetAttribute("glyph_vectors");
-  vtkSMProperty* representation = repr->GetProperty("Representation");
-  if (glyphs && IsFree(repr, representation, "Representation", ts))
+  const char* glyphs = RepresentationHint(repr, xml, ts, "glyph_vectors", "3D Glyphs");
+  if (!glyphs)
   {
-    vtkSMPropertyHelper(representation).Set("3D Glyphs");
-    SetInts(repr, { { "Orient", 1 }, { "Scaling", 1 }, { "ScaleMode", 1 /* magnitude */ } });
-    for (const char* name : { "SelectOrientationVectors", "SelectScaleArray" })
-    {
-      if (vtkSMProperty* p = repr->GetProperty(name))
-      {
-        vtkSMPropertyHelper(p).Set(glyphs);
-      }
-    }
-    if (vtkSMProperty* p = repr->GetProperty("ScaleFactor"))
-    {
-      // 1 is also the XML default, which Set leaves unmodified; marked
-      // modified, the bounds domain (a tenth of the data) does not replace it.
-      vtkSMPropertyHelper(p).Set(1.0);
-      p->Modified();
-    }
-    return true;
+    return false;
   }
-  return false;
+  SetInts(repr, { { "Orient", 1 }, { "Scaling", 1 }, { "ScaleMode", 1 /* magnitude */ } });
+  for (const char* name : { "SelectOrientationVectors", "SelectScaleArray" })
+  {
+    if (vtkSMProperty* p = repr->GetProperty(name))
+    {
+      vtkSMPropertyHelper(p).Set(glyphs);
+    }
+  }
+  SetSize(repr, "ScaleFactor", 1.0);
+  return true;
 }
 
 // sphere_radius_array, sphere_radius_factor, opacity: spheres sized by a point
 // array (Point Gaussian, radius = factor x value).
 bool SpheresHint(vtkSMProxy* repr, vtkPVXMLElement* xml, vtkMTimeType ts)
 {
-  const char* scaleArray = xml->GetAttribute("sphere_radius_array");
-  vtkSMProperty* representation = repr->GetProperty("Representation");
-  if (scaleArray && IsFree(repr, representation, "Representation", ts))
+  const char* scaleArray = RepresentationHint(repr, xml, ts, "sphere_radius_array", "Point Gaussian");
+  if (!scaleArray)
   {
-    double factor = 1;
-    xml->GetScalarAttribute("sphere_radius_factor", &factor);
-    vtkSMPropertyHelper(representation).Set("Point Gaussian");
-    SetInts(repr, { { "ShaderPreset", 1 /* Sphere */ }, { "ScaleByArray", 1 },
-                    { "UseScaleFunction", 0 } });
-    if (vtkSMProperty* p = repr->GetProperty("SetScaleArray"))
-    {
-      vtkSMPropertyHelper(p).SetInputArrayToProcess(vtkDataObject::FIELD_ASSOCIATION_POINTS, scaleArray);
-    }
-    if (vtkSMProperty* p = repr->GetProperty("GaussianRadius"))
-    {
-      vtkSMPropertyHelper(p).Set(factor);
-      p->Modified(); // not replaced by the bounds domain's default
-    }
-    double opacity = 1;
-    vtkSMProperty* p = repr->GetProperty("Opacity");
-    if (xml->GetScalarAttribute("opacity", &opacity) && p)
-    {
-      vtkSMPropertyHelper(p).Set(opacity);
-    }
-    return true;
+    return false;
   }
-  return false;
+  SetInts(repr, { { "ShaderPreset", 1 /* Sphere */ }, { "ScaleByArray", 1 },
+                  { "UseScaleFunction", 0 } });
+  if (vtkSMProperty* p = repr->GetProperty("SetScaleArray"))
+  {
+    vtkSMPropertyHelper(p).SetInputArrayToProcess(vtkDataObject::FIELD_ASSOCIATION_POINTS, scaleArray);
+  }
+  double factor = 1;
+  xml->GetScalarAttribute("sphere_radius_factor", &factor);
+  SetSize(repr, "GaussianRadius", factor);
+  double opacity = 1;
+  vtkSMProperty* p = repr->GetProperty("Opacity");
+  if (xml->GetScalarAttribute("opacity", &opacity) && p)
+  {
+    vtkSMPropertyHelper(p).Set(opacity);
+  }
+  return true;
 }
 
 // text_justification: text lines justified (0 left, 1 centred, 2 right).
