@@ -51,18 +51,14 @@ def qch_files(path):
 
 
 def plugin_proxies(xml_dir):
-    found = []
-    for fname in sorted(os.listdir(xml_dir)):
-        if not fname.endswith(".xml"):
-            continue
-        root = ET.parse(os.path.join(xml_dir, fname)).getroot()
-        for group in root.iter("ProxyGroup"):
-            if group.get("name") in ("sources", "filters"):
-                for proxy in group:
-                    if proxy.get("name"):
-                        found.append((group.get("name"), proxy.get("name"),
-                                      proxy.get("label", proxy.get("name"))))
-    return found
+    """(group, name, label) of the sources and filters, found by XPath rather than
+    by the help generator's own walk, so that a proxy it skips shows here."""
+    xml_files = sorted(f for f in os.listdir(xml_dir) if f.endswith(".xml"))
+    return [(group, proxy.get("name"), proxy.get("label", proxy.get("name")))
+            for fname in xml_files
+            for group in ("sources", "filters")
+            for proxy in ET.parse(os.path.join(xml_dir, fname)).getroot().iterfind(
+                f".//ProxyGroup[@name='{group}']/*[@name]")]
 
 
 def names_of(obj):
