@@ -19,17 +19,7 @@ namespace flowrecon
 namespace
 {
 
-/// A Delaunay triangle (sorted vertex ids: input or triangulation ones) and
-/// the node whose walk crosses it.
-struct Claim
-{
-  std::array<Id, 3> Triangle;
-  Id Node;
-  bool operator<(const Claim& o) const
-  {
-    return this->Triangle != o.Triangle ? this->Triangle < o.Triangle : this->Node < o.Node;
-  }
-};
+using Claim = CompactClaim;
 
 template <std::size_t N>
 std::array<Id, N> InputSimplex(const Retriangulation& re, const std::array<Id, N>& vertices)
@@ -57,10 +47,10 @@ bool SameSimplex(const Node& node, const std::array<Id, N>& simplex)
   return N == 4 || node.Simplex[N] < 0;
 }
 
-/// The triangles the walks of `patches` (index-2 node ids) cross, each kept
-/// once; shared and revisited ones counted.
-void AddPatchTriangles(const Retriangulation& re, const std::vector<Node>& nodes,
-  const std::vector<Id>& patches, const Progress& progress, CompactComplex& out)
+/// The claims of the walks of `patches` (index-2 node ids): each one's facet
+/// and every triangle its walk crosses, sorted.
+void WalkPatches(const Retriangulation& re, const std::vector<Node>& nodes,
+  const std::vector<Id>& patches, const Progress& progress, CompactPieces& pieces)
 {
   const CriticalSimplices& cs = re.Critical();
   const Id facets = static_cast<Id>(cs.Facets.size());
@@ -95,42 +85,65 @@ void AddPatchTriangles(const Retriangulation& re, const std::vector<Node>& nodes
         }
       }
     });
-  std::vector<Claim> all;
   for (std::size_t k = 0; k < patches.size(); ++k)
   {
     if (foreign[k])
     {
       throw InputError(Retriangulation::Mismatch());
     }
-    out.ExactFallbacks += fallbacks[k];
-    all.insert(all.end(), claims[k].begin(), claims[k].end());
+    if (fallbacks[k] > 0)
+    {
+      pieces.ExactFallbacks.emplace_back(patches[k], fallbacks[k]);
+    }
+    pieces.Claims.insert(pieces.Claims.end(), claims[k].begin(), claims[k].end());
   }
-  std::sort(all.begin(), all.end());
+  std::sort(pieces.Claims.begin(), pieces.Claims.end());
+}
+
+/// The triangles the walks of the selected patches cross, each kept once (for
+/// the least node id); shared and revisited ones counted.
+void SelectTriangles(
+  const CompactPieces& pieces, const std::vector<char>& isSelected, CompactComplex& out)
+{
+  for (const auto& f : pieces.ExactFallbacks)
+  {
+    out.ExactFallbacks += isSelected[f.first] ? f.second : 0;
+  }
+  const std::vector<Claim>& all = pieces.Claims;
   for (std::size_t k = 0; k < all.size();)
   {
-    std::size_t end = k + 1;
+    std::size_t end = k;
+    Id first = -1, last = -1;
     bool revisited = false;
-    int claims = 1;
+    int claims = 0;
     for (; end < all.size() && all[end].Triangle == all[k].Triangle; ++end)
     {
-      const bool same = all[end].Node == all[end - 1].Node;
-      revisited = revisited || same;
-      claims += same ? 0 : 1;
+      const Id node = all[end].Node;
+      if (!isSelected[node])
+      {
+        continue;
+      }
+      revisited = revisited || node == last;
+      claims += node == last ? 0 : 1;
+      first = first < 0 ? node : first;
+      last = node;
     }
-    out.SharedTriangles += claims > 1 ? 1 : 0;
-    out.RevisitedTriangles += revisited ? 1 : 0;
-    out.Triangles.push_back(all[k].Triangle);
-    out.TriangleNode.push_back(all[k].Node);
-    out.TriangleClaims.push_back(claims);
+    if (first >= 0)
+    {
+      out.SharedTriangles += claims > 1 ? 1 : 0;
+      out.RevisitedTriangles += revisited ? 1 : 0;
+      out.Triangles.push_back(all[k].Triangle);
+      out.TriangleNode.push_back(first);
+      out.TriangleClaims.push_back(claims);
+    }
     k = end;
   }
 }
 
-/// The Delaunay cells whose Voronoi vertex flows to one of `maxima` (index-3
-/// node ids, sorted); `cellNode` (per cell) receives their maximum.
-void AddConeTetrahedra(const Retriangulation& re, const std::vector<Node>& nodes,
-  const std::vector<Id>& maxima, const Progress& progress, CompactComplex& out,
-  std::vector<Id>& cellNode)
+/// The maximum among `maxima` (index-3 node ids, sorted) that each Delaunay
+/// cell's Voronoi vertex flows to, -1 for none.
+void FlowCells(const Retriangulation& re, const std::vector<Node>& nodes,
+  const std::vector<Id>& maxima, const Progress& progress, CompactPieces& pieces)
 {
   const CriticalSimplices& cs = re.Critical();
   const Triangulation& tri = re.Tri();
@@ -150,8 +163,8 @@ void AddConeTetrahedra(const Retriangulation& re, const std::vector<Node>& nodes
   {
     maximumOfCell[cs.Cells[i].Cell] = static_cast<std::int32_t>(re.Base3() + static_cast<Id>(i));
   }
-  // d_P grows along the flow: a flow line that passes the largest selected
-  // value cannot end at a selected maximum, so it is stopped there (on surface
+  // d_P grows along the flow: a flow line that passes the largest value among
+  // `maxima` cannot end at one of them, so it is stopped there (on surface
   // samples most lines run on to the medial axis). The margin covers rounding
   // and the perturbation of degenerate clouds (1e-6 of the diagonal).
   double largest = 0;
@@ -162,21 +175,34 @@ void AddConeTetrahedra(const Retriangulation& re, const std::vector<Node>& nodes
   const double limit = 1.01 * std::ldexp(largest, -re.Prepared().ScaleExponent) +
     1e-5 * re.Prepared().Diagonal;
   SuccessorForest forest(tri, maximumOfCell, infinity, 0, false, false);
+  std::vector<Id>& cellMaximum = pieces.CellMaximum;
+  cellMaximum.assign(static_cast<std::size_t>(tri.NumberOfCells()), -1);
   ParallelSlices(tri.NumberOfCells(), Id(1) << 16, progress, 0.6, 0.9, "compact cells",
     [&](Id first, Id last) {
       for (Id c = first; c < last; ++c)
       {
         double bound = 0;
         const Id root = forest.RootBelow(c, limit * limit, &bound);
-        cellNode[c] = root >= 0 && std::binary_search(maxima.begin(), maxima.end(), root) ? root : -1;
+        cellMaximum[c] = root >= 0 && std::binary_search(maxima.begin(), maxima.end(), root) ? root : -1;
       }
     });
+}
+
+/// The Delaunay cells that flow to a selected maximum; `cellNode` (per cell)
+/// receives their maximum, -1 for the others.
+void SelectTetrahedra(const Retriangulation& re, const CompactPieces& pieces,
+  const std::vector<char>& isSelected, CompactComplex& out, std::vector<Id>& cellNode)
+{
+  const Triangulation& tri = re.Tri();
+  cellNode.assign(static_cast<std::size_t>(tri.NumberOfCells()), -1);
   for (Id c = 0; c < tri.NumberOfCells(); ++c)
   {
-    if (cellNode[c] >= 0)
+    const Id m = pieces.CellMaximum[c];
+    if (m >= 0 && isSelected[m])
     {
+      cellNode[c] = m;
       out.Tetrahedra.push_back(InputSimplex<4>(re, tri.SortedVertices(tri.Cell(c))));
-      out.TetrahedronNode.push_back(cellNode[c]);
+      out.TetrahedronNode.push_back(m);
     }
   }
 }
@@ -429,6 +455,27 @@ void AddEdgesAndSamples(
   }
 }
 
+/// `selected` sorted, without repeats or the maximum at infinity; throws
+/// InputError for an id out of range.
+std::vector<Id> SortedNodes(const std::vector<Node>& nodes, const std::vector<Id>& selected)
+{
+  std::vector<Id> sorted;
+  for (const Id node : selected)
+  {
+    if (node < 0 || node >= static_cast<Id>(nodes.size()))
+    {
+      throw InputError("compact reconstruction: node " + std::to_string(node) + " out of range");
+    }
+    if (!nodes[node].IsInfinity())
+    {
+      sorted.push_back(node);
+    }
+  }
+  std::sort(sorted.begin(), sorted.end());
+  sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
+  return sorted;
+}
+
 template <class T>
 void SortUnique(std::vector<T>& v)
 {
@@ -491,23 +538,12 @@ void SetBettiNumbers(CompactComplex& out)
 
 } // namespace
 
-CompactComplex CompactReconstruction(const Retriangulation& re, const std::vector<Node>& nodes,
-  const std::vector<Id>& selected, const Progress& progress)
+CompactPieces PrepareCompact(const Retriangulation& re, const std::vector<Node>& nodes,
+  const std::vector<Id>& candidates, const Progress& progress)
 {
-  std::vector<Id> sorted(selected);
-  std::sort(sorted.begin(), sorted.end());
-  sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
   std::vector<Id> patches, maxima;
-  for (const Id node : sorted)
+  for (const Id node : SortedNodes(nodes, candidates))
   {
-    if (node < 0 || node >= static_cast<Id>(nodes.size()))
-    {
-      throw InputError("compact reconstruction: node " + std::to_string(node) + " out of range");
-    }
-    if (nodes[node].IsInfinity())
-    {
-      continue;
-    }
     if (nodes[node].Index == 2)
     {
       patches.push_back(node);
@@ -517,18 +553,46 @@ CompactComplex CompactReconstruction(const Retriangulation& re, const std::vecto
       maxima.push_back(node);
     }
   }
-  CompactComplex out;
-  AddPatchTriangles(re, nodes, patches, progress, out);
-  std::vector<Id> cellNode;
+  CompactPieces pieces;
+  WalkPatches(re, nodes, patches, progress, pieces);
   if (!maxima.empty())
   {
-    cellNode.assign(static_cast<std::size_t>(re.Tri().NumberOfCells()), -1);
-    AddConeTetrahedra(re, nodes, maxima, progress, out, cellNode);
+    FlowCells(re, nodes, maxima, progress, pieces);
   }
-  progress(0.9, "compact voids");
+  progress(1.0, "compact pieces");
+  return pieces;
+}
+
+CompactComplex SelectCompact(const Retriangulation& re, const std::vector<Node>& nodes,
+  const CompactPieces& pieces, const std::vector<Id>& selected)
+{
+  const std::vector<Id> sorted = SortedNodes(nodes, selected);
+  std::vector<char> isSelected(nodes.size(), 0);
+  bool maximum = false;
+  for (const Id node : sorted)
+  {
+    isSelected[node] = 1;
+    maximum = maximum || nodes[node].Index == 3;
+  }
+  CompactComplex out;
+  SelectTriangles(pieces, isSelected, out);
+  std::vector<Id> cellNode; // empty without a selected maximum
+  if (maximum && !pieces.CellMaximum.empty())
+  {
+    SelectTetrahedra(re, pieces, isSelected, out, cellNode);
+  }
   FillVoidsWithoutMaximum(re, nodes, cellNode, out);
   AddEdgesAndSamples(nodes, sorted, out);
   SetBettiNumbers(out);
+  return out;
+}
+
+CompactComplex CompactReconstruction(const Retriangulation& re, const std::vector<Node>& nodes,
+  const std::vector<Id>& selected, const Progress& progress)
+{
+  const CompactPieces pieces = PrepareCompact(re, nodes, selected, progress.Range(0, 0.9));
+  progress(0.9, "compact voids");
+  CompactComplex out = SelectCompact(re, nodes, pieces, selected);
   progress(1.0, "compact output");
   return out;
 }

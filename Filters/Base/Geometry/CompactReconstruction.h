@@ -61,6 +61,44 @@ struct CompactComplex
   }
 };
 
+/// A Delaunay triangle (input ids, sorted) crossed by the walk of an index-2 node.
+struct CompactClaim
+{
+  std::array<Id, 3> Triangle;
+  Id Node;
+  bool operator<(const CompactClaim& o) const
+  {
+    return this->Triangle != o.Triangle ? this->Triangle < o.Triangle : this->Node < o.Node;
+  }
+};
+
+/// What the compact complex of any subset of some candidate nodes is made of,
+/// computed once: the walks of the index-2 candidates and the candidate
+/// maximum each Delaunay cell flows to. A filter that shows the compact complex
+/// for each t_r keeps them, so that a new t_r walks nothing again.
+struct CompactPieces
+{
+  /// Every index-2 candidate's facet and the triangles its walk crosses, one
+  /// claim per crossing, sorted (by triangle, then node).
+  std::vector<CompactClaim> Claims;
+  /// Per Delaunay cell, the candidate maximum it flows to, -1 for none; empty
+  /// without candidate maxima.
+  std::vector<Id> CellMaximum;
+  /// Walks redone in exact arithmetic, per index-2 candidate that needed any.
+  std::vector<std::pair<Id, Id>> ExactFallbacks;
+};
+
+/// The pieces of the nodes `candidates` (as `selected` below); progress from
+/// 0 to 1 of `progress`.
+CompactPieces PrepareCompact(const Retriangulation& re, const std::vector<Node>& nodes,
+  const std::vector<Id>& candidates, const Progress& progress = Progress());
+
+/// The compact complex of `selected`, which must be among the candidates
+/// `pieces` were prepared for: the same complex as CompactReconstruction's, in
+/// time linear in the pieces and the triangulation.
+CompactComplex SelectCompact(const Retriangulation& re, const std::vector<Node>& nodes,
+  const CompactPieces& pieces, const std::vector<Id>& selected);
+
 /// The compact complex of the nodes `selected` (ids of `nodes`, any index;
 /// the maximum at infinity is ignored). `re` is the triangulation of the
 /// points the complex of `nodes` was built from (Retriangulation.h); only the
