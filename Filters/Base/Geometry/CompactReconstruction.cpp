@@ -20,6 +20,27 @@ namespace
 {
 
 using Claim = CompactClaim;
+using Neighbourhood = std::vector<std::array<std::int32_t, 4>>;
+
+/// Each Delaunay cell's neighbours (CompactPieces::Neighbours).
+Neighbourhood Neighbours(const Triangulation& tri)
+{
+  Neighbourhood neighbours(static_cast<std::size_t>(tri.NumberOfCells()));
+  ParallelSlices(tri.NumberOfCells(), Id(1) << 16, Progress(), 0.0, 0.0, "compact cells",
+    [&](Id first, Id last) {
+      for (Id c = first; c < last; ++c)
+      {
+        const CellHandle cell = tri.Cell(c);
+        for (int k = 0; k < 4; ++k)
+        {
+          const CellHandle next = cell->neighbor(k);
+          neighbours[c][k] =
+            tri.Dt().is_infinite(next) ? -1 : static_cast<std::int32_t>(tri.CellId(next));
+        }
+      }
+    });
+  return neighbours;
+}
 
 template <std::size_t N>
 std::array<Id, N> InputSimplex(const Retriangulation& re, const std::array<Id, N>& vertices)
@@ -267,8 +288,8 @@ Walls FindWalls(const Retriangulation& re, const CompactComplex& out)
 /// node of largest value.
 bool SearchRegion(const Retriangulation& re, const std::vector<Node>& nodes,
   const std::vector<Id>& cellNode, const Walls& walls, const std::vector<char>& isMaximum,
-  Id start, std::int32_t search, std::vector<std::int32_t>& mark, std::vector<Id>& component,
-  Id& wall, bool& maximum)
+  const Neighbourhood& neighbours, Id start, std::int32_t search, std::vector<std::int32_t>& mark,
+  std::vector<Id>& component, Id& wall, bool& maximum)
 {
   const Triangulation& tri = re.Tri();
   auto meet = [&](Id node) {
@@ -287,14 +308,13 @@ bool SearchRegion(const Retriangulation& re, const std::vector<Node>& nodes,
     const Id c = stack.back();
     stack.pop_back();
     component.push_back(c);
-    const CellHandle cell = tri.Cell(c);
     maximum = maximum || isMaximum[c] != 0;
     bool open = false;
     for (int k = 0; k < 4 && !open; ++k)
     {
-      const CellHandle next = cell->neighbor(k);
       if (walls.Facets[c] & (1u << k))
       {
+        const CellHandle cell = tri.Cell(c);
         std::array<Id, 3> t;
         for (int j = 0, m = 0; j < 4; ++j)
         {
@@ -307,8 +327,8 @@ bool SearchRegion(const Retriangulation& re, const std::vector<Node>& nodes,
         meet(std::lower_bound(walls.Triangles.begin(), walls.Triangles.end(), Claim{ t, -1 })->Node);
         continue;
       }
-      open = tri.Dt().is_infinite(next);
-      const Id n = open ? -1 : tri.CellId(next);
+      const Id n = neighbours[c][k];
+      open = n < 0;
       if (open || (!cellNode.empty() && cellNode[n] >= 0))
       {
         if (!open)
@@ -343,7 +363,7 @@ bool SearchRegion(const Retriangulation& re, const std::vector<Node>& nodes,
 /// value. Only regions next to a wall are searched, each until it is seen to
 /// be unbounded; the bounded ones with a maximum are counted in out.Voids.
 void FillVoidsWithoutMaximum(const Retriangulation& re, const std::vector<Node>& nodes,
-  const std::vector<Id>& cellNode, CompactComplex& out)
+  const std::vector<Id>& cellNode, const Neighbourhood& neighbours, CompactComplex& out)
 {
   const Triangulation& tri = re.Tri();
   const Walls walls = FindWalls(re, out);
@@ -357,10 +377,10 @@ void FillVoidsWithoutMaximum(const Retriangulation& re, const std::vector<Node>&
     }
     for (int k = 0; inside && k < 4; ++k)
     {
-      const CellHandle next = tri.Cell(c)->neighbor(k);
-      if (!tri.Dt().is_infinite(next) && cellNode[tri.CellId(next)] < 0)
+      const Id next = neighbours[c][k];
+      if (next >= 0 && cellNode[next] < 0)
       {
-        starts.push_back(tri.CellId(next));
+        starts.push_back(next);
       }
     }
   }
@@ -380,8 +400,8 @@ void FillVoidsWithoutMaximum(const Retriangulation& re, const std::vector<Node>&
     }
     Id wall = -1;
     bool maximum = false;
-    if (!SearchRegion(re, nodes, cellNode, walls, isMaximum, start, ++search, mark, component, wall,
-          maximum) || wall < 0)
+    if (!SearchRegion(re, nodes, cellNode, walls, isMaximum, neighbours, start, ++search, mark,
+          component, wall, maximum) || wall < 0)
     {
       continue;
     }
@@ -554,6 +574,7 @@ CompactPieces PrepareCompact(const Retriangulation& re, const std::vector<Node>&
     }
   }
   CompactPieces pieces;
+  pieces.Neighbours = Neighbours(re.Tri());
   WalkPatches(re, nodes, patches, progress, pieces);
   if (!maxima.empty())
   {
@@ -581,7 +602,7 @@ CompactComplex SelectCompact(const Retriangulation& re, const std::vector<Node>&
   {
     SelectTetrahedra(re, pieces, isSelected, out, cellNode);
   }
-  FillVoidsWithoutMaximum(re, nodes, cellNode, out);
+  FillVoidsWithoutMaximum(re, nodes, cellNode, pieces.Neighbours, out);
   AddEdgesAndSamples(nodes, sorted, out);
   SetBettiNumbers(out);
   return out;

@@ -17,6 +17,7 @@
 #include "Progress.h"
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
 namespace flowrecon
@@ -86,6 +87,10 @@ struct CompactPieces
   std::vector<Id> CellMaximum;
   /// Walks redone in exact arithmetic, per index-2 candidate that needed any.
   std::vector<std::pair<Id, Id>> ExactFallbacks;
+  /// Per Delaunay cell, its four neighbours' ids (-1: infinite), opposite its
+  /// vertices: the search for voids follows millions of them, which CGAL's
+  /// cells, scattered in memory, make several times slower.
+  std::vector<std::array<std::int32_t, 4>> Neighbours;
 };
 
 /// The pieces of the nodes `candidates` (as `selected` below); progress from
