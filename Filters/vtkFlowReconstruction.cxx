@@ -380,14 +380,6 @@ void vtkFlowReconstruction::FillOutputs(vtkMultiBlockDataSet* input, double tmax
   flowrecon::MarkProfile(profile, t);
   flowrecon::ProfileJumpsToVTK(fc, c.Run, static_cast<std::size_t>(this->NumberOfJumps), profile);
   flowrecon::GridBelow(c.Full, t, flowrecon::EdgeMultiplicities(fc.Nodes, fc.Arcs, c.Run, t), grid);
-  if (this->Geometry == GEOMETRY_COMPACT && c.Compact)
-  {
-    std::vector<double> thresholds;
-    const flowrecon::CompactComplex compact = c.Compact->At(t, thresholds);
-    flowrecon::CompactCellsToVTK(compact,
-      std::vector<flowrecon::Point3>(fc.Points.begin(), fc.Points.begin() + fc.NumberOfInputPoints),
-      fc.Nodes, thresholds, grid);
-  }
   flowrecon::ReleaseFreedMemory(); // the previous output's arrays, replaced just now
   std::string why; // no Betti numbers
   if (!this->ComputeTopology)
@@ -419,6 +411,16 @@ void vtkFlowReconstruction::FillOutputs(vtkMultiBlockDataSet* input, double tmax
   }
   flowrecon::TopologyTextToVTK(
     flowrecon::TopologyLine(grid, topology, undersampling, t, tmax, why), grid, text);
+  // The compact cells in place of the exact ones, once the field data is
+  // written (its counts go after the arrays the states' spreadsheets show).
+  if (this->Geometry == GEOMETRY_COMPACT && c.Compact)
+  {
+    std::vector<double> thresholds;
+    const flowrecon::CompactComplex compact = c.Compact->At(t, thresholds);
+    flowrecon::CompactCellsToVTK(compact,
+      std::vector<flowrecon::Point3>(fc.Points.begin(), fc.Points.begin() + fc.NumberOfInputPoints),
+      fc.Nodes, thresholds, grid);
+  }
   // What ParaView colours by in a render view: the reconstruction by Index (the
   // array Flow Complex's critical points and stable manifolds are coloured by),
   // the under-sampling points by nothing, so that the view has one colour legend.

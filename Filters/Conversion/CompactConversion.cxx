@@ -80,15 +80,6 @@ void CompactCellsToVTK(const CompactComplex& compact, const std::vector<Point3>&
     grid->GetCellData()->AddArray(a);
   }
   grid->GetCellData()->SetActiveScalars(names::Index);
-  const std::pair<const char*, Id> counts[3] = { { names::SharedTriangles, compact.SharedTriangles },
-    { names::RevisitedTriangles, compact.RevisitedTriangles },
-    { names::FilledVoids, compact.FilledVoids } };
-  for (const auto& count : counts)
-  {
-    auto a = NamedArray<vtkIdTypeArray>(count.first);
-    a->InsertNextValue(static_cast<vtkIdType>(count.second));
-    grid->GetFieldData()->AddArray(a);
-  }
 }
 
 void CompactToVTK(const CompactComplex& compact, const std::vector<Point3>& samples,
@@ -103,6 +94,15 @@ void CompactToVTK(const CompactComplex& compact, const std::vector<Point3>& samp
   grid->GetFieldData()->Initialize();
   grid->GetFieldData()->AddArray(field);
   CompactCellsToVTK(compact, samples, nodes, nodeThreshold, grid);
+  const std::pair<const char*, Id> counts[3] = { { names::SharedTriangles, compact.SharedTriangles },
+    { names::RevisitedTriangles, compact.RevisitedTriangles },
+    { names::FilledVoids, compact.FilledVoids } };
+  for (const auto& count : counts)
+  {
+    auto a = NamedArray<vtkIdTypeArray>(count.first);
+    a->InsertNextValue(static_cast<vtkIdType>(count.second));
+    grid->GetFieldData()->AddArray(a);
+  }
 }
 
 } // namespace flowrecon
