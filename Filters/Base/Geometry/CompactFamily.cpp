@@ -53,7 +53,7 @@ CompactComplex CompactFamily::At(double tr, std::vector<double>& nodeThreshold) 
   {
     nodeThreshold[node] = this->Run.Nodes[this->Carriers[node]].Threshold;
   }
-  return SelectCompact(*this->Re, this->FC.Nodes, this->Pieces, selected);
+  return SelectCompact(*this->Re, this->FC.Nodes, this->Pieces, selected, false);
 }
 
 } // namespace flowrecon

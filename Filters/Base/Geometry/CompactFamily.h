@@ -39,7 +39,8 @@ public:
 
   /// The compact complex of the reconstruction at `tr` <= MaximumThreshold();
   /// `nodeThreshold` (per node) receives the Threshold of each node's carrier,
-  /// NaN for the nodes outside.
+  /// NaN for the nodes outside. Its Betti are left zero: they are the
+  /// reconstruction's, which a caller showing it computes anyway.
   CompactComplex At(double tr, std::vector<double>& nodeThreshold) const;
 
 private:

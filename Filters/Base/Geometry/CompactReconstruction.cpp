@@ -68,6 +68,29 @@ bool SameSimplex(const Node& node, const std::array<Id, N>& simplex)
   return N == 4 || node.Simplex[N] < 0;
 }
 
+/// `claim` with the cells on the two sides of its triangle `t` (triangulation ids).
+Claim Sides(const Triangulation& tri, const std::array<Id, 3>& t, Claim claim)
+{
+  CellHandle cell;
+  int opposite = 0;
+  if (!tri.Facet(t[0], t[1], t[2], cell, opposite))
+  {
+    throw std::logic_error("compact reconstruction: a triangle that is not a Delaunay facet");
+  }
+  for (int side = 0; side < 2; ++side)
+  {
+    if (!tri.Dt().is_infinite(cell))
+    {
+      claim.Cells[side] = static_cast<std::int32_t>(tri.CellId(cell));
+      claim.Facets[side] = static_cast<std::int8_t>(opposite);
+    }
+    const CellHandle other = cell->neighbor(opposite);
+    opposite = other->index(cell);
+    cell = other;
+  }
+  return claim;
+}
+
 /// The claims of the walks of `patches` (index-2 node ids): each one's facet
 /// and every triangle its walk crosses, sorted.
 void WalkPatches(const Retriangulation& re, const std::vector<Node>& nodes,
@@ -99,10 +122,11 @@ void WalkPatches(const Retriangulation& re, const std::vector<Node>& nodes,
         }
         const Patch patch = ComputeStableManifold(
           re.Tri(), cs, static_cast<std::size_t>(f), false, fallbacks[k], false, true);
-        claims[k].push_back({ own, node });
+        claims[k].push_back(
+          Sides(re.Tri(), { { facet.Vertices[0], facet.Vertices[1], facet.Vertices[2] } }, { own, node }));
         for (const std::array<Id, 3>& t : patch.Walked)
         {
-          claims[k].push_back({ InputSimplex<3>(re, t), node });
+          claims[k].push_back(Sides(re.Tri(), t, { InputSimplex<3>(re, t), node }));
         }
       }
     });
@@ -123,8 +147,8 @@ void WalkPatches(const Retriangulation& re, const std::vector<Node>& nodes,
 
 /// The triangles the walks of the selected patches cross, each kept once (for
 /// the least node id); shared and revisited ones counted.
-void SelectTriangles(
-  const CompactPieces& pieces, const std::vector<char>& isSelected, CompactComplex& out)
+void SelectTriangles(const CompactPieces& pieces, const std::vector<char>& isSelected,
+  CompactComplex& out, std::vector<const Claim*>& written)
 {
   for (const auto& f : pieces.ExactFallbacks)
   {
@@ -156,6 +180,7 @@ void SelectTriangles(
       out.Triangles.push_back(all[k].Triangle);
       out.TriangleNode.push_back(first);
       out.TriangleClaims.push_back(claims);
+      written.push_back(&all[k]);
     }
     k = end;
   }
@@ -228,54 +253,34 @@ void SelectTetrahedra(const Retriangulation& re, const CompactPieces& pieces,
   }
 }
 
-/// The walls of the complement's regions: the compact triangles (triangulation
-/// ids, sorted, with their node) and, per cell, a bit per facet that is one
-/// (the search below looks at millions of facets).
+/// The walls of the complement's regions: per cell, a bit per facet that is
+/// a compact triangle, and the node of each such (cell, facet), sorted by
+/// cell * 4 + facet (the search below looks at millions of facets).
 struct Walls
 {
-  std::vector<Claim> Triangles;
+  std::vector<std::pair<Id, Id>> Sides;
   std::vector<std::uint8_t> Facets;
 };
 
-Walls FindWalls(const Retriangulation& re, const CompactComplex& out)
+Walls FindWalls(const Triangulation& tri, const CompactComplex& out,
+  const std::vector<const Claim*>& written)
 {
-  const Triangulation& tri = re.Tri();
-  const std::vector<Id>& inputId = re.Prepared().InputId;
-  std::vector<Id> vertexOf(
-    inputId.empty() ? 0 : static_cast<std::size_t>(*std::max_element(inputId.begin(), inputId.end()) + 1), -1);
-  for (Id v = 0; v < static_cast<Id>(inputId.size()); ++v)
-  {
-    vertexOf[inputId[v]] = v;
-  }
   Walls walls;
-  for (std::size_t k = 0; k < out.Triangles.size(); ++k)
-  {
-    std::array<Id, 3> t{ { vertexOf[out.Triangles[k][0]], vertexOf[out.Triangles[k][1]],
-      vertexOf[out.Triangles[k][2]] } };
-    std::sort(t.begin(), t.end());
-    walls.Triangles.push_back({ t, out.TriangleNode[k] });
-  }
-  std::sort(walls.Triangles.begin(), walls.Triangles.end());
   walls.Facets.assign(static_cast<std::size_t>(tri.NumberOfCells()), 0);
-  for (const Claim& w : walls.Triangles)
+  for (std::size_t k = 0; k < written.size(); ++k)
   {
-    CellHandle cell;
-    int opposite = 0;
-    if (!tri.Facet(w.Triangle[0], w.Triangle[1], w.Triangle[2], cell, opposite))
-    {
-      throw std::logic_error("compact reconstruction: a triangle that is not a Delaunay facet");
-    }
     for (int side = 0; side < 2; ++side)
     {
-      if (!tri.Dt().is_infinite(cell))
+      const Id cell = written[k]->Cells[side];
+      if (cell >= 0)
       {
-        walls.Facets[tri.CellId(cell)] |= static_cast<std::uint8_t>(1u << opposite);
+        const int facet = written[k]->Facets[side];
+        walls.Facets[cell] |= static_cast<std::uint8_t>(1u << facet);
+        walls.Sides.emplace_back(4 * cell + facet, out.TriangleNode[k]);
       }
-      const CellHandle other = cell->neighbor(opposite);
-      opposite = other->index(cell);
-      cell = other;
     }
   }
+  std::sort(walls.Sides.begin(), walls.Sides.end());
   return walls;
 }
 
@@ -314,17 +319,8 @@ bool SearchRegion(const Retriangulation& re, const std::vector<Node>& nodes,
     {
       if (walls.Facets[c] & (1u << k))
       {
-        const CellHandle cell = tri.Cell(c);
-        std::array<Id, 3> t;
-        for (int j = 0, m = 0; j < 4; ++j)
-        {
-          if (j != k)
-          {
-            t[m++] = cell->vertex(j)->info();
-          }
-        }
-        std::sort(t.begin(), t.end());
-        meet(std::lower_bound(walls.Triangles.begin(), walls.Triangles.end(), Claim{ t, -1 })->Node);
+        const std::pair<Id, Id> key(4 * c + k, -1);
+        meet(std::lower_bound(walls.Sides.begin(), walls.Sides.end(), key)->second);
         continue;
       }
       const Id n = neighbours[c][k];
@@ -363,10 +359,11 @@ bool SearchRegion(const Retriangulation& re, const std::vector<Node>& nodes,
 /// value. Only regions next to a wall are searched, each until it is seen to
 /// be unbounded; the bounded ones with a maximum are counted in out.Voids.
 void FillVoidsWithoutMaximum(const Retriangulation& re, const std::vector<Node>& nodes,
-  const std::vector<Id>& cellNode, const Neighbourhood& neighbours, CompactComplex& out)
+  const std::vector<Id>& cellNode, const Neighbourhood& neighbours,
+  const std::vector<const Claim*>& written, CompactComplex& out)
 {
   const Triangulation& tri = re.Tri();
-  const Walls walls = FindWalls(re, out);
+  const Walls walls = FindWalls(tri, out, written);
   std::vector<Id> starts;
   for (Id c = 0; c < tri.NumberOfCells(); ++c)
   {
@@ -585,7 +582,7 @@ CompactPieces PrepareCompact(const Retriangulation& re, const std::vector<Node>&
 }
 
 CompactComplex SelectCompact(const Retriangulation& re, const std::vector<Node>& nodes,
-  const CompactPieces& pieces, const std::vector<Id>& selected)
+  const CompactPieces& pieces, const std::vector<Id>& selected, bool betti)
 {
   const std::vector<Id> sorted = SortedNodes(nodes, selected);
   std::vector<char> isSelected(nodes.size(), 0);
@@ -596,15 +593,19 @@ CompactComplex SelectCompact(const Retriangulation& re, const std::vector<Node>&
     maximum = maximum || nodes[node].Index == 3;
   }
   CompactComplex out;
-  SelectTriangles(pieces, isSelected, out);
+  std::vector<const Claim*> written; // the claim of each triangle
+  SelectTriangles(pieces, isSelected, out, written);
   std::vector<Id> cellNode; // empty without a selected maximum
   if (maximum && !pieces.CellMaximum.empty())
   {
     SelectTetrahedra(re, pieces, isSelected, out, cellNode);
   }
-  FillVoidsWithoutMaximum(re, nodes, cellNode, pieces.Neighbours, out);
+  FillVoidsWithoutMaximum(re, nodes, cellNode, pieces.Neighbours, written, out);
   AddEdgesAndSamples(nodes, sorted, out);
-  SetBettiNumbers(out);
+  if (betti)
+  {
+    SetBettiNumbers(out);
+  }
   return out;
 }
 

@@ -67,6 +67,10 @@ struct CompactClaim
 {
   std::array<Id, 3> Triangle;
   Id Node;
+  /// The finite Delaunay cells on its two sides (-1: infinite) and the
+  /// triangle's index in each: where the search for voids meets it as a wall.
+  std::array<std::int32_t, 2> Cells{ { -1, -1 } };
+  std::array<std::int8_t, 2> Facets{ { 0, 0 } };
   bool operator<(const CompactClaim& o) const
   {
     return this->Triangle != o.Triangle ? this->Triangle < o.Triangle : this->Node < o.Node;
@@ -101,8 +105,10 @@ CompactPieces PrepareCompact(const Retriangulation& re, const std::vector<Node>&
 /// The compact complex of `selected`, which must be among the candidates
 /// `pieces` were prepared for: the same complex as CompactReconstruction's, in
 /// time linear in the pieces and the triangulation.
+/// Without `betti`, compact.Betti is left zero (a caller that has the exact
+/// reconstruction's Betti numbers does not need them again).
 CompactComplex SelectCompact(const Retriangulation& re, const std::vector<Node>& nodes,
-  const CompactPieces& pieces, const std::vector<Id>& selected);
+  const CompactPieces& pieces, const std::vector<Id>& selected, bool betti = true);
 
 /// The compact complex of the nodes `selected` (ids of `nodes`, any index;
 /// the maximum at infinity is ignored). `re` is the triangulation of the
