@@ -99,6 +99,7 @@ void WalkPatches(const Retriangulation& re, const std::vector<Node>& nodes,
   const CriticalSimplices& cs = re.Critical();
   const Id facets = static_cast<Id>(cs.Facets.size());
   std::vector<std::vector<Claim>> claims(patches.size());
+  std::vector<std::vector<std::array<Id, 3>>> walked(patches.size()); // triangulation ids
   std::vector<Id> fallbacks(patches.size(), 0);
   std::vector<char> foreign(patches.size(), 0);
   ParallelSlices(static_cast<Id>(patches.size()), Id(1) << 14, progress, 0.0, 0.6,
@@ -122,11 +123,12 @@ void WalkPatches(const Retriangulation& re, const std::vector<Node>& nodes,
         }
         const Patch patch = ComputeStableManifold(
           re.Tri(), cs, static_cast<std::size_t>(f), false, fallbacks[k], false, true);
-        claims[k].push_back(
-          Sides(re.Tri(), { { facet.Vertices[0], facet.Vertices[1], facet.Vertices[2] } }, { own, node }));
+        claims[k].push_back({ own, node });
+        walked[k].push_back({ { facet.Vertices[0], facet.Vertices[1], facet.Vertices[2] } });
         for (const std::array<Id, 3>& t : patch.Walked)
         {
-          claims[k].push_back(Sides(re.Tri(), t, { InputSimplex<3>(re, t), node }));
+          claims[k].push_back({ InputSimplex<3>(re, t), node });
+          walked[k].push_back(t);
         }
       }
     });
@@ -140,7 +142,11 @@ void WalkPatches(const Retriangulation& re, const std::vector<Node>& nodes,
     {
       pieces.ExactFallbacks.emplace_back(patches[k], fallbacks[k]);
     }
-    pieces.Claims.insert(pieces.Claims.end(), claims[k].begin(), claims[k].end());
+    // CGAL's facet search marks cells as it goes: one thread at a time.
+    for (std::size_t j = 0; j < claims[k].size(); ++j)
+    {
+      pieces.Claims.push_back(Sides(re.Tri(), walked[k][j], claims[k][j]));
+    }
   }
   std::sort(pieces.Claims.begin(), pieces.Claims.end());
 }
