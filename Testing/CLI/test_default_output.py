@@ -19,12 +19,11 @@ import sys
 
 import generate_clouds as gc
 import numpy as np
-from flowrecon import vtkFlowComplex, vtkFlowComplexSimplification, vtkFlowReconstruction
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
 from flowrecon_testing import clouds as cl
 from flowrecon_testing import run as fr
-from flowrecon_testing.flowcomplex_io import make_polydata
+from flowrecon_testing.flowcomplex_io import reconstruction_pipeline
 from flowrecon_testing.oracles import default_output_problems
 
 FLOWRECON, WORK = sys.argv[1], sys.argv[2]
@@ -46,22 +45,6 @@ def grid_state(g):
         for k in range(data.GetNumberOfArrays()):
             state[kind + " " + data.GetArrayName(k)] = vtk_to_numpy(data.GetArray(k))
     return state
-
-
-def filters(points, tp, tr):
-    """Port 0 of the VTK filters at t_p, t_r (no automatic choice)."""
-    fc = vtkFlowComplex()
-    fc.SetInputData(make_polydata(points))
-    simplification = vtkFlowComplexSimplification()
-    simplification.SetInputConnection(fc.GetOutputPort())
-    simplification.SetPersistenceThreshold(tp)
-    simplification.AutomaticPersistenceThresholdOff()
-    reconstruction = vtkFlowReconstruction()
-    reconstruction.SetInputConnection(simplification.GetOutputPort())
-    reconstruction.SetReconstructionThreshold(tr)
-    reconstruction.AutomaticReconstructionThresholdOff()
-    reconstruction.Update()
-    return reconstruction.GetOutput(0)
 
 
 runs = 0
@@ -86,7 +69,7 @@ for cloud in CLOUDS:
     for tp, tr in ((1.1, 2.0), (0.0, 1.5)):
         fr.run(FLOWRECON, "reconstruct", base + ".xyz", "-o", base + "_exact.vtu", "--exact",
                "--tp", str(tp), "--tr", str(tr), "--quiet")
-        a, b = grid_state(fr.read_grid(base + "_exact.vtu")), grid_state(filters(points, tp, tr))
+        a, b = grid_state(fr.read_grid(base + "_exact.vtu")), grid_state(reconstruction_pipeline(points, tp, tr)[1].GetOutput(0))
         differ = [k for k in sorted(set(a) | set(b)) if k not in a or k not in b or
                   a[k].shape != b[k].shape or not np.array_equal(a[k], b[k], equal_nan=a[k].dtype.kind == "f")]
         print("%s, --exact --tp %g --tr %g: %d cells, the filters %d: %s" % (
