@@ -15,6 +15,10 @@ constexpr const char* StableManifolds = "StableManifolds";
 constexpr const char* UnstableManifolds = "UnstableManifolds";
 constexpr const char* GabrielEdges = "GabrielEdges";
 constexpr const char* PersistencePairs = "PersistencePairs";
+// Of Flow Complex Simplification only: the parts of CriticalPoints and
+// GabrielEdges whose Cancelled is 0, which its display shows.
+constexpr const char* SurvivingCriticalPoints = "SurvivingCriticalPoints";
+constexpr const char* SurvivingGabrielEdges = "SurvivingGabrielEdges";
 
 // Nodes, arcs and cells.
 constexpr const char* NodeId = "NodeId";
