@@ -91,9 +91,9 @@ constexpr const char* PersistenceCandidates = "PersistenceCandidates";
 constexpr const char* Dimension = "Dimension";
 constexpr const char* Change = "Change";
 constexpr const char* Spacing = "Spacing";
-// The compact output (`reconstruct --compact`), field data: Delaunay triangles
-// crossed by the walks of two index-2 nodes, twice by one walk, and the voids
-// without a maximum it filled.
+// The compact output (what `flowrecon reconstruct` writes by default), field
+// data: Delaunay triangles crossed by the walks of two index-2 nodes, twice by
+// one walk, and the voids without a maximum it filled.
 constexpr const char* SharedTriangles = "SharedTriangles";
 constexpr const char* RevisitedTriangles = "RevisitedTriangles";
 constexpr const char* FilledVoids = "FilledVoids";
