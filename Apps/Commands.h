@@ -19,7 +19,7 @@ struct Arguments
   std::string Command; ///< the command given
   std::string Input, Output, Profile, TopologyProfile;
   bool Quiet = false, NoStable = false, NoUnstable = false, NoBetti = false, Timings = false,
-       Compact = false;
+       Compact = false, Exact = false;
   NumberArg Threads{ "--threads" }, MaxCells{ "--max-cells" }, Tr{ "--tr" }, TrMax{ "--tr-max" },
     Tp{ "--tp" }, WarnWindow{ "--warn-window" }, BettiMaxCells{ "--betti-max-cells" },
     Jumps{ "--jumps" };

@@ -19,6 +19,7 @@
 
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
+#include "vtkFieldData.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkNew.h"
 #include "vtkPolyData.h"
@@ -52,8 +53,8 @@ struct Reconstruction
   std::vector<double> Tps; // the t_p candidates (NaN: the stored file's)
   bool Automatic = false;  // Choice is set
   ThresholdChoice Choice;
-  // --compact: the compact complex at t_r, each node's Threshold (NaN when
-  // not in it), and the samples it is written over.
+  // The default (compact) output: the compact complex at t_r, each node's
+  // Threshold (NaN when not in it), and the samples it is written over.
   CompactComplex Compact;
   std::vector<double> NodeThreshold;
   std::vector<Point3> Samples;
@@ -98,7 +99,7 @@ Reconstruction FromCloud(const std::string& input,
   return r;
 }
 
-// --compact from a stored complex (simplified or not: the same nodes and
+// The compact output from a stored complex (simplified or not: the same nodes and
 // samples): the nodes of the written cells below t_r, walked again on the
 // samples' triangulation (Retriangulation).
 void CompactFromStored(vtkMultiBlockDataSet* complex, const std::string& input, Reconstruction& r)
@@ -360,7 +361,14 @@ Request ReadRequest(const Arguments& args)
   settings.UnderSamplingWindow = args.NoBetti ? 1 : window;
   SetCapAndDrawn(args, trmax, automatic, settings);
   settings.Advice = "lower --tr (or --tr-max)";
-  settings.Compact = args.Compact;
+  // The compact output is the default; --tr-max's file is the exact family.
+  if (args.Compact && (args.Exact || args.TrMax.Given))
+  {
+    throw Usage("--compact (the default) excludes --exact and --tr-max, which write the exact "
+                "cells",
+      command);
+  }
+  settings.Compact = !args.Exact && !args.TrMax.Given;
   return request;
 }
 
@@ -399,11 +407,12 @@ void ReportResult(const Arguments& args, const Reconstruction& r, const std::str
   }
 }
 
-// --compact: what the compact output holds, its Betti numbers, and a warning
-// when they are not the exact reconstruction's.
-void ReportCompact(const Reconstruction& r, const std::array<Id, 4>& betti)
+// The compact output: what it holds, its Betti numbers, and a warning when
+// they are not the exact reconstruction's (without --no-betti).
+void ReportCompact(const Reconstruction& r, bool topology)
 {
   const CompactComplex& c = r.Compact;
+  const std::array<Id, 4>& betti = c.Betti;
   std::cout << "compact output: " << c.Triangles.size() << " triangles, " << c.Tetrahedra.size()
             << " tetrahedra, " << c.Edges.size() << " edges, " << c.Vertices.size()
             << " samples, "
@@ -412,6 +421,10 @@ void ReportCompact(const Reconstruction& r, const std::array<Id, 4>& betti)
             << " cells per sample; " << c.SharedTriangles << " triangles shared by two patches, "
             << c.RevisitedTriangles << " crossed twice by one walk, " << c.FilledVoids
             << " voids without a maximum filled\n";
+  if (!topology)
+  {
+    return;
+  }
   std::cout << "compact output's Betti numbers " << betti[0] << " " << betti[1] << " " << betti[2]
             << "\n";
   std::array<long long, 3> exact;
@@ -456,6 +469,29 @@ void PrintJumps(const Reconstruction& r, double jumps)
   }
 }
 
+// The default output: the compact complex at t_r over the input points, with
+// the exact grid's field data of the answer (thresholds, their warnings,
+// Topology) and its own Betti numbers (none with --no-betti).
+vtkSmartPointer<vtkUnstructuredGrid> CompactOutput(const Reconstruction& r, bool topology)
+{
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  CompactToVTK(r.Compact, r.Samples, r.Nodes, r.NodeThreshold, r.Compact.Betti, grid);
+  vtkFieldData* answer = r.Grid->GetFieldData();
+  for (int k = 0; k < answer->GetNumberOfArrays(); ++k)
+  {
+    vtkAbstractArray* a = answer->GetAbstractArray(k);
+    if (a->GetName() && std::string(a->GetName()) != names::BettiNumbers)
+    {
+      grid->GetFieldData()->AddArray(a);
+    }
+  }
+  if (!topology)
+  {
+    grid->GetFieldData()->RemoveArray(names::BettiNumbers);
+  }
+  return grid;
+}
+
 } // namespace
 
 int RunReconstruct(const Arguments& args)
@@ -476,9 +512,10 @@ int RunReconstruct(const Arguments& args)
   Reconstruction r = complex
     ? FromComplex(args, complex, settings, request.CellBudget, options, clock, args.Jumps.Given)
     : FromCloud(args.Input, settings, options, clock);
-  if (complex && args.Compact)
+  if (complex && settings.Compact)
   {
     CompactFromStored(complex, args.Input, r); // its nodes are the simplified ones'
+    clock("compact output");
   }
   const bool tpChosen = settings.AutomaticPersistence && r.Tps.size() > 1;
   const std::vector<std::string> choiceWarnings = r.Automatic
@@ -494,12 +531,9 @@ int RunReconstruct(const Arguments& args)
                       settings.Topology ? "" : " (--no-betti)"),
     r.Grid, nullptr);
   vtkSmartPointer<vtkUnstructuredGrid> written = r.Grid;
-  std::array<Id, 4> compactBetti{ { 0, 0, 0, 0 } };
-  if (args.Compact)
+  if (settings.Compact)
   {
-    compactBetti = r.Compact.Betti;
-    written = vtkSmartPointer<vtkUnstructuredGrid>::New();
-    CompactToVTK(r.Compact, r.Samples, r.Nodes, r.NodeThreshold, compactBetti, written);
+    written = CompactOutput(r, settings.Topology);
     clock("compact output's VTK grid");
   }
   vtkNew<vtkXMLUnstructuredGridWriter> writer;
@@ -518,9 +552,9 @@ int RunReconstruct(const Arguments& args)
   }
   ReportResult(args, r, output, written->GetNumberOfCells(), settings.AutomaticReconstruction,
     tpChosen, choiceWarnings);
-  if (args.Compact && !args.Quiet)
+  if (settings.Compact && !args.Quiet)
   {
-    ReportCompact(r, compactBetti);
+    ReportCompact(r, settings.Topology);
   }
   if (!args.Quiet)
   {

@@ -3,7 +3,7 @@
 //   flowrecon complex INPUT -o OUT.vtm [--no-stable] [--no-unstable] [--quiet]
 //   flowrecon info    INPUT [--no-stable] [--no-unstable] [--quiet]
 //   flowrecon reconstruct INPUT -o OUT.vtu [--tr T|auto] [--tp P|auto] [--profile P.csv] [--jumps K]
-//                         [--tr-max T] [--topology-profile B.csv]
+//                         [--exact] [--tr-max T] [--topology-profile B.csv]
 //   flowrecon diagram INPUT -o PD.csv|PD.vtu
 // Every command also takes --threads N (TBB's limit for the flow complex).
 //
@@ -94,14 +94,20 @@ const OptionRow ReconstructRows[] = {
     "reconstruction threshold t_r > 1, 'inf' for all steps; auto (the default): where the Betti "
     "numbers are the most stable" },
   { "--tr-max", &Arguments::TrMax, "T",
-    "write every cell with Threshold < T >= t_r, so any t_r <= T is a selection of the file; "
-    "only those cells are drawn (t_r). From a cloud, also the cap below which the run is exact "
+    "write the exact cells (implies --exact) of every Threshold < T >= t_r, so any t_r <= T is "
+    "a selection of the file; only those cells are drawn (t_r). From a cloud, also the cap below "
+    "which the run is exact "
     "(4 when not given; 'inf': no cap): the patches that cannot matter below it are walked only "
     "when needed" },
   { "--tp", &Arguments::Tp, "P|auto",
     "persistence threshold t_p, 0 for none; auto (the default): 1.1 or 0, the more stable" },
+  { "--exact", &Arguments::Exact, nullptr,
+    "write the exact stable manifolds instead of Delaunay simplices on the samples: about 9 "
+    "cells a sample on a surface, over points built on Voronoi edges, with cell data Step, "
+    "Priority, Extension, Sponsor, CriticalValue and Multiplicity as well" },
   { "--profile", &Arguments::Profile, "P.csv",
-    "write the profile of the t_r = inf run as CSV (from a cloud: its steps below --tr-max)" },
+    "write the profile of the t_r = inf run as CSV (from a cloud: its steps below the cap, "
+    "see --tr-max)" },
   { "--topology-profile", &Arguments::TopologyProfile, "B.csv",
     "write the Betti numbers for every t_r up to --tr-max (4 when not given) as CSV: "
     "threshold,b0,b1,b2, one row per change" },
@@ -115,9 +121,7 @@ const OptionRow ReconstructRows[] = {
     "skip the Betti numbers, the topology profile and the warnings (on solids of millions of "
     "tetrahedra they cost about as much as the rest)" },
   { "--compact", &Arguments::Compact, nullptr,
-    "write instead Delaunay simplices on the samples (a prototype): the Delaunay triangles the "
-    "stable manifolds' walks cross, the Delaunay cells that flow into each maximum; prints "
-    "their Betti numbers beside the exact ones" },
+    "the default output, accepted for compatibility; excludes --exact and --tr-max" },
   { "--jumps", &Arguments::Jumps, "K", "print the K largest jumps of the profile (tracking back)" },
   { "--timings", &Arguments::Timings, nullptr,
     "print the seconds of each phase (and, from a cloud, the patches deferred and walked late)" },
@@ -163,15 +167,19 @@ const Command Commands[] = {
   { "reconstruct", "reconstruct the sampled shape, write it as .vtu", "INPUT -o OUT.vtu [options]",
     "Compute the flow complex of INPUT (or read a .vtm written by 'complex'),\n"
     "simplify it with the persistence threshold t_p, grow the flow reconstruction\n"
-    "with the reconstruction threshold t_r, and write its cells (vertices, Gabriel\n"
-    "edges, triangles, tetrahedra; cell data Step, Priority, Threshold, Extension,\n"
-    "Sponsor, NodeId, Index, CriticalValue, Multiplicity) to OUT.vtu. Every\n"
-    "reconstruction with a smaller t_r is its part with Threshold < t_r. Only the\n"
-    "cells written are drawn, from a second Delaunay triangulation of the points.\n"
-    "Prints 'Betti numbers: b0 b1 b2' (over Z/2) of the reconstruction at t_r: the\n"
-    "homology of the complex its cells span (field data BettiNumbers in the file),\n"
-    "and one 'warning: under-sampled near (x, y, z): ...' line for each place where\n"
-    "they change for a t_r just above the chosen one (see --warn-window).",
+    "with the reconstruction threshold t_r, and write it to OUT.vtu as Delaunay\n"
+    "simplices on the input points: the triangles its stable manifolds' walks cross,\n"
+    "the tetrahedra that flow into its maxima, its Gabriel edges and samples (about\n"
+    "2 triangles a sample on a surface; cell data NodeId, Index, Threshold, Claims).\n"
+    "--exact writes the exact stable manifolds instead (cell data Step, Priority,\n"
+    "Threshold, Extension, Sponsor, NodeId, Index, CriticalValue, Multiplicity);\n"
+    "--tr-max T writes them for every t_r up to T, each reconstruction their part\n"
+    "with Threshold < t_r. Prints 'Betti numbers: b0 b1 b2' (over Z/2) of the\n"
+    "reconstruction at t_r (the homology of the complex its exact cells span), then\n"
+    "the compact output's own (field data BettiNumbers in its file; a warning if\n"
+    "they differ), and one 'warning: under-sampled near (x, y, z): ...' line for\n"
+    "each place where they change for a t_r just above the chosen one (see\n"
+    "--warn-window).",
     ReconstructOptions, RunReconstruct },
   { "diagram", "write the persistence diagram of the flow complex",
     "INPUT -o PD.csv|PD.vtu [options]",

@@ -3,19 +3,23 @@
 file to the written output, against two CGAL processes on the same file in the
 same run: its sequential Delaunay triangulation (build/bin/DelaunayBaseline)
 and its advancing front surface reconstruction at its defaults, written as OFF
-(build/bin/AdvancingFrontBaseline). Each cloud runs the three in turn, --warmup
+(build/bin/AdvancingFrontBaseline). `reconstruct` runs at its defaults, so it
+writes the default, compact output (Delaunay simplices on the samples); --exact
+times `reconstruct --exact` (the exact stable manifolds) instead, the default
+until the compact output became it. Each cloud runs the three in turn, --warmup
 rounds then --runs measured rounds; times are min-max (median), peaks the
 largest maximum RSS (/usr/bin/time), ratios the medians of the rounds' paired
 ratios. Prints a Markdown table.
 
   /usr/bin/python3 Benchmarks/whole_process.py [--sizes 1e5 1e6]
       [--shapes cube sphere torus bunny] [--runs 3] [--warmup 1]
-      [--timeout 1800] [--diagram] [--work DIR]
+      [--timeout 1800] [--diagram] [--exact] [--work DIR]
 
 Clouds (seeded, i.i.d.): uniform in a cube; uniform on a sphere; area-uniform on
 a torus surface (R 1, r 0.35); area-uniform on the Stanford bunny's triangles
 (npm package `bunny`, a scan-like surface with thin ears). "answer" is the
-Betti numbers `reconstruct` prints with the thresholds it chose, and for the
+Betti numbers `reconstruct` prints with the thresholds it chose (marked
+"compact output ≠" when the compact output's printed beside them differ), and for the
 advancing front its surface's Euler characteristic, components and boundary
 edges; "Betti numbers" is the time of `--timings`' "Betti numbers from the Hasse
 diagram" (both t_p candidates), "share" its part of the run's phases. An
@@ -151,7 +155,9 @@ def flowrecon_answer(shape, out):
         return "?"
     betti = m.group(3).strip()
     right = (" (right)" if betti == EXPECTED[shape] else " (wrong)") if shape in EXPECTED else ""
-    return "%s%s, t_r %.3g, t_p %s" % (betti, right, float(m.group(1)), m.group(2))
+    compact = re.search(r"^compact output's Betti numbers ([0-9 ]+)$", out, re.M)
+    differ = ", compact output ≠ %s" % compact.group(1) if compact and compact.group(1) != betti else ""
+    return "%s%s, t_r %.3g, t_p %s%s" % (betti, right, float(m.group(1)), m.group(2), differ)
 
 
 def betti_seconds(out):
@@ -213,7 +219,8 @@ def whole_process(shape, n, xyz, args):
                 peaks["afsr"].append(kb)
         if error is None:
             t, kb, out, error = timed([os.path.join(BIN, "flowrecon"), "reconstruct", xyz, "-o",
-                                       vtu, "--timings"], timeout=args.timeout)
+                                       vtu, "--timings"] + (["--exact"] if args.exact else []),
+                                      timeout=args.timeout)
             if keep and error is None:
                 ours.append(t)
                 peaks["ours"].append(kb)
@@ -245,11 +252,14 @@ def main():
     ap.add_argument("--timeout", type=float, default=1800,
                     help="seconds after which an advancing front or reconstruct run is stopped")
     ap.add_argument("--diagram", action="store_true")
+    ap.add_argument("--exact", action="store_true",
+                    help="time reconstruct --exact (the exact stable manifolds), not the default")
     ap.add_argument("--work", default=os.path.join(ROOT, "build", "bench"))
     args = ap.parse_args()
     os.makedirs(args.work, exist_ok=True)
+    ours = "`reconstruct --exact`" if args.exact else "`reconstruct` (compact output)"
     print("| cloud | points | `reconstruct` answer at defaults | advancing front answer | "
-          "CGAL Delaunay | advancing front | `reconstruct` | ratio to Delaunay | "
+          "CGAL Delaunay | advancing front | " + ours + " | ratio to Delaunay | "
           "ratio to advancing front | peak (Delaunay / advancing front / `reconstruct`) | "
           "Betti numbers | share |")
     print("|---|---:|---|---|---:|---:|---:|---:|---:|---:|---:|---:|")

@@ -15,6 +15,10 @@ constexpr const char* StableManifolds = "StableManifolds";
 constexpr const char* UnstableManifolds = "UnstableManifolds";
 constexpr const char* GabrielEdges = "GabrielEdges";
 constexpr const char* PersistencePairs = "PersistencePairs";
+// Of Flow Complex Simplification only: the parts of CriticalPoints and
+// GabrielEdges whose Cancelled is 0, which its display shows.
+constexpr const char* SurvivingCriticalPoints = "SurvivingCriticalPoints";
+constexpr const char* SurvivingGabrielEdges = "SurvivingGabrielEdges";
 
 // Nodes, arcs and cells.
 constexpr const char* NodeId = "NodeId";
@@ -87,9 +91,9 @@ constexpr const char* PersistenceCandidates = "PersistenceCandidates";
 constexpr const char* Dimension = "Dimension";
 constexpr const char* Change = "Change";
 constexpr const char* Spacing = "Spacing";
-// The compact output (`reconstruct --compact`), field data: Delaunay triangles
-// crossed by the walks of two index-2 nodes, twice by one walk, and the voids
-// without a maximum it filled.
+// The compact output (what `flowrecon reconstruct` writes by default), field
+// data: Delaunay triangles crossed by the walks of two index-2 nodes, twice by
+// one walk, and the voids without a maximum it filled.
 constexpr const char* SharedTriangles = "SharedTriangles";
 constexpr const char* RevisitedTriangles = "RevisitedTriangles";
 constexpr const char* FilledVoids = "FilledVoids";

@@ -8,6 +8,7 @@
 #include "Retriangulation.h"
 #include "Simplification.h"
 #include "StoredComplexTopology.h"
+#include "SurvivingBlocks.h"
 
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
@@ -199,6 +200,7 @@ int vtkFlowComplexSimplification::RequestData(
       fc.Arcs = s.Arcs; // the HasseDiagram block shows the simplified diagram
       flowrecon::ReplaceHasseDiagram(input, fc, output);
       flowrecon::AddSimplification(fc, s, choice.Chosen, output);
+      flowrecon::AddSurvivingBlocks(output); // what the display shows
       if (automatic)
       {
         AddChoice(choice, output);

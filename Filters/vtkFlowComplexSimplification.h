@@ -26,6 +26,11 @@
  *   lower to the upper critical point, in cancellation order, cell data
  *   `Ratio`, `Birth`, `Death`, `PairType` (index of the lower node),
  *   `LowerNodeId`, `UpperNodeId`.
+ * - `SurvivingCriticalPoints` and `SurvivingGabrielEdges` (vtkPolyData): the
+ *   points of `CriticalPoints` and the lines of `GabrielEdges` whose
+ *   `Cancelled` is 0, with the same arrays: what ParaView shows by default, so
+ *   that the picture differs from the flow complex's by what t_p removed. Later
+ *   stages read the complete blocks only.
  * Field data (output and CriticalPoints): the flow-complex report plus
  * `PersistenceThreshold` and `CancelledPairCount`.
  *

@@ -8,9 +8,10 @@
  * @class vtkFlowReconDisplayInitializationHelper
  * @brief Chooses the colouring, the visible blocks or the arrow glyphs of a new display.
  *
- * Named by the hint of the representation FlowReconMultiBlockRepresentation
- * (FlowComplex.xml), which Flow Complex and Flow Complex Simplification ask for
- * in render views:
+ * Named by the hint of the representations FlowReconMultiBlockRepresentation
+ * (FlowComplex.xml) and FlowReconSimplificationRepresentation
+ * (FlowComplexSimplification.xml, the surviving blocks), which Flow Complex and
+ * Flow Complex Simplification ask for in render views:
  *
  *   <InitializationHelper class="vtkFlowReconDisplayInitializationHelper"
  *     color_association="POINTS" color_array="Index" blocks="/Root/CriticalPoints"/>

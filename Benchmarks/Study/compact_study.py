@@ -1,7 +1,7 @@
 #!/usr/bin/python3
-"""The compact output (`reconstruct --compact`: Delaunay simplices on the samples)
-against the exact one, on the test clouds: their Betti numbers, cells per sample,
-file sizes and times.
+"""The compact output (the default of `reconstruct`: Delaunay simplices on the
+samples) against the exact one (`reconstruct --exact`), on the test clouds: their
+Betti numbers, cells per sample, file sizes and times.
 
   PYTHONPATH=Apps/Scripts /usr/bin/python3 Benchmarks/Study/compact_study.py OUTDIR
       [--flowrecon build/bin/flowrecon] [--only REGEX] [--large] [--args "--tp 1.1 --tr 2"]
@@ -12,24 +12,26 @@ are Poisson-disk samples plus Gaussian noise of standard deviation `noise` x the
 mean nearest-neighbour spacing, from a seed of the cloud's id) the script writes
 OUTDIR/clouds/ID.xyz and runs, at the automatic thresholds,
 
-  flowrecon reconstruct ID.xyz -o ID.exact.vtu
-  flowrecon reconstruct ID.xyz -o ID.compact.vtu --compact
+  flowrecon reconstruct ID.xyz -o ID.exact.vtu --exact
+  flowrecon reconstruct ID.xyz -o ID.compact.vtu
 
 under /usr/bin/time (wall seconds, peak RSS), both with the --args given (e.g. fixed
 thresholds instead of the automatic ones). The exact run's Betti numbers are its
 'Betti numbers: b0 b1 b2' line; the compact run's its "compact output's Betti
-numbers" line (the homology of the cells it wrote). The report OUTDIR/study.md (also
+numbers" line (the homology of the cells it wrote), and GUDHI's Betti numbers of
+the compact file (flowrecon_testing.oracles.gudhi_betti, an oracle written by
+others; "–" when GUDHI is missing). The report OUTDIR/study.md (also
 printed) has one row per cloud; OUTDIR/results.json every run. With --large, the
 i.i.d. 10^5-point clouds too. For the compact file's triangles it also counts the
 border edges (in one triangle), the non-manifold edges (in more than two) and the
 singular vertices (whose triangles do not make one disc or sphere around them):
 all 0 for a closed surface.
 
-With --sweep, only `reconstruct ID.xyz -o OUT --compact --tp P --tr T --tr-max T` runs
-(it prints the exact Betti numbers beside the compact ones), for t_p in 0, 1.1 and
-t_r in 1.2, 1.5, 3, 5, inf; the report OUTDIR/sweep.md has one row per cloud: the
-configurations where the two agree, and the voids without a maximum filled
-(every run in OUTDIR/sweep.json).
+With --sweep, only `reconstruct ID.xyz -o OUT --tp P --tr T` runs (it prints the
+exact Betti numbers beside the compact ones, and GUDHI's of the file are computed),
+for t_p in 0, 1.1 and t_r in 1.2, 1.5, 3, 5, inf; the report OUTDIR/sweep.md has one
+row per cloud: the configurations where the three agree, and the voids without a
+maximum filled (every run in OUTDIR/sweep.json).
 """
 import argparse
 import json
@@ -45,6 +47,17 @@ import generate_clouds as gc
 import numpy as np
 
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+sys.path.insert(0, os.path.join(ROOT, "Testing", "Python"))
+
+
+def gudhi(vtu):
+    """GUDHI's Betti numbers of the cells of a .vtu, or None without GUDHI."""
+    try:
+        from flowrecon_testing.oracles import gudhi_betti
+        from flowrecon_testing.run import read_grid
+        return gudhi_betti(read_grid(vtu))
+    except ImportError:
+        return None
 
 # (id, source, size or None, noise or None, class); source: a Data file or a shape.
 CLOUDS = [
@@ -153,7 +166,7 @@ def study(cid, source, size, noise, cls, opts):
     make_cloud(cid, source, size, noise, path)
     n = sum(1 for _ in open(path))
     row = {"id": cid, "class": cls, "points": n, "truth": truth(source)}
-    for kind, extra in (("exact", []), ("compact", ["--compact"])):
+    for kind, extra in (("exact", ["--exact"]), ("compact", [])):
         out = os.path.join(opts.outdir, "runs", "%s.%s.vtu" % (cid, kind))
         code, so, se, wall, peak = run([opts.flowrecon, "reconstruct", path, "-o", out] +
                                        opts.args.split() + extra)
@@ -169,6 +182,7 @@ def study(cid, source, size, noise, cls, opts):
                                   r"patches, (\d+) crossed twice by one walk, (\d+) voids", so)
         if kind == "compact" and code == 0:
             r["surface"] = surface_stats(out)
+            r["gudhi"] = gudhi(out)
         if code != 0:
             r["error"] = se.strip().splitlines()[-1:] or ["?"]
         row[kind] = r
@@ -186,12 +200,13 @@ def sweep(cid, source, size, noise, cls, opts):
     out = os.path.join(opts.outdir, "runs", cid + ".sweep.vtu")
     row = {"id": cid, "class": cls, "runs": []}
     for tp, tr in SWEEP:
-        code, so, se, wall, peak = run([opts.flowrecon, "reconstruct", path, "-o", out, "--compact",
-                                        "--tp", tp, "--tr", tr, "--tr-max", tr])
+        code, so, se, wall, peak = run([opts.flowrecon, "reconstruct", path, "-o", out,
+                                        "--tp", tp, "--tr", tr])
         counts = numbers(r"(\d+) voids without a maximum filled", so)
         row["runs"].append({"tp": tp, "tr": tr, "exit": code,
                             "exact": numbers(r"^Betti numbers: (\d+) (\d+) (\d+)$", so),
                             "compact": numbers(r"^compact output's Betti numbers (\d+) (\d+) (\d+)$", so),
+                            "gudhi": gudhi(out) if code == 0 else None,
                             "filled": counts[0] if counts else None})
     if os.path.exists(out):
         os.remove(out)
@@ -204,16 +219,17 @@ def sweep_report(rows):
     agree = total = 0
     for r in rows:
         ok = [x for x in r["runs"] if x["exit"] == 0 and x["exact"] is not None]
-        same = [x for x in ok if x["exact"] == x["compact"]]
-        differ = ["t_p %s t_r %s: %s vs %s" % (x["tp"], x["tr"], btext(x["exact"]), btext(x["compact"]))
-                  for x in ok if x["exact"] != x["compact"]]
+        same = [x for x in ok if x["exact"] == x["compact"] == (x["gudhi"] or x["compact"])]
+        differ = ["t_p %s t_r %s: %s vs %s (GUDHI %s)" % (x["tp"], x["tr"], btext(x["exact"]),
+                                                          btext(x["compact"]), btext(x["gudhi"]))
+                  for x in ok if x not in same]
         agree += len(same)
         total += len(ok)
         lines.append("| %s | %d of %d | %d | %s |" % (r["id"], len(same), len(ok),
                                                    sum(x["filled"] or 0 for x in ok), "; ".join(differ)))
     lines.append("")
-    lines.append("Betti numbers of the compact output equal the exact output's in %d of %d runs "
-                 "(t_p 0 and 1.1 x t_r 1.2, 1.5, 3, 5, inf)." % (agree, total))
+    lines.append("Betti numbers of the compact output (printed and by GUDHI) equal the exact "
+                 "output's in %d of %d runs (t_p 0 and 1.1 x t_r 1.2, 1.5, 3, 5, inf)." % (agree, total))
     return "\n".join(lines)
 
 
@@ -222,27 +238,29 @@ def btext(b):
 
 
 def report(rows):
-    lines = ["| cloud | n | truth | exact | compact | agree | cells/sample exact → compact | "
+    lines = ["| cloud | n | truth | exact | compact | GUDHI | agree | cells/sample exact → compact | "
              "file (KB) exact → compact | time (s) exact → compact | triangles shared, "
              "revisited | voids filled | compact edges, tetrahedra | border, non-manifold edges, singular vertices |",
-             "|---|---:|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|"]
+             "|---|---:|---|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|"]
     agree = total = 0
     for r in rows:
         e, c = r["exact"], r["compact"]
         if e["exit"] != 0 or c["exit"] != 0:
-            lines.append("| %s | %d | %s | error | error | | | | | | | | |" % (r["id"], r["points"], btext(r["truth"])))
+            lines.append("| %s | %d | %s | error | error | | | | | | | | | |" % (r["id"], r["points"], btext(r["truth"])))
             continue
-        same = c["compact_betti"] == e["betti"]
+        same = c["compact_betti"] == e["betti"] == (c.get("gudhi") or c["compact_betti"])
         total += 1
         agree += same
         counts = c["counts"] or (0,) * 7
-        lines.append("| %s | %d | %s | %s | %s | %s | %.2f → %.2f | %d → %d | %.2f → %.2f | %d, %d | %d | %d, %d | %d, %d, %d |" % ((
+        lines.append("| %s | %d | %s | %s | %s | %s | %s | %.2f → %.2f | %d → %d | %.2f → %.2f | %d, %d | %d | %d, %d | %d, %d, %d |" % ((
             r["id"], r["points"], btext(r["truth"]), btext(e["betti"]), btext(c["compact_betti"]),
+            btext(c.get("gudhi")),
             "yes" if same else "**no**", e["cells"][0] / r["points"], c["cells"][0] / r["points"],
             e["size_bytes"] / 1024, c["size_bytes"] / 1024, e["wall_s"], c["wall_s"],
             counts[4], counts[5], counts[6], counts[2], counts[1]) + tuple(c["surface"])))
     lines.append("")
-    lines.append("Betti numbers of the compact output equal the exact output's on %d of %d clouds." % (agree, total))
+    lines.append("Betti numbers of the compact output (printed and by GUDHI) equal the exact "
+                 "output's on %d of %d clouds." % (agree, total))
     return "\n".join(lines)
 
 
@@ -254,7 +272,7 @@ def main(argv=None):
     ap.add_argument("--large", action="store_true")
     ap.add_argument("--keep-vtu", action="store_true")
     ap.add_argument("--args", default="", help="more arguments of both runs")
-    ap.add_argument("--sweep", action="store_true", help="t_p x t_r sweep of --compact runs")
+    ap.add_argument("--sweep", action="store_true", help="t_p x t_r sweep of the default output")
     opts = ap.parse_args(argv)
     for sub in ("clouds", "runs"):
         os.makedirs(os.path.join(opts.outdir, sub), exist_ok=True)

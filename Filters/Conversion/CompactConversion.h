@@ -1,5 +1,5 @@
 // The compact complex (CompactReconstruction.h) as VTK: cells on the samples
-// with the node each stands for. What `flowrecon reconstruct --compact` writes.
+// with the node each stands for. What `flowrecon reconstruct` writes by default.
 #ifndef CompactConversion_h
 #define CompactConversion_h
 

@@ -454,11 +454,12 @@ void SetDefaultScalars(vtkMultiBlockDataSet* output)
       continue;
     }
     const std::string blockName(name);
-    if (blockName == names::CriticalPoints)
+    if (blockName == names::CriticalPoints || blockName == names::SurvivingCriticalPoints)
     {
       block->GetPointData()->SetActiveScalars(names::Index);
     }
-    else if (blockName == names::StableManifolds || blockName == names::GabrielEdges)
+    else if (blockName == names::StableManifolds || blockName == names::GabrielEdges ||
+      blockName == names::SurvivingGabrielEdges)
     {
       block->GetCellData()->SetActiveScalars(names::Index);
     }

@@ -35,7 +35,7 @@ void ReplaceHasseDiagram(
   vtkMultiBlockDataSet* input, const FlowComplex& fc, vtkMultiBlockDataSet* output);
 
 /// Makes Index the active scalars of CriticalPoints (points), StableManifolds and
-/// GabrielEdges (cells), and PersistencePairs have none: what a VTK mapper, or ParaView once a
+/// GabrielEdges (cells), likewise of their Surviving parts, and PersistencePairs have none: what a VTK mapper, or ParaView once a
 /// block is extracted, colours by. (On the whole multiblock ParaView 5.11 picks
 /// no default: it merges the blocks' active scalars, which are empty unless
 /// every block agrees; without this PersistencePairs' Ratio was the only one.)

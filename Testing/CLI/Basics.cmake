@@ -135,7 +135,8 @@ if (CMAKE_SYSTEM_NAME STREQUAL "Linux")
 endif ()
 
 # Under an address-space limit a run that would not fit stops with the memory
-# guard's one line (estimate, what is available, what to do), not an abort.
+# guard's one line (estimate, what is available, what to do), not an abort;
+# one of the default output ends in one line or its file.
 add_test(NAME cli.MemoryGuard
   COMMAND sh "${CMAKE_CURRENT_LIST_DIR}/RunUnderLimit.sh" "$<TARGET_FILE:flowrecon>" "${_w}")
 set_tests_properties(cli.MemoryGuard PROPERTIES TIMEOUT 400)

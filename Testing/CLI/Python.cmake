@@ -63,10 +63,16 @@ flowrecon_add_cli_python_test(py.reconstruction.automatic_thresholds test_automa
 # persistence within 1e-12 relative, lazy reconstruction equal to eager.
 flowrecon_add_cli_python_test(py.exact_perturbed_values test_exact_perturbed_values.py exact_perturbed_values)
 
-# reconstruct --compact: the Betti numbers of the written Delaunay simplices
-# (GUDHI over the file) equal the exact reconstruction's on surfaces, a solid,
-# a curve, a mix and two touching spheres; the file is on the input points.
+# The default output of reconstruct: the Betti numbers of the written Delaunay
+# simplices (GUDHI over the file) equal the exact reconstruction's on surfaces,
+# a solid, a curve, a mix and two touching spheres; the file is on the input
+# points, states the exact file's answer, and --compact writes it too.
 flowrecon_add_cli_python_test(py.reconstruction.compact test_compact.py compact)
+
+# The default output's Betti numbers by GUDHI on every cloud of Testing/Data and
+# Data, at several thresholds, from the cloud and its stored complex; --exact
+# equals the VTK filters' grid, cell for cell.
+flowrecon_add_cli_python_test(py.reconstruction.default_output test_default_output.py default_output)
 
 # Every command's help fits 80 columns and describes each of its options.
 flowrecon_add_cli_python_test(py.help test_help.py help)

@@ -28,6 +28,14 @@ flowrecon_add_cli_test(ReconstructNegativePersistence EXIT 2 STDERR_LINES 2
 flowrecon_add_cli_test(ReconstructBadJumps EXIT 2 STDERR_LINES 2
   STDERR "^flowrecon: option '--jumps' needs a positive integer"
   ARGS reconstruct "${_d}/tetrahedron.xyz" -o out.vtu --jumps 0)
+# --compact, the default, is kept for compatibility; with --exact or --tr-max
+# (which writes the exact cells) it is a contradiction.
+flowrecon_add_cli_test(ReconstructCompactAndExact EXIT 2 STDERR_LINES 2
+  STDERR "^flowrecon: --compact \\(the default\\) excludes --exact and --tr-max, which write the exact cells\nTry 'flowrecon reconstruct --help'"
+  ARGS reconstruct "${_d}/tetrahedron.xyz" -o out.vtu --compact --exact)
+flowrecon_add_cli_test(ReconstructCompactAndTrMax EXIT 2 STDERR_LINES 2
+  STDERR "^flowrecon: --compact \\(the default\\) excludes --exact and --tr-max"
+  ARGS reconstruct "${_d}/tetrahedron.xyz" -o out.vtu --compact --tr-max 3)
 flowrecon_add_cli_test(DiagramMissingOutput EXIT 2 STDERR_LINES 2
   STDERR "^flowrecon: 'diagram' needs an output file: -o OUT.csv"
   ARGS diagram "${_d}/tetrahedron.xyz")
@@ -51,44 +59,65 @@ flowrecon_add_cli_test(ReconstructOutputDirectoryMissing EXIT 1 STDERR_LINES 1
 # maximum/face 1.0607, both < 2, so without simplification all 15 finite nodes
 # are reconstructed at t_r 2; at t_r 1.1 only the 4 samples and the 6 edges,
 # all at ratio 1 (equal edges join by horizontal extension at ratio 1)).
+# The default output, Delaunay simplices on the samples: at t_r 2 the solid
+# (its 4 faces and the cell), at t_r 1.1 its 6 edges (b1 = 3); --compact is
+# the same run.
 flowrecon_add_cli_test(ReconstructTetrahedron EXIT 0 STDERR_LINES 0
-  STDOUT "tet_all\\.vtu: [0-9]+ cells, 15 of 15 steps at t_r 2\n"
+  STDOUT "^[^\n]*tet_compact\\.vtu: 5 cells, 15 of 15 steps at t_r 2\nBetti numbers: 1 0 0\ncompact output: 4 triangles, 1 tetrahedra, 0 edges, 0 samples, 1\\.25 cells per sample; 0 triangles shared by two patches, 0 crossed twice by one walk, 0 voids without a maximum filled\ncompact output's Betti numbers 1 0 0\n$"
+  VTM "${_w}/tet_compact.vtu"
+  ARGS reconstruct "${_d}/tetrahedron.xyz" -o "${_w}/tet_compact.vtu" --tp 0 --tr 2)
+flowrecon_add_cli_test(ReconstructCompactAlias EXIT 0 STDERR_LINES 0
+  STDOUT "^[^\n]*tet_alias\\.vtu: 5 cells, 15 of 15 steps at t_r 2\nBetti numbers: 1 0 0\ncompact output: 4 triangles, 1 tetrahedra, 0 edges, 0 samples, 1\\.25 cells per sample; 0 triangles shared by two patches, 0 crossed twice by one walk, 0 voids without a maximum filled\ncompact output's Betti numbers 1 0 0\n$"
+  ARGS reconstruct "${_d}/tetrahedron.xyz" -o "${_w}/tet_alias.vtu" --tp 0 --tr 2 --compact)
+flowrecon_add_cli_test(ReconstructTetrahedronEdges EXIT 0 STDERR_LINES 3
+  STDOUT "tet_compact_edges\\.vtu: 6 cells, 10 of 15 steps at t_r 1\\.1\nBetti numbers: 1 3 0\ncompact output: 0 triangles, 0 tetrahedra, 6 edges, 0 samples, 1\\.5 cells per sample;.*\ncompact output's Betti numbers 1 3 0\n"
+  ARGS reconstruct "${_d}/tetrahedron.xyz" -o "${_w}/tet_compact_edges.vtu" --tp 0 --tr 1.1)
+# --exact: the stable manifolds, 34 cells at t_r 2 (4 samples, 6 edges, each
+# face's patch in 3 triangles about its centre, the cone of the cell over its
+# 12 triangles); at t_r 1.1 the 4 samples and the 6 edges; the same from a
+# stored flow complex.
+flowrecon_add_cli_test(ReconstructTetrahedronExact EXIT 0 STDERR_LINES 0
+  STDOUT "^[^\n]*tet_all\\.vtu: 34 cells, 15 of 15 steps at t_r 2\nBetti numbers: 1 0 0\n$"
   VTM "${_w}/tet_all.vtu"
-  ARGS reconstruct "${_d}/tetrahedron.xyz" -o "${_w}/tet_all.vtu" --tp 0 --tr 2)
-# --compact on the regular tetrahedron, whose answer is known: at t_r 2 the
-# solid (its 4 faces and the cell), at t_r 1.1 its 6 edges (b1 = 3).
-flowrecon_add_cli_test(ReconstructCompactTetrahedron EXIT 0 STDERR_LINES 0
-  STDOUT "tet_compact\\.vtu: 5 cells, 15 of 15 steps at t_r 2\nBetti numbers: 1 0 0\ncompact output: 4 triangles, 1 tetrahedra, 0 edges, 0 samples, 1\\.25 cells per sample; 0 triangles shared by two patches, 0 crossed twice by one walk, 0 voids without a maximum filled\ncompact output's Betti numbers 1 0 0\n"
-  ARGS reconstruct "${_d}/tetrahedron.xyz" -o "${_w}/tet_compact.vtu" --tp 0 --tr 2 --compact)
-flowrecon_add_cli_test(ReconstructCompactTetrahedronEdges EXIT 0 STDERR_LINES 3
-  STDOUT "compact output: 0 triangles, 0 tetrahedra, 6 edges, 0 samples, 1\\.5 cells per sample;.*\ncompact output's Betti numbers 1 3 0\n"
-  ARGS reconstruct "${_d}/tetrahedron.xyz" -o "${_w}/tet_compact_edges.vtu" --tp 0 --tr 1.1 --compact)
-flowrecon_add_cli_test(ReconstructTetrahedronEdges EXIT 0 STDERR_LINES 0
-  STDOUT "tet_edges\\.vtu: 10 cells, 10 of 15 steps at t_r 1\\.1\n"
+  ARGS reconstruct "${_d}/tetrahedron.xyz" -o "${_w}/tet_all.vtu" --tp 0 --tr 2 --exact)
+flowrecon_add_cli_test(ReconstructTetrahedronEdgesExact EXIT 0 STDERR_LINES 0
+  STDOUT "^[^\n]*tet_edges\\.vtu: 10 cells, 10 of 15 steps at t_r 1\\.1\nBetti numbers: 1 3 0\n$"
   FIXTURES_REQUIRED flowrecon_cli_vtm
   ARGS reconstruct "${_w}/tetrahedron.vtm" -o "${_w}/tet_edges.vtu" --tp 0 --tr 1.1
+       --warn-window 1 --exact)
+flowrecon_add_cli_test(ReconstructTetrahedronEdgesStored EXIT 0 STDERR_LINES 0
+  STDOUT "^[^\n]*tet_edges_stored\\.vtu: 6 cells, 10 of 15 steps at t_r 1\\.1\nBetti numbers: 1 3 0\ncompact output: 0 triangles, 0 tetrahedra, 6 edges, 0 samples, 1\\.5 cells per sample;.*\ncompact output's Betti numbers 1 3 0\n$"
+  FIXTURES_REQUIRED flowrecon_cli_vtm
+  ARGS reconstruct "${_w}/tetrahedron.vtm" -o "${_w}/tet_edges_stored.vtu" --tp 0 --tr 1.1
        --warn-window 1)
 # The regular tetrahedron (edge 2 sqrt 2) at t_r 1.1 is its 6 edges (b1 = 3);
 # its faces (circumradius 2 sqrt(2/3)) close the 3 holes at t_r = 2/sqrt 3 =
 # 1.1547, within the default window 1.1: warned, at a face's centre (spacing
 # twice the circumradius, 3.26599) and at the centre (the cone's apex).
-# --no-betti: neither the Betti numbers nor the warnings (only the summary line).
+# --no-betti: neither the Betti numbers nor the warnings (only the summary line,
+# and the compact output's counts).
 flowrecon_add_cli_test(ReconstructNoBetti EXIT 0 STDERR_LINES 0
-  STDOUT "^[^\n]*tet_nb\\.vtu: 10 cells, 10 of 15 steps at t_r 1\\.1\n$"
+  STDOUT "^[^\n]*tet_nb\\.vtu: 6 cells, 10 of 15 steps at t_r 1\\.1\ncompact output: 0 triangles, 0 tetrahedra, 6 edges, [^\n]*filled\n$"
   FIXTURES_REQUIRED flowrecon_cli_vtm
   ARGS reconstruct "${_w}/tetrahedron.vtm" -o "${_w}/tet_nb.vtu" --tp 0 --tr 1.1 --no-betti)
+flowrecon_add_cli_test(ReconstructNoBettiExact EXIT 0 STDERR_LINES 0
+  STDOUT "^[^\n]*tet_nb_exact\\.vtu: 10 cells, 10 of 15 steps at t_r 1\\.1\n$"
+  FIXTURES_REQUIRED flowrecon_cli_vtm
+  ARGS reconstruct "${_w}/tetrahedron.vtm" -o "${_w}/tet_nb_exact.vtu" --tp 0 --tr 1.1 --no-betti
+       --exact)
 # A cloud's Betti numbers come from the Hasse diagram: no cell budget applies
 # (at t_r 1.1 the tetrahedron is its six edges: three independent loops).
 flowrecon_add_cli_test(ReconstructBettiBudget EXIT 0
-  STDOUT "tet_budget\\.vtu: 10 cells, 10 of 15 steps at t_r 1\\.1\nBetti numbers: 1 3 0\n"
+  STDOUT "tet_budget\\.vtu: 6 cells, 10 of 15 steps at t_r 1\\.1\nBetti numbers: 1 3 0\n"
   FIXTURES_REQUIRED flowrecon_cli_vtm
   ARGS reconstruct "${_d}/tetrahedron.xyz" -o "${_w}/tet_budget.vtu" --tp 0 --tr 1.1
        --betti-max-cells 5)
 # Above the cell budget of a saved complex (its topology is computed on the
-# drawn cells): no Betti numbers, one warning, the file still written.
+# drawn cells): no Betti numbers, one warning, the file still written; the
+# compact output's own (in linear time) need no budget.
 flowrecon_add_cli_test(ReconstructBettiBudgetSaved EXIT 0 STDERR_LINES 1
   STDERR "warning: no Betti numbers: skipped for [0-9]+ cells, more than 5 "
-  STDOUT "^[^\n]*tet_budget_saved\\.vtu: 10 cells, 10 of 15 steps at t_r 1\\.1\n$"
+  STDOUT "^[^\n]*tet_budget_saved\\.vtu: 6 cells, 10 of 15 steps at t_r 1\\.1\ncompact output: [^\n]*\ncompact output's Betti numbers 1 3 0\n$"
   FIXTURES_REQUIRED flowrecon_cli_vtm
   ARGS reconstruct "${_w}/tetrahedron.vtm" -o "${_w}/tet_budget_saved.vtu" --tp 0 --tr 1.1
        --betti-max-cells 5)

@@ -1,7 +1,8 @@
 #!/bin/sh
 # Memory guard test under a cgroup memory limit (a container's, Slurm's): past
 # it the kernel kills the process with SIGKILL, so the guard must read the limit
-# and refuse first. In a cgroup limited to 200 MB, `flowrecon reconstruct` of a
+# and refuse first. In a cgroup limited to 200 MB, `flowrecon reconstruct
+# --exact` (the drawing of the stable manifolds, the largest output) of a
 # 2e5-point torus surface must stop with exit code 1 and the guard's one line
 # naming the cgroup limit; and a 20000-point torus at limits from refused to
 # fitting must each time either write its file or give that line, never be
@@ -44,7 +45,7 @@ trap 'exit 1' INT TERM
 run() {
   mkdir "$cgroup" 2>/dev/null && echo "$1" 2>/dev/null > "$cgroup/$limit_file" || { code=77; return; }
   sh -c 'echo $$ > "$1/cgroup.procs" || exit 77; shift; exec "$@"' sh "$cgroup" \
-    "$flowrecon" reconstruct "$2" -o "$3" --tr inf --tp 0 --quiet 2> "$work/cgroup.err"
+    "$flowrecon" reconstruct "$2" -o "$3" --tr inf --tp 0 --exact --quiet 2> "$work/cgroup.err"
   code=$?
   rmdir "$cgroup"
 }

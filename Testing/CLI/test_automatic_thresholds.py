@@ -11,6 +11,8 @@ at 10 000) close only
 as solids: wherever the answer is not the truth, the warning that the samples
 lie on a surface yet the reconstruction is solid must be printed. With explicit
 numbers there is no such line and the field data says nothing was chosen.
+Every file written (the default output, Delaunay simplices on the samples) must
+have the printed Betti numbers by GUDHI, right or wrong.
 Usage: test_automatic_thresholds.py FLOWRECON WORKDIR
 """
 import os
@@ -22,6 +24,7 @@ import generate_clouds as gc
 import numpy as np
 
 from flowrecon_testing import run as fr
+from flowrecon_testing.oracles import default_output_problems
 
 FLOWRECON, WORK = sys.argv[1], sys.argv[2]
 os.makedirs(WORK, exist_ok=True)
@@ -93,6 +96,7 @@ for shape, size in CLOUDS:
         window = fr.field(base + ".vtu", "StableWindow")
         if not window or abs(window[0] - lo) > 0.01 or abs(window[1] - hi) > 0.01:
             problems.append("field data StableWindow %s, printed (%g, %g]" % (window, lo, hi))
+        problems += default_output_problems(base + ".vtu", p.stdout, p.stderr)
     print("%s (%s points): %s" % (shape, size or "default",
                                   "OK " + m.group(0) if not problems else "WRONG: " + "; ".join(problems)))
     if problems:
@@ -113,6 +117,8 @@ for shape, size in THIN:
                                                      "warned as filled" if warned else "no filled warning"))
     if p.returncode != 0 or betti is None or (betti != truth and not warned):
         failures.append(shape + " (a wrong answer without the filled warning)")
+    elif default_output_problems(base + ".vtu", p.stdout, p.stderr):
+        failures.append(shape + ": " + "; ".join(default_output_problems(base + ".vtu", p.stdout, p.stderr)))
 
 # Explicit numbers: the old behaviour, nothing chosen.
 base = os.path.join(WORK, "explicit")

@@ -16,8 +16,8 @@ that circle). Checked, for each cloud:
   - `diagram`'s pairs of positive persistence equal GUDHI's as multisets per
     dimension, within 1e-12 relative, and its other pairs have persistence
     exactly 0;
-  - `reconstruct` of the cloud (deferred patches and flow lines) equals
-    `reconstruct` of the stored complex, cell for cell.
+  - `reconstruct --exact` of the cloud (deferred patches and flow lines)
+    equals `reconstruct --exact` of the stored complex, cell for cell.
 
 Run: /usr/bin/python3 test_exact_perturbed_values.py <path to flowrecon> <work dir>
      [--large N]  (also an N^3 grid, checked by hand: 30 takes minutes)
@@ -222,9 +222,10 @@ def check(name, points, degenerate):
         run("complex", xyz, "-o", base + "_eager.vtm", "--quiet", "--max-cells", "inf", "--no-unstable")
         for tp in ("0", "1.1"):
             for tr in ("1.5", "3"):
-                run("reconstruct", xyz, "-o", base + "_lazy.vtu", "--tr", tr, "--tp", tp, "--quiet")
+                run("reconstruct", xyz, "-o", base + "_lazy.vtu", "--tr", tr, "--tp", tp, "--quiet",
+                    "--exact")
                 run("reconstruct", base + "_eager.vtm", "-o", base + "_eager.vtu", "--tr", tr, "--tp",
-                    tp, "--quiet")
+                    tp, "--quiet", "--exact")
                 lc, la = fr.cells(base + "_lazy.vtu", CELL_ARRAYS)
                 ec, ea = fr.cells(base + "_eager.vtu", CELL_ARRAYS)
                 differ = [a for a in la if not np.array_equal(la[a], ea[a])]

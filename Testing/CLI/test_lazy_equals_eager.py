@@ -1,4 +1,5 @@
-"""The output-sensitive reconstruction against the eager one (its oracle).
+"""The output-sensitive reconstruction against the eager one (its oracle), both
+written as the exact stable manifolds (`reconstruct --exact`).
 
 Eager: `flowrecon complex --max-cells inf` draws every stable manifold, and
 `reconstruct` of that .vtm at --tr-max inf uses those cells (the whole nested
@@ -76,16 +77,16 @@ for name, xyz in clouds().items():
     for tp in ("0", "1.1", "1.5"):
         run("complex", base + ".xyz", "-o", base + "_eager.vtm", "--max-cells", "inf", "--no-unstable")
         run("reconstruct", base + "_eager.vtm", "-o", base + "_eager.vtu", "--tr", "inf",
-            "--tr-max", "inf", "--tp", tp)
+            "--tr-max", "inf", "--tp", tp, "--exact")
         # t_r 3 fills the denser torus's tube (9e5 cells): too slow to compare here.
         runs = RUNS[:3] if name == "denser torus" else RUNS
         for t, cap in runs[2:3] if tp == "1.5" else runs:
             capped = ["--tr-max", str(cap)] if cap else []
             if not run("reconstruct", base + ".xyz", "-o", base + "_lazy.vtu", "--tr", str(t),
-                       "--tp", tp, "--timings", *capped):
+                       "--tp", tp, "--timings", "--exact", *capped):
                 raise SystemExit("reconstruct --timings: no line on deferred patches")
             run("reconstruct", base + "_eager.vtm", "-o", base + "_eager_t.vtu", "--tr", str(t),
-                "--tp", tp)
+                "--tp", tp, "--exact")
             lv, la = cells(base + "_lazy.vtu", ARRAYS, np.inf)
             problems = []
             for eager, below, arrays in ((base + "_eager_t.vtu", np.inf, ARRAYS),

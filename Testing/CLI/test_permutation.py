@@ -1,6 +1,6 @@
 """The reconstruction does not depend on the order of the input lines.
 
-`flowrecon reconstruct` runs on a cloud and on random permutations of its lines
+`flowrecon reconstruct --exact` runs on a cloud and on random permutations of its lines
 (a random cube sample, a sphere sample, a torus sample, the exact integer grid
 6 x 6 x 5, which is degenerate and gets perturbed, and a sphere sample with
 duplicated lines), at the defaults (t_p 1.1, t_r 2) and at t_p 0. The outputs
@@ -121,7 +121,7 @@ def reconstruct(name, points, order, tp, tag):
     base = os.path.join(WORK, "%s_%s" % (name.replace(" ", "_"), tag))
     write(base + ".xyz", points[order])
     run("complex", base + ".xyz", "-o", base + ".vtm", "--no-stable", "--no-unstable")
-    run("reconstruct", base + ".xyz", "-o", base + "_tp%g.vtu" % tp, "--tp", str(tp))
+    run("reconstruct", base + ".xyz", "-o", base + "_tp%g.vtu" % tp, "--tp", str(tp), "--exact")
     canon = canonical_ids(points)
     node_of = nodes(base + ".vtm", order, canon)
     lo, hi = points.min(axis=0), points.max(axis=0)
@@ -172,7 +172,7 @@ def check_duplicates():
     with open(path, "w") as f:
         f.write("".join(lines[i] for i in pick.tolist()))
     out = os.path.join(WORK, "million_duplicates.vtu")
-    run("reconstruct", path, "-o", out, "--tr", "inf", "--tp", "0")
+    run("reconstruct", path, "-o", out, "--tr", "inf", "--tp", "0", "--exact")
     g = fr.read_grid(out)
     points, ncells = g.GetNumberOfPoints(), g.GetNumberOfCells()
     original = vtk_to_numpy(g.GetPointData().GetArray("vtkOriginalPointIds"))

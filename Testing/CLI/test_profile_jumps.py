@@ -18,12 +18,11 @@ import re
 import sys
 
 import numpy as np
-from flowrecon import vtkFlowComplex, vtkFlowComplexSimplification, vtkFlowReconstruction
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
 from flowrecon_testing import clouds as cl
 from flowrecon_testing import run as fr
-from flowrecon_testing.flowcomplex_io import array, get_block, make_polydata
+from flowrecon_testing.flowcomplex_io import array, get_block, reconstruction_pipeline
 
 FLOWRECON, WORK = sys.argv[1], sys.argv[2]
 TP, TR, K = 1.1, 2.0, 7
@@ -50,22 +49,6 @@ def cli_jumps(path):
     if not all(JUMP.match(l) for l in lines):
         raise SystemExit("unexpected jump lines:\n" + out)
     return lines
-
-
-def filters(points):
-    """(flow complex, reconstruction filter) of the VTK pipeline at TP and TR."""
-    fc = vtkFlowComplex()
-    fc.SetInputData(make_polydata(points))
-    simplification = vtkFlowComplexSimplification()
-    simplification.SetInputConnection(fc.GetOutputPort())
-    simplification.SetPersistenceThreshold(TP)
-    simplification.AutomaticPersistenceThresholdOff()
-    reconstruction = vtkFlowReconstruction()
-    reconstruction.SetInputConnection(simplification.GetOutputPort())
-    reconstruction.SetReconstructionThreshold(TR)
-    reconstruction.AutomaticReconstructionThresholdOff()
-    reconstruction.Update()
-    return fc, reconstruction
 
 
 def jump_arrays(profile):
@@ -110,7 +93,7 @@ for name, xyz in clouds().items():
     path = os.path.join(WORK, name.replace(" ", "_") + ".xyz")
     cl.write_xyz(path, xyz)
     problems = []
-    fc, reconstruction = filters(xyz)
+    fc, reconstruction = reconstruction_pipeline(xyz, TP, TR)
     reconstruction.SetNumberOfJumps(K)
     reconstruction.Update()
     profile = reconstruction.GetOutputDataObject(1)

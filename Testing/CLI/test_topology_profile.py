@@ -1,7 +1,7 @@
 """Betti numbers of reconstructions against GUDHI.
 
-For each cloud, `flowrecon reconstruct CLOUD --tr 2 --tr-max 4 --topology-profile
-P.csv` writes the nested family below 4, prints 'Betti numbers: b0 b1 b2' at
+For each cloud, `flowrecon reconstruct CLOUD --tr 2 --tr-max 4 --exact
+--topology-profile P.csv` writes the nested family of exact cells below 4, prints 'Betti numbers: b0 b1 b2' at
 t_r = 2 and the profile (threshold,b0,b1,b2: row k holds for t_r in
 (threshold_k, threshold_k+1]). The oracle is GUDHI: a SimplexTree holding every
 written cell with filtration = its Threshold (faces take the least value), and
@@ -76,7 +76,7 @@ for name, xyz in clouds().items():
     base = os.path.join(WORK, name.replace(" ", "_"))
     cl.write_xyz(base + ".xyz", xyz)
     out = run("reconstruct", base + ".xyz", "-o", base + ".vtu", "--tr", "2", "--tp", "1.1", "--tr-max", "4",
-              "--topology-profile", base + ".csv")
+              "--exact", "--topology-profile", base + ".csv")
     intervals, stored = gudhi_intervals(base + ".vtu")
     problems = []
     if printed_betti(out) != betti_at(intervals, 2):
@@ -97,7 +97,7 @@ for name, xyz in clouds().items():
     # Through the VTK filters, from a saved flow complex: the same profile.
     run("complex", base + ".xyz", "-o", base + ".vtm", "--quiet")
     out2 = run("reconstruct", base + ".vtm", "-o", base + "_filters.vtu", "--tr", "2", "--tp", "1.1",
-               "--tr-max", "4", "--topology-profile", base + "_filters.csv")
+               "--tr-max", "4", "--exact", "--topology-profile", base + "_filters.csv")
     if read_topology_profile(base + "_filters.csv") != profile or printed_betti(out2) != printed_betti(out):
         problems.append("the VTK filters give another profile")
     label = "%s: %d profile rows, Betti numbers at t_r 2 %s" % (name, len(profile),

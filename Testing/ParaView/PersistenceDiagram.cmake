@@ -19,15 +19,6 @@ if (FLOWRECON_BUILD_PARAVIEW_PLUGIN AND TARGET FlowRecon AND TARGET flowrecon AN
     FAIL_REGULAR_EXPRESSION "FAIL"
     LABELS "paraview"
     TIMEOUT 300)
-  add_test(NAME render.persistence_diagram
-    COMMAND sh "${CMAKE_CURRENT_LIST_DIR}/need_display.sh" "${FLOWRECON_PVPYTHON}"
-            --force-offscreen-rendering
-            "${CMAKE_CURRENT_LIST_DIR}/test_persistence_diagram_views.py"
-            "$<TARGET_FILE:FlowRecon>" "${CMAKE_CURRENT_BINARY_DIR}/persistence_diagram_views")
-  set_tests_properties(render.persistence_diagram PROPERTIES
-    PASS_REGULAR_EXPRESSION "PASS"
-    FAIL_REGULAR_EXPRESSION "FAIL"
-    SKIP_RETURN_CODE 77
-    LABELS "paraview;render"
-    TIMEOUT 180)
+  flowrecon_add_render_test(render.persistence_diagram test_persistence_diagram_views.py 180
+    "${CMAKE_CURRENT_BINARY_DIR}/persistence_diagram_views")
 endif ()

@@ -19,15 +19,6 @@ if (FLOWRECON_BUILD_PARAVIEW_PLUGIN AND TARGET FlowRecon AND TARGET flowrecon AN
     # connection (it aborted once under xvfb-run -j2).
     ENVIRONMENT "DISPLAY="
     TIMEOUT 300)
-  add_test(NAME render.profile_charts
-    COMMAND sh "${CMAKE_CURRENT_LIST_DIR}/need_display.sh" "${FLOWRECON_PVPYTHON}"
-            --force-offscreen-rendering
-            "${CMAKE_CURRENT_LIST_DIR}/test_profile_charts_views.py"
-            "$<TARGET_FILE:FlowRecon>" "${CMAKE_CURRENT_BINARY_DIR}/profile_charts_views")
-  set_tests_properties(render.profile_charts PROPERTIES
-    PASS_REGULAR_EXPRESSION "PASS"
-    FAIL_REGULAR_EXPRESSION "FAIL"
-    SKIP_RETURN_CODE 77
-    LABELS "paraview;render"
-    TIMEOUT 180)
+  flowrecon_add_render_test(render.profile_charts test_profile_charts_views.py 180
+    "${CMAKE_CURRENT_BINARY_DIR}/profile_charts_views")
 endif ()

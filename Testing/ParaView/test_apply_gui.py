@@ -12,8 +12,9 @@ applied by a click on the Properties panel's Apply button (pqApplyBehavior), bot
 reached through ctypes (flowrecon_testing/gui_qt.py). test_default_display.py checks the same defaults
 through Python's Show(); this is the GUI's own path:
   * Flow Complex and Flow Complex Simplification: shown in the render view with the
-    blocks CriticalPoints and GabrielEdges, coloured by the cell array Index, one
-    legend (Index);
+    blocks CriticalPoints and GabrielEdges (the simplification: their surviving
+    parts, SurvivingCriticalPoints and SurvivingGabrielEdges), coloured by the
+    cell array Index, one legend (Index);
   * Flow Reconstruction: outputs 0 (coloured by Index), 4 and 5 in the render view,
     one legend; 2 (sponsor arrows) and 1 (the reconstruction profile, whose chart
     opens on request) not shown; 3 (the topology profile) in a line chart beside the
@@ -268,7 +269,7 @@ def main():
     Render(view)
 
     fc = simp = None
-    for name in ("FlowComplex", "FlowComplexSimplification"):
+    for name, prefix in (("FlowComplex", ""), ("FlowComplexSimplification", "Surviving")):
         source = apply_from_menu(qt, accept, fc or reader, name)
         fc, simp = (source, None) if fc is None else (fc, source)
         shown = displays_in(view, source)
@@ -277,7 +278,8 @@ def main():
         say("test_apply_gui: %s after Apply: colouring %s, blocks %s, legends %s" % (
             name, colouring(d), list(d.BlockSelectors), legends(view)))
         check(colouring(d) == ("CELLS", "Index"), "%s is coloured by %s" % (name, colouring(d)))
-        check(list(d.BlockSelectors) == ["/Root/CriticalPoints", "/Root/GabrielEdges"],
+        check(list(d.BlockSelectors) == ["/Root/%sCriticalPoints" % prefix,
+                                         "/Root/%sGabrielEdges" % prefix],
               "%s shows the blocks %s" % (name, list(d.BlockSelectors)))
         check(legends(view) == ["Index"], "%s: legends %s" % (name, legends(view)))
 

@@ -9,13 +9,16 @@ colour legends, the blocks shown and the camera after Reset Camera.
   (sponsor arrows) not shown, output 4 (under-sampling points) not coloured,
   Point Gaussian spheres of radius Spacing: one colour legend in the view;
   output 5 (the topology text) left-justified in the upper left corner.
-- Flow Complex and Flow Complex Simplification (the plugin's display
-  FlowReconMultiBlockRepresentation and its initialization helper): only the
-  block CriticalPoints shown, coloured by the point array Index, whose colour map
-  is categorical with the four names of FlowComplex.xml; one colour legend.
+- Flow Complex and Flow Complex Simplification (the plugin's displays
+  FlowReconMultiBlockRepresentation and FlowReconSimplificationRepresentation
+  and their initialization helper): the blocks CriticalPoints and GabrielEdges
+  shown, for the simplification SurvivingCriticalPoints and
+  SurvivingGabrielEdges, coloured by the cell array Index, whose colour map is
+  categorical with the four names of FlowComplex.xml; one colour legend.
   Shown after a Flow Complex coloured by Index, the simplification keeps it.
-  Index is the active scalars of CriticalPoints (points) and StableManifolds
-  (cells), and Extract Block of CriticalPoints opens coloured by Index.
+  Index is the active scalars of the critical points (points), StableManifolds
+  and the Gabriel edges (cells), and Extract Block of CriticalPoints opens
+  coloured by Index.
 - Settings: the plugin's colour maps (Index, Extension) sit below the user's
   settings, and a user setting of the display's BlockSelectors wins (in a new
   session, so that the Index colour map is made again).
@@ -130,16 +133,23 @@ def check_categorical(label, array, names):
           "annotations %s" % (label, array, got, names))
 
 
-def check_plugin_display(label, display, view):
-    """What the plugin's display chooses: CriticalPoints and GabrielEdges,
-    coloured by the cell array Index (categorical, named), one colour legend."""
-    check(display.GetXMLName() == "FlowReconMultiBlockRepresentation",
-          "%s: the display is a %s" % (label, display.GetXMLName()))
+COMPLEX_DISPLAY = ("FlowReconMultiBlockRepresentation",
+                   ["/Root/CriticalPoints", "/Root/GabrielEdges"])
+SIMPLIFICATION_DISPLAY = ("FlowReconSimplificationRepresentation",
+                          ["/Root/SurvivingCriticalPoints", "/Root/SurvivingGabrielEdges"])
+
+
+def check_plugin_display(label, display, view, expected=COMPLEX_DISPLAY):
+    """What the plugin's display chooses: the display type and blocks of
+    `expected`, coloured by the cell array Index (categorical, named), one
+    colour legend."""
+    check(display.GetXMLName() == expected[0],
+          "%s: the display is a %s, expected %s" % (label, display.GetXMLName(), expected[0]))
     check(colouring(display) == ("CELLS", "Index"),
           "%s opens coloured by %s, expected CELLS Index" % (label, colouring(display)))
-    check(list(display.BlockSelectors) == ["/Root/CriticalPoints", "/Root/GabrielEdges"],
-          "%s opens with the blocks %s, expected CriticalPoints and GabrielEdges" % (
-              label, list(display.BlockSelectors)))
+    check(list(display.BlockSelectors) == expected[1],
+          "%s opens with the blocks %s, expected %s" % (
+              label, list(display.BlockSelectors), expected[1]))
     check(display.LookupTable is not None and
           display.LookupTable.SMProxy.GetGlobalID() ==
           simple.GetColorTransferFunction("Index").SMProxy.GetGlobalID(),
@@ -154,11 +164,13 @@ def check_plugin_display(label, display, view):
 
 
 def check_active_scalars(label, source):
-    """Index is the active scalars of CriticalPoints (points), StableManifolds and
-    GabrielEdges (cells); no other block has any."""
+    """Index is the active scalars of CriticalPoints and SurvivingCriticalPoints
+    (points), StableManifolds, GabrielEdges and SurvivingGabrielEdges (cells); no
+    other block has any."""
     out = blocks(servermanager.Fetch(source))
     expected = {"CriticalPoints": ("Index", None), "StableManifolds": (None, "Index"),
-                "GabrielEdges": (None, "Index")}
+                "GabrielEdges": (None, "Index"), "SurvivingCriticalPoints": ("Index", None),
+                "SurvivingGabrielEdges": (None, "Index")}
     check("GabrielEdges" in out, "%s: no block GabrielEdges (%s)" % (label, sorted(out)))
     for name, block in out.items():
         got = (active_name(block.GetPointData()), active_name(block.GetCellData()))
@@ -204,7 +216,7 @@ def simplification(reader, fc, cloud_bounds):
         colouring(display), list(display.BlockSelectors), legends(view)), flush=True)
     check(colouring(display)[1] != "Ratio",
           "Simplification opens coloured by the Ratio of PersistencePairs only")
-    check_plugin_display("Simplification", display, view)
+    check_plugin_display("Simplification", display, view, SIMPLIFICATION_DISPLAY)
     check_active_scalars("Simplification", simp)
     check_camera("Simplification", view, cloud_bounds)
 

@@ -155,7 +155,8 @@ def compare_cloud(name, points, ratio, least):
         # `flowrecon reconstruct` draws the grid at t_r itself: the same cells,
         # points and arrays (Multiplicity at t_r included).
         vtu = os.path.join(WORK, name.replace(" ", "_") + "_tr1.5.vtu")
-        run = subprocess.run([CLI, "reconstruct", xyz, "-o", vtu, "--tr", "1.5", "--tp", "1.1", "--quiet"],
+        run = subprocess.run([CLI, "reconstruct", xyz, "-o", vtu, "--tr", "1.5", "--tp", "1.1", "--exact",
+                              "--quiet"],
                              capture_output=True, text=True)
         check(run.returncode == 0, "flowrecon reconstruct %s: %s" % (xyz, run.stderr))
         lazy[2].ReconstructionThreshold = 1.5

@@ -19,9 +19,9 @@ from paraview import servermanager
 
 def serial(flowrecon, cloud, work):
     out = os.path.join(work, "serial.vtu")
-    # t_p and t_r chosen from the data, and the compact output (the filter's
-    # default Geometry in ParaView)
-    subprocess.run([flowrecon, "reconstruct", cloud, "-o", out, "--quiet", "--compact"], check=True)
+    # both at their defaults: t_p and t_r chosen from the data, and the compact
+    # output (the command line's default, and the filter's Geometry in ParaView)
+    subprocess.run([flowrecon, "reconstruct", cloud, "-o", out, "--quiet"], check=True)
     from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
     r = vtkXMLUnstructuredGridReader()
     r.SetFileName(out)

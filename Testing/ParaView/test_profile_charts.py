@@ -45,7 +45,7 @@ def cli(xyz, tr):
     """The CLI's profile, topology profile and printed Betti numbers at tr."""
     base = os.path.join(WORK, "cli_%g" % tr)
     p = subprocess.run([FLOWRECON, "reconstruct", xyz, "-o", base + ".vtu", "--tr", str(tr), "--tp", "1.1",
-                        "--tr-max", str(TMAX), "--profile", base + "_P.csv",
+                        "--tr-max", str(TMAX), "--exact", "--profile", base + "_P.csv",
                         "--topology-profile", base + "_B.csv"], capture_output=True, text=True)
     if p.returncode != 0:
         raise SystemExit("FAIL flowrecon reconstruct: " + p.stderr)

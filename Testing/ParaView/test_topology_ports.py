@@ -33,7 +33,7 @@ failures = []
 
 
 def cli(path):
-    p = subprocess.run([FLOWRECON, "reconstruct", path, "-o", path + ".vtu", "--tr-max", "4",
+    p = subprocess.run([FLOWRECON, "reconstruct", path, "-o", path + ".vtu", "--tr-max", "4", "--exact",
                         "--tr", "2", "--tp", "1.1",
                         "--topology-profile", path + ".csv"], capture_output=True, text=True)
     assert p.returncode == 0, p.stderr
@@ -76,7 +76,7 @@ def paraview(path):
 
 
 def cli_jumps(path):
-    p = subprocess.run([FLOWRECON, "reconstruct", path, "-o", path + "_all.vtu", "--tr-max", "inf",
+    p = subprocess.run([FLOWRECON, "reconstruct", path, "-o", path + "_all.vtu", "--tr-max", "inf", "--exact",
                         "--tr", "2", "--tp", "1.1", "--no-betti", "--jumps", "5"], capture_output=True, text=True)
     assert p.returncode == 0, p.stderr
     return [l for l in p.stdout.splitlines() if l.startswith("  step ")]

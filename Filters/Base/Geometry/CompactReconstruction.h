@@ -1,10 +1,12 @@
-// A compact stand-in for a reconstruction (a prototype, opt-in): Delaunay
-// simplices on the samples in place of the exact stable manifolds, about 2
-// triangles a sample on a surface instead of ~9 cells over constructed points.
-// An index-2 node c gives the Delaunay triangles its descending walk crosses
-// (docs/algorithm.md §4.2): its facet and each u v s* of an exit, a tree of
-// triangles glued along the walked edges whose leaves end on the Gabriel edges
-// where S(c) ends, so usually of S(c)'s homotopy type. An index-3 node gives
+// A compact stand-in for a reconstruction (the default output of `flowrecon
+// reconstruct`; `--exact` writes the exact one): Delaunay simplices on the
+// samples in place of the exact stable manifolds, about 2 triangles a sample
+// on a surface instead of ~9 cells over constructed points. An index-2 node c
+// gives the Delaunay triangles its descending walk crosses (docs/algorithm.md
+// §4.2): its facet and each u v s* of an exit, a tree of triangles glued along
+// the walked edges whose leaves end on the Gabriel edges where S(c) ends,
+// homeomorphic to S(c) when no triangle or edge is shared between steps
+// (docs/compact-output.md). An index-3 node gives
 // the Delaunay cells whose Voronoi vertex flows to it, an index-1 node its
 // Gabriel edge, an index-0 node its sample. Where two walks cross one
 // Delaunay triangle the two patches share it: counted, not resolved; where

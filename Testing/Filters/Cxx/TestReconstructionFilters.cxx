@@ -447,9 +447,86 @@ std::vector<Row> LineRows(vtkPolyData* pd)
 /// shares its input's points and arrays (no copy of the drawn geometry), the
 /// input is left as it was, and at t_p 0 the HasseDiagram block is rebuilt with
 /// the input's arcs, stubs toward infinity included.
+/// Per cell of `pd`, its point ids and the value of cell array `name`; the
+/// cells whose `keep` (a cell array, -1 for every cell) is 0.
+std::vector<std::vector<double>> CellRows(vtkPolyData* pd, const char* name, const char* keep)
+{
+  std::vector<std::vector<double>> rows;
+  vtkDataArray* value = pd->GetCellData()->GetArray(name);
+  vtkDataArray* filter = keep ? pd->GetCellData()->GetArray(keep) : nullptr;
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < pd->GetNumberOfCells(); ++c)
+  {
+    if (!filter || filter->GetComponent(c, 0) == 0)
+    {
+      pd->GetCellPoints(c, ids);
+      rows.push_back({ value->GetComponent(c, 0) });
+      for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+      {
+        rows.back().push_back(static_cast<double>(ids->GetId(k)));
+      }
+    }
+  }
+  return rows;
+}
+
+/// The blocks the display shows are the complete ones' parts with Cancelled 0:
+/// the same points (coordinates, NodeId, Index, CriticalValue) in order, the
+/// vertices of those points, the Gabriel edges in order over the same samples.
+void CheckSurvivingBlocks(vtkMultiBlockDataSet* simplified)
+{
+  std::vector<vtkPolyData*> b;
+  for (const char* name :
+    { "CriticalPoints", "SurvivingCriticalPoints", "GabrielEdges", "SurvivingGabrielEdges" })
+  {
+    b.push_back(vtkPolyData::SafeDownCast(Block(simplified, name)));
+  }
+  CHECK(std::count(b.begin(), b.end(), nullptr) == 0);
+  if (std::count(b.begin(), b.end(), nullptr) > 0)
+  {
+    return;
+  }
+  vtkPolyData *cp = b[0], *scp = b[1], *ge = b[2], *sge = b[3];
+  vtkDataArray* cancelled = cp->GetPointData()->GetArray("Cancelled");
+  std::vector<std::vector<double>> points, survivingPoints;
+  for (auto [pd, all] : { std::pair{ cp, false }, std::pair{ scp, true } })
+  {
+    for (vtkIdType i = 0; i < pd->GetNumberOfPoints(); ++i)
+    {
+      if (all || cancelled->GetComponent(i, 0) == 0)
+      {
+        std::vector<double> row(pd->GetPoint(i), pd->GetPoint(i) + 3);
+        for (const char* name : { "NodeId", "Index", "CriticalValue" })
+        {
+          row.push_back(pd->GetPointData()->GetArray(name)->GetComponent(i, 0));
+        }
+        (all ? survivingPoints : points).push_back(row);
+      }
+    }
+  }
+  CHECK(points == survivingPoints);
+  // Vertices as the NodeIds of their points, with the cell array Index.
+  std::vector<std::vector<double>> vertices, survivingVertices;
+  for (auto [pd, rows] : { std::pair{ cp, &vertices }, std::pair{ scp, &survivingVertices } })
+  {
+    for (const auto& row : CellRows(pd, "Index", nullptr))
+    {
+      const vtkIdType p = static_cast<vtkIdType>(row[1]);
+      if (pd == scp || cancelled->GetComponent(p, 0) == 0)
+      {
+        rows->push_back({ row[0], pd->GetPointData()->GetArray("NodeId")->GetComponent(p, 0) });
+      }
+    }
+  }
+  CHECK(!vertices.empty() && vertices == survivingVertices);
+  CHECK(sge->GetPoints()->GetNumberOfPoints() == ge->GetPoints()->GetNumberOfPoints());
+  CHECK(CellRows(ge, "NodeId", "Cancelled") == CellRows(sge, "NodeId", nullptr));
+}
+
 void CheckPassThrough(vtkMultiBlockDataSet* complex, vtkMultiBlockDataSet* simplified, double tp)
 {
-  CHECK(simplified->GetNumberOfBlocks() == complex->GetNumberOfBlocks() + 1);
+  // the complex's blocks, PersistencePairs and the two surviving blocks
+  CHECK(simplified->GetNumberOfBlocks() == complex->GetNumberOfBlocks() + 3);
   for (unsigned int b = 0; b < complex->GetNumberOfBlocks(); ++b)
   {
     const std::string name = complex->GetMetaData(b)->Get(vtkCompositeDataSet::NAME());
@@ -498,6 +575,7 @@ void TestShape(const std::string& name, const Cloud& cloud, std::array<long, 4> 
     const std::string label = name + ", t_p " + std::to_string(tp);
     vtkSmartPointer<vtkMultiBlockDataSet> simplified = Simplified(complex, tp);
     CheckPassThrough(complex, simplified, tp);
+    CheckSurvivingBlocks(simplified);
     CHECK(Block(simplified, "PersistencePairs") != nullptr);
     auto* cp = vtkPolyData::SafeDownCast(Block(simplified, "CriticalPoints"));
     CHECK(cp && cp->GetPointData()->GetArray("Cancelled"));

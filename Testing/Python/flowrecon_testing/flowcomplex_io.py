@@ -94,6 +94,25 @@ def run_filter(points, **properties):
     return out, messages
 
 
+def reconstruction_pipeline(points, tp, tr):
+    """(flow complex, reconstruction) filters of the VTK pipeline vtkFlowComplex ->
+    vtkFlowComplexSimplification -> vtkFlowReconstruction on an (n, 3) array at the
+    given t_p and t_r (no automatic choice), updated."""
+    from flowrecon import vtkFlowComplexSimplification, vtkFlowReconstruction
+    fc = import_filter()()
+    fc.SetInputData(make_polydata(points))
+    simplification = vtkFlowComplexSimplification()
+    simplification.SetInputConnection(fc.GetOutputPort())
+    simplification.SetPersistenceThreshold(tp)
+    simplification.AutomaticPersistenceThresholdOff()
+    reconstruction = vtkFlowReconstruction()
+    reconstruction.SetInputConnection(simplification.GetOutputPort())
+    reconstruction.SetReconstructionThreshold(tr)
+    reconstruction.AutomaticReconstructionThresholdOff()
+    reconstruction.Update()
+    return fc, reconstruction
+
+
 # --------------------------------------------------------------------------- blocks
 
 
