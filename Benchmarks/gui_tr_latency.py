@@ -11,7 +11,8 @@ and shown, then Flow Complex, Flow Complex Simplification and Flow Reconstructio
 each chosen from the Filters menu and applied with the Apply button, every property
 at its default; then Automatic Reconstruction Threshold is turned off and t_r set to
 each of FLOWRECON_TR (default "3 2.5 3.5 2.8 3.2"), each applied with the Apply
-button. For every Apply the script prints the seconds from the click to idle, and
+button (with FLOWRECON_GEOMETRY=exact, Geometry is set to the exact stable manifolds
+with Automatic Reconstruction Threshold; the default shows the compact geometry). For every Apply the script prints the seconds from the click to idle, and
 where they went: in the click (the pipeline's update), in the filter's own
 RequestData, and in the renders of each view (render windows' Start/End events).
 Idle is the last render's end once nothing has been drawn for FLOWRECON_QUIET s
@@ -144,6 +145,8 @@ def main():
     SetActiveSource(recon)
     qt.process_events()
     recon.AutomaticReconstructionThreshold = 0
+    if os.environ.get("FLOWRECON_GEOMETRY") == "exact":
+        recon.Geometry = "Exact stable manifolds"
     mark_modified(qt, recon)
     measured_apply(qt, accept, renders, "Automatic t_r off", quiet, [algorithm])
     mark = os.environ.get("FLOWRECON_MARK")

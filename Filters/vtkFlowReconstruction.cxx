@@ -4,6 +4,8 @@
 
 #include "PipelinePorts.h"
 #include "AutomaticThresholds.h"
+#include "CompactConversion.h"
+#include "CompactFamily.h"
 #include "CoreCall.h"
 #include "DeferredReconstruction.h"
 #include "FlowComplexConversion.h"
@@ -126,6 +128,8 @@ struct vtkFlowReconstruction::Cache
   /// share their arrays.
   vtkSmartPointer<vtkUnstructuredGrid> Full;
   vtkSmartPointer<vtkTable> Profile;
+  /// With Geometry compact: the walks of the nodes below its T_max.
+  std::unique_ptr<flowrecon::CompactFamily> Compact;
 };
 
 /// The t_r shown, and the automatic choice that gave it (when Chosen).
@@ -221,6 +225,11 @@ int vtkFlowReconstruction::RequestData(
   {
     flowrecon::EmptyOutputs(outputVector);
     return 0;
+  }
+  if (this->Geometry == GEOMETRY_COMPACT && !this->PrepareCompact(tmax))
+  {
+    flowrecon::EmptyOutputs(outputVector);
+    return this->GetAbortExecute() ? 1 : 0;
   }
   this->UsedReconstructionThreshold = selection.Threshold;
   this->SetProgressText("output");
@@ -402,6 +411,16 @@ void vtkFlowReconstruction::FillOutputs(vtkMultiBlockDataSet* input, double tmax
   }
   flowrecon::TopologyTextToVTK(
     flowrecon::TopologyLine(grid, topology, undersampling, t, tmax, why), grid, text);
+  // The compact cells in place of the exact ones, once the field data is
+  // written (its counts go after the arrays the states' spreadsheets show).
+  if (this->Geometry == GEOMETRY_COMPACT && c.Compact)
+  {
+    std::vector<double> thresholds;
+    const flowrecon::CompactComplex compact = c.Compact->At(t, thresholds);
+    flowrecon::CompactCellsToVTK(compact,
+      std::vector<flowrecon::Point3>(fc.Points.begin(), fc.Points.begin() + fc.NumberOfInputPoints),
+      fc.Nodes, thresholds, grid);
+  }
   // What ParaView colours by in a render view: the reconstruction by Index (the
   // array Flow Complex's critical points and stable manifolds are coloured by),
   // the under-sampling points by nothing, so that the view has one colour legend.
@@ -480,6 +499,32 @@ bool vtkFlowReconstruction::DrawGeometry(double tmax)
 }
 
 //------------------------------------------------------------------------------
+bool vtkFlowReconstruction::PrepareCompact(double tmax)
+{
+  Cache& c = *this->Cached;
+  if (c.Compact && c.Compact->MaximumThreshold() == tmax)
+  {
+    return true;
+  }
+  c.Compact.reset();
+  flowrecon::Progress progress = flowrecon::AlgorithmProgress(this);
+  progress.Report = [this](double f, const char* phase) {
+    this->SetProgressText(phase);
+    this->UpdateProgress(0.3 + 0.6 * f);
+  };
+  bool finished = false;
+  flowrecon::CallCore(
+    this, "compact geometry",
+    [&]() {
+      c.Compact = std::make_unique<flowrecon::CompactFamily>(c.FC, c.Carrier, c.Run, tmax, nullptr,
+        progress, "lower MaximumThreshold, or choose the exact Geometry");
+      finished = true;
+    },
+    []() {});
+  return finished;
+}
+
+//------------------------------------------------------------------------------
 void vtkFlowReconstruction::ComputeBettiNumbers(double tmax)
 {
   // The Betti numbers of every t_r <= T_max at once: one barcode of the family.
@@ -519,5 +564,6 @@ void vtkFlowReconstruction::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "UnderSamplingWindow: " << this->UnderSamplingWindow << "\n";
   os << indent << "ComputeTopology: " << (this->ComputeTopology ? "on" : "off") << "\n";
   os << indent << "NumberOfJumps: " << this->NumberOfJumps << "\n";
+  os << indent << "Geometry: " << (this->Geometry == GEOMETRY_COMPACT ? "compact" : "exact") << "\n";
   os << indent << "NumberOfQueueRuns: " << this->NumberOfQueueRuns << "\n";
 }

@@ -182,6 +182,29 @@ public:
   vtkGetMacro(NumberOfJumps, int);
   ///@}
 
+  ///@{
+  /**
+   * The cells of port 0. GEOMETRY_EXACT (the default): the stable manifolds
+   * themselves, over the samples and points constructed on Voronoi edges, with
+   * the insertion data of every cell (all the arrays below). GEOMETRY_COMPACT:
+   * Delaunay simplices on the samples standing for them (docs/compact-output.md),
+   * about 2 triangles a sample on a surface instead of about 9 cells, with cell
+   * data NodeId, Index, Threshold and Claims only; the walks they come from are
+   * made once per input and MaximumThreshold, so that a new t_r only selects.
+   * The Betti numbers, profiles and warnings are the same in both.
+   */
+  vtkSetClampMacro(Geometry, int, GEOMETRY_EXACT, GEOMETRY_COMPACT);
+  vtkGetMacro(Geometry, int);
+  void SetGeometryToExact() { this->SetGeometry(GEOMETRY_EXACT); }
+  void SetGeometryToCompact() { this->SetGeometry(GEOMETRY_COMPACT); }
+  ///@}
+
+  enum Geometries
+  {
+    GEOMETRY_EXACT = 0,
+    GEOMETRY_COMPACT = 1
+  };
+
   /// How many times the priority queue has run (once per new input).
   vtkGetMacro(NumberOfQueueRuns, int);
 
@@ -212,6 +235,7 @@ protected:
   bool ComputeTopology = true;
   vtkIdType MaximumTopologyCells = 4000000;
   int NumberOfJumps = 5;
+  int Geometry = GEOMETRY_EXACT;
   int NumberOfQueueRuns = 0;
 
 private:
@@ -229,6 +253,9 @@ private:
   /// The Betti numbers of the drawn family into the cache (an error there is
   /// kept as its TopologyError: the reconstruction is still shown).
   void ComputeBettiNumbers(double tmax);
+  /// The compact family below `tmax` into the cache, unless it is there
+  /// (false: failed or aborted).
+  bool PrepareCompact(double tmax);
   /// The t_r shown below `tmax`, chosen automatically or given (false: it
   /// cannot be chosen, an error reported).
   bool SelectThreshold(double tmax, Selection& selection);

@@ -2,6 +2,7 @@
 
 #include "PipelinePorts.h"
 #include "CloudReconstruction.h"
+#include "CompactConversion.h"
 #include "CoreCall.h"
 #include "FlowComplexBuilder.h"
 #include "FlowReconNames.h"
@@ -155,6 +156,7 @@ int vtkPointCloudReconstruction::RequestData(
   settings.Cap = this->MaximumThreshold;
   settings.UnderSamplingWindow = this->UnderSamplingWindow;
   settings.Advice = "lower Maximum Threshold, or use fewer points";
+  settings.Compact = this->Geometry == GEOMETRY_COMPACT;
 
   // The diagram first: its flow complex is freed before the reconstruction's
   // is built, so the peak is the larger of the two, not their sum.
@@ -190,6 +192,10 @@ int vtkPointCloudReconstruction::RequestData(
     vtkWarningMacro(<< "no Betti numbers: " << report.TopologyError);
   }
   AnswerToVTK(report, settings, grid, profile, topology, undersampling, text);
+  if (settings.Compact)
+  {
+    flowrecon::CompactCellsToVTK(report.Compact, samples, report.Nodes, report.NodeThreshold, grid);
+  }
   if (!diagramError.empty())
   {
     vtkWarningMacro(<< "no persistence diagram: " << diagramError
@@ -215,6 +221,7 @@ void vtkPointCloudReconstruction::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "MaximumThreshold: " << this->MaximumThreshold << "\n";
+  os << indent << "Geometry: " << (this->Geometry == GEOMETRY_COMPACT ? "compact" : "exact") << "\n";
   os << indent << "UnderSamplingWindow: " << this->UnderSamplingWindow << "\n";
   os << indent << "ComputePersistenceDiagram: " << this->ComputePersistenceDiagram << "\n";
   os << indent << "UsedReconstructionThreshold: " << this->UsedReconstructionThreshold << "\n";

@@ -78,6 +78,22 @@ public:
   ///@}
 
   ///@{
+  /**
+   * The cells of port 0, as vtkFlowReconstruction's Geometry: the exact stable
+   * manifolds (GEOMETRY_EXACT, the default) or Delaunay simplices on the
+   * samples standing for them (GEOMETRY_COMPACT, ParaView's default).
+   */
+  vtkSetClampMacro(Geometry, int, GEOMETRY_EXACT, GEOMETRY_COMPACT);
+  vtkGetMacro(Geometry, int);
+  ///@}
+
+  enum Geometries
+  {
+    GEOMETRY_EXACT = 0,
+    GEOMETRY_COMPACT = 1
+  };
+
+  ///@{
   /// The thresholds of the last output (chosen from the data).
   vtkGetMacro(UsedReconstructionThreshold, double);
   vtkGetMacro(UsedPersistenceThreshold, double);
@@ -105,6 +121,7 @@ protected:
   double MaximumThreshold = 5.0;
   double UnderSamplingWindow = 1.1;
   bool ComputePersistenceDiagram = true;
+  int Geometry = GEOMETRY_EXACT;
   double UsedReconstructionThreshold = 0;
   double UsedPersistenceThreshold = 0;
 

@@ -128,7 +128,9 @@ def main():
         path, n_points, t_p, t_r, info.GetNumberOfCells(), info.GetNumberOfPoints()))
     if n_points < 4 or info.GetNumberOfCells() == 0:
         raise SystemExit("render.py: empty input or reconstruction")
-    for name in ("CriticalValue", "Index", "Step", "Priority", "Threshold"):
+    # the compact geometry (the filter's default): cells on the samples with the
+    # node each stands for; the insertion data (Step, Priority) is in the profile
+    for name in ("NodeId", "Index", "Threshold"):
         if name not in recon.CellData.keys():
             raise SystemExit("render.py: reconstruction has no cell array %s" % name)
 

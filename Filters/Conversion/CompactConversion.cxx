@@ -18,9 +18,9 @@
 namespace flowrecon
 {
 
-void CompactToVTK(const CompactComplex& compact, const std::vector<Point3>& samples,
+void CompactCellsToVTK(const CompactComplex& compact, const std::vector<Point3>& samples,
   const std::vector<Node>& nodes, const std::vector<double>& nodeThreshold,
-  const std::array<Id, 4>& betti, vtkUnstructuredGrid* grid)
+  vtkUnstructuredGrid* grid)
 {
   const vtkIdType cells = static_cast<vtkIdType>(compact.NumberOfCells());
   vtkNew<vtkCellArray> cellArray;
@@ -69,7 +69,10 @@ void CompactToVTK(const CompactComplex& compact, const std::vector<Point3>& samp
   {
     add(compact.Tetrahedra[k].data(), 4, compact.TetrahedronNode[k], VTK_TETRA, 1);
   }
+  vtkNew<vtkFieldData> kept;
+  kept->ShallowCopy(grid->GetFieldData());
   grid->Initialize();
+  grid->SetFieldData(kept);
   grid->SetPoints(MakePoints(samples));
   grid->SetCells(types, cellArray);
   for (vtkDataArray* a : std::initializer_list<vtkDataArray*>{ nodeId, index, threshold, claims })
@@ -77,12 +80,20 @@ void CompactToVTK(const CompactComplex& compact, const std::vector<Point3>& samp
     grid->GetCellData()->AddArray(a);
   }
   grid->GetCellData()->SetActiveScalars(names::Index);
+}
+
+void CompactToVTK(const CompactComplex& compact, const std::vector<Point3>& samples,
+  const std::vector<Node>& nodes, const std::vector<double>& nodeThreshold,
+  const std::array<Id, 4>& betti, vtkUnstructuredGrid* grid)
+{
   auto field = NamedArray<vtkIdTypeArray>(names::BettiNumbers);
   for (int d = 0; d < 3; ++d)
   {
     field->InsertNextValue(static_cast<vtkIdType>(betti[d]));
   }
+  grid->GetFieldData()->Initialize();
   grid->GetFieldData()->AddArray(field);
+  CompactCellsToVTK(compact, samples, nodes, nodeThreshold, grid);
   const std::pair<const char*, Id> counts[3] = { { names::SharedTriangles, compact.SharedTriangles },
     { names::RevisitedTriangles, compact.RevisitedTriangles },
     { names::FilledVoids, compact.FilledVoids } };

@@ -22,6 +22,12 @@ void CompactToVTK(const CompactComplex& compact, const std::vector<Point3>& samp
   const std::vector<Node>& nodes, const std::vector<double>& nodeThreshold,
   const std::array<Id, 4>& betti, vtkUnstructuredGrid* grid);
 
+/// `grid`'s cells and cell data := those of `compact`, as CompactToVTK's; its
+/// field data (a filter's Betti numbers and thresholds) stays.
+void CompactCellsToVTK(const CompactComplex& compact, const std::vector<Point3>& samples,
+  const std::vector<Node>& nodes, const std::vector<double>& nodeThreshold,
+  vtkUnstructuredGrid* grid);
+
 } // namespace flowrecon
 
 #endif

@@ -5,7 +5,8 @@
 // closed 2-manifolds (each edge in exactly two triangles) of Euler
 // characteristic 2 and 0, counted here from the cells; at t_r = inf, the
 // complement of an open cell (contractible); and each patch alone, whose
-// Delaunay triangles must have the Betti numbers of its exact stable manifold.
+// Delaunay triangles must have the Betti numbers of its exact stable manifold;
+// and the selection, for each t_r, from the pieces prepared once for T_max.
 #include "Check.h"
 #include "Clouds.h"
 #include "ReconFixtures.h"
@@ -288,6 +289,48 @@ void PatchByPatch(const std::string& name, const std::vector<Point3>& p)
   CHECK(fast == 0); // Euler characteristic and duality against cell homology
 }
 
+/// Whether two compact complexes hold the same cells, nodes and counts.
+bool SameComplex(const CompactComplex& a, const CompactComplex& b)
+{
+  return a.Vertices == b.Vertices && a.VertexNode == b.VertexNode && a.Edges == b.Edges &&
+    a.EdgeNode == b.EdgeNode && a.Triangles == b.Triangles && a.TriangleNode == b.TriangleNode &&
+    a.TriangleClaims == b.TriangleClaims && a.Tetrahedra == b.Tetrahedra &&
+    a.TetrahedronNode == b.TetrahedronNode && a.SharedTriangles == b.SharedTriangles &&
+    a.RevisitedTriangles == b.RevisitedTriangles && a.FilledVoids == b.FilledVoids &&
+    a.Voids == b.Voids && a.Betti == b.Betti && a.ExactFallbacks == b.ExactFallbacks;
+}
+
+/// The pieces of the reconstruction at T (what a filter keeps) give, for every
+/// t_r <= T, the complex computed from scratch for the nodes at t_r, and
+/// nothing but the nodes asked for.
+void SelectedFromPieces(const std::string& name, const std::vector<Point3>& p, double tmax)
+{
+  const Built b = Build(p);
+  const CompactPieces pieces =
+    PrepareCompact(*b.Re, b.Complex.Nodes, ReconstructionNodes(b.Complex, tmax));
+  int same = 0, tried = 0;
+  Id cells = 0;
+  for (const double tr : { 1.2, 1.6, 2.0, 2.5, 3.0, tmax })
+  {
+    const std::vector<Id> selected = ReconstructionNodes(b.Complex, tr);
+    const CompactComplex fresh = CompactReconstruction(*b.Re, b.Complex.Nodes, selected);
+    const CompactComplex chosen = SelectCompact(*b.Re, b.Complex.Nodes, pieces, selected);
+    ++tried;
+    same += SameComplex(fresh, chosen) ? 1 : 0;
+    CHECK(fresh.NumberOfCells() >= cells); // the family grows with t_r
+    cells = fresh.NumberOfCells();
+    std::set<Id> asked(selected.begin(), selected.end());
+    for (const Id node : chosen.TriangleNode)
+    {
+      CHECK(asked.count(node) == 1);
+    }
+  }
+  std::cout << "-- " << name << ": " << same << " of " << tried
+            << " selections equal to the complex computed anew; " << cells << " cells at T\n";
+  CHECK(same == tried);
+  CHECK(cells > 0);
+}
+
 } // namespace
 
 int main()
@@ -301,5 +344,7 @@ int main()
   Everything("torus, 3000 i.i.d. points", clouds::Torus(3000, 7));
   PatchByPatch("cube, 1500 i.i.d. points", clouds::Cube(1500, 8));
   PatchByPatch("torus, 1500 i.i.d. points", clouds::Torus(1500, 9));
+  SelectedFromPieces("torus, 3000 i.i.d. points", clouds::Torus(3000, 10), 4);
+  SelectedFromPieces("cube, 2000 i.i.d. points", clouds::Cube(2000, 11), 4);
   return check::Finish("TestCompactReconstruction");
 }

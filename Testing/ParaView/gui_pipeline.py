@@ -8,7 +8,7 @@
 The GUI's own Python loads the plugin (unless PV_PLUGIN_PATH already did), reads the
 cloud with the CSV reader, applies Flow Complex -> Flow Complex Simplification ->
 Flow Reconstruction with their defaults, checks the outputs (non-empty, block and array
-names, profile columns), colours the reconstruction by CriticalValue in the GUI's render
+names, profile columns), colours the reconstruction by Threshold in the GUI's render
 view and saves <prefix>.png. Prints (to the terminal, with os.write: print() would go to
 the Output Messages window) "gui_pipeline: PASS" and os._exit(0)s, or the traceback and
 os._exit(1): the GUI has no quit from Python. FLOWRECON_EXIT=0 keeps
@@ -87,10 +87,13 @@ def main():
         info.GetDataSetTypeAsString(), info.GetNumberOfPoints(), info.GetNumberOfCells()))
     check(info.GetDataSetTypeAsString() == "vtkUnstructuredGrid", "reconstruction type")
     check(info.GetNumberOfCells() > 1000, "reconstruction has %d cells" % info.GetNumberOfCells())
+    # the compact geometry (the default): Delaunay simplices on the samples only
     keys = recon.CellData.keys()
-    for a in ("Step", "Priority", "Threshold", "Extension", "Sponsor", "NodeId", "Index",
-              "CriticalValue"):
+    for a in ("Threshold", "NodeId", "Index", "Claims"):
         check(a in keys, "reconstruction has no cell array %s (has %s)" % (a, keys))
+    samples = servermanager.Fetch(recon).GetNumberOfPoints()
+    check(info.GetNumberOfPoints() == samples and info.GetNumberOfCells() <= 4 * samples,
+          "compact reconstruction: %d points, %d cells" % (samples, info.GetNumberOfCells()))
     threshold = recon.CellData["Threshold"].GetRange()
     t_r = servermanager.Fetch(recon).GetFieldData().GetArray("ReconstructionThreshold").GetValue(0)
     check(1.5 < t_r <= 5 and threshold[1] < t_r, "Threshold range %s at t_r %s" % (threshold, t_r))
@@ -102,15 +105,15 @@ def main():
     arrows = OutputPort(recon, 2)
     check(arrows.GetDataInformation().GetNumberOfCells() > 0, "no sponsor arrows")
 
-    # render in the GUI's view, coloured by CriticalValue
+    # render in the GUI's view, coloured by Threshold (every cell's is below t_r)
     view = GetActiveViewOrCreate("RenderView")
     display = Show(recon, view)
-    ColorBy(display, ("CELLS", "CriticalValue"))
+    ColorBy(display, ("CELLS", "Threshold"))
     display.RescaleTransferFunctionToDataRange(True, False)
     display.SetScalarBarVisibility(view, True)
-    lut = GetColorTransferFunction("CriticalValue")
+    lut = GetColorTransferFunction("Threshold")
     rng = lut.RGBPoints[0], lut.RGBPoints[-4]
-    check(0.0 <= rng[0] < rng[1] < 1.0, "CriticalValue colour range %s" % (rng,))
+    check(0.0 <= rng[0] < rng[1] < t_r, "Threshold colour range %s at t_r %s" % (rng, t_r))
     view.CameraPosition = [1.5, -3.5, 2.6]
     view.CameraFocalPoint = [0.0, 0.0, 0.4]
     view.CameraViewUp = [0.0, 0.0, 1.0]
@@ -118,7 +121,7 @@ def main():
     Render(view)
     SaveScreenshot(out + ".png", view, ImageResolution=[800, 600])
     check(os.path.getsize(out + ".png") > 10000, "screenshot %s too small" % (out + ".png"))
-    say("gui_pipeline: wrote %s.png (CriticalValue %.3g..%.3g)" % (out, rng[0], rng[1]))
+    say("gui_pipeline: wrote %s.png (Threshold %.3g..%.3g)" % (out, rng[0], rng[1]))
     say("gui_pipeline: PASS")
 
 

@@ -91,7 +91,8 @@ def pipeline(reader, defer, cap):
     # Given thresholds (t_p 1.1): the eager and the lazy run at each t_r.
     simp = FlowComplexSimplification(Input=fc, AutomaticPersistenceThreshold=0)  # noqa: F821
     recon = FlowReconstruction(Input=simp, MaximumThreshold=cap,  # noqa: F821
-                               AutomaticReconstructionThreshold=0)
+                               AutomaticReconstructionThreshold=0,
+                               Geometry="Exact stable manifolds")
     return fc, simp, recon
 
 

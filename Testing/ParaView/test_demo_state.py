@@ -4,7 +4,8 @@ what `paraview --state=Data/demo.pvsm` does: its data file is the relative path
 Data/two_hemispheres.xyz) with the plugin auto-loaded from PV_PLUGIN_PATH, and gives the
 demo pipeline, read with the plugin's own reader: the reconstruction at the automatic
 t_r (about 2.16 here) and, hidden, the one at t_r 2.5, of which it is the part below
-its t_r. Run from the repository root:
+its t_r (checked on the exact geometry; the state shows the compact one). Run from
+the repository root:
 pvpython Testing/ParaView/test_demo_state.py (test_states.py loads every state from
 elsewhere).
 """
@@ -29,13 +30,29 @@ files = reader.FileName
 files = [files] if isinstance(files, str) else list(files)
 if files != ["Data/two_hemispheres.xyz"]:
     sys.exit("FAIL: reader file %s" % files)
+# The state's reconstructions show the compact geometry (the default): Delaunay
+# simplices on the samples only, about 2 per sample on these surfaces.
+auto_source = simple.FindSource(AUTO)
+auto_source.UpdatePipeline()
+from paraview import servermanager  # noqa: E402
+
+compact = servermanager.Fetch(auto_source)
+samples = simple.FindSource("two_hemispheres.xyz")
+samples.UpdatePipeline()
+n = samples.GetDataInformation().GetNumberOfPoints()
+if compact.GetNumberOfPoints() != n or not 0 < compact.GetNumberOfCells() <= 3 * n:
+    sys.exit("FAIL: the compact reconstruction has %d points (samples: %d) and %d cells"
+             % (compact.GetNumberOfPoints(), n, compact.GetNumberOfCells()))
+compact_nodes = {compact.GetCellData().GetArray("NodeId").GetValue(c)
+                 for c in range(compact.GetNumberOfCells())}
+# The exact geometry is one property away; its nesting in t_r is checked below.
 cells = {}
 for name in (AUTO, "Reconstruction t_r 2.5"):
     source = simple.FindSource(name)
+    source.Geometry = "Exact stable manifolds"
     source.UpdatePipeline()
     cells[name] = source.GetDataInformation().GetNumberOfCells()
 print("cells:", cells, "in", os.getcwd())
-from paraview import servermanager
 
 chosen = servermanager.Fetch(simple.FindSource(AUTO)).GetFieldData().GetArray("ReconstructionThreshold")
 t_r = chosen.GetValue(0) if chosen else None
@@ -60,6 +77,10 @@ def cell_keys(name, below=None):
 
 
 small, large = cell_keys(AUTO), cell_keys("Reconstruction t_r 2.5", below=t_r)
+exact_nodes = {node for node, _ in small}
+if not compact_nodes <= exact_nodes:
+    sys.exit("FAIL: %d compact cells stand for nodes not in the exact reconstruction"
+             % len(compact_nodes - exact_nodes))
 if small != large:
     sys.exit("FAIL: the automatic reconstruction is not the Threshold < t_r part of the t_r 2.5 one "
              "(%d vs %d cells, %d in common)" % (len(small), len(large), len(small & large)))

@@ -19,9 +19,9 @@ from paraview import servermanager
 
 def serial(flowrecon, cloud, work):
     out = os.path.join(work, "serial.vtu")
-    # both at their defaults: t_p and t_r chosen from the data; the exact cells,
-    # as the filter writes them
-    subprocess.run([flowrecon, "reconstruct", cloud, "-o", out, "--exact", "--quiet"], check=True)
+    # both at their defaults: t_p and t_r chosen from the data, and the compact
+    # output (the command line's default, and the filter's Geometry in ParaView)
+    subprocess.run([flowrecon, "reconstruct", cloud, "-o", out, "--quiet"], check=True)
     from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
     r = vtkXMLUnstructuredGridReader()
     r.SetFileName(out)

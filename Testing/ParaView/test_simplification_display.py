@@ -150,7 +150,8 @@ def displays(fc, simp):
 
 def reconstruction(source):
     recon = FlowReconstruction(  # noqa: F821 (defined by LoadPlugin)
-        Input=source, AutomaticReconstructionThreshold=0, ReconstructionThreshold=TR)
+        Input=source, AutomaticReconstructionThreshold=0, ReconstructionThreshold=TR,
+        Geometry="Exact stable manifolds")
     return servermanager.Fetch(recon)
 
 

@@ -19,17 +19,28 @@ namespace flowrecon
 namespace
 {
 
-/// A Delaunay triangle (sorted vertex ids: input or triangulation ones) and
-/// the node whose walk crosses it.
-struct Claim
+using Claim = CompactClaim;
+using Neighbourhood = std::vector<std::array<std::int32_t, 4>>;
+
+/// Each Delaunay cell's neighbours (CompactPieces::Neighbours).
+Neighbourhood Neighbours(const Triangulation& tri)
 {
-  std::array<Id, 3> Triangle;
-  Id Node;
-  bool operator<(const Claim& o) const
-  {
-    return this->Triangle != o.Triangle ? this->Triangle < o.Triangle : this->Node < o.Node;
-  }
-};
+  Neighbourhood neighbours(static_cast<std::size_t>(tri.NumberOfCells()));
+  ParallelSlices(tri.NumberOfCells(), Id(1) << 16, Progress(), 0.0, 0.0, "compact cells",
+    [&](Id first, Id last) {
+      for (Id c = first; c < last; ++c)
+      {
+        const CellHandle cell = tri.Cell(c);
+        for (int k = 0; k < 4; ++k)
+        {
+          const CellHandle next = cell->neighbor(k);
+          neighbours[c][k] =
+            tri.Dt().is_infinite(next) ? -1 : static_cast<std::int32_t>(tri.CellId(next));
+        }
+      }
+    });
+  return neighbours;
+}
 
 template <std::size_t N>
 std::array<Id, N> InputSimplex(const Retriangulation& re, const std::array<Id, N>& vertices)
@@ -57,14 +68,38 @@ bool SameSimplex(const Node& node, const std::array<Id, N>& simplex)
   return N == 4 || node.Simplex[N] < 0;
 }
 
-/// The triangles the walks of `patches` (index-2 node ids) cross, each kept
-/// once; shared and revisited ones counted.
-void AddPatchTriangles(const Retriangulation& re, const std::vector<Node>& nodes,
-  const std::vector<Id>& patches, const Progress& progress, CompactComplex& out)
+/// `claim` with the cells on the two sides of its triangle `t` (triangulation ids).
+Claim Sides(const Triangulation& tri, const std::array<Id, 3>& t, Claim claim)
+{
+  CellHandle cell;
+  int opposite = 0;
+  if (!tri.Facet(t[0], t[1], t[2], cell, opposite))
+  {
+    throw std::logic_error("compact reconstruction: a triangle that is not a Delaunay facet");
+  }
+  for (int side = 0; side < 2; ++side)
+  {
+    if (!tri.Dt().is_infinite(cell))
+    {
+      claim.Cells[side] = static_cast<std::int32_t>(tri.CellId(cell));
+      claim.Facets[side] = static_cast<std::int8_t>(opposite);
+    }
+    const CellHandle other = cell->neighbor(opposite);
+    opposite = other->index(cell);
+    cell = other;
+  }
+  return claim;
+}
+
+/// The claims of the walks of `patches` (index-2 node ids): each one's facet
+/// and every triangle its walk crosses, sorted.
+void WalkPatches(const Retriangulation& re, const std::vector<Node>& nodes,
+  const std::vector<Id>& patches, const Progress& progress, CompactPieces& pieces)
 {
   const CriticalSimplices& cs = re.Critical();
   const Id facets = static_cast<Id>(cs.Facets.size());
   std::vector<std::vector<Claim>> claims(patches.size());
+  std::vector<std::vector<std::array<Id, 3>>> walked(patches.size()); // triangulation ids
   std::vector<Id> fallbacks(patches.size(), 0);
   std::vector<char> foreign(patches.size(), 0);
   ParallelSlices(static_cast<Id>(patches.size()), Id(1) << 14, progress, 0.0, 0.6,
@@ -89,48 +124,78 @@ void AddPatchTriangles(const Retriangulation& re, const std::vector<Node>& nodes
         const Patch patch = ComputeStableManifold(
           re.Tri(), cs, static_cast<std::size_t>(f), false, fallbacks[k], false, true);
         claims[k].push_back({ own, node });
+        walked[k].push_back({ { facet.Vertices[0], facet.Vertices[1], facet.Vertices[2] } });
         for (const std::array<Id, 3>& t : patch.Walked)
         {
           claims[k].push_back({ InputSimplex<3>(re, t), node });
+          walked[k].push_back(t);
         }
       }
     });
-  std::vector<Claim> all;
   for (std::size_t k = 0; k < patches.size(); ++k)
   {
     if (foreign[k])
     {
       throw InputError(Retriangulation::Mismatch());
     }
-    out.ExactFallbacks += fallbacks[k];
-    all.insert(all.end(), claims[k].begin(), claims[k].end());
+    if (fallbacks[k] > 0)
+    {
+      pieces.ExactFallbacks.emplace_back(patches[k], fallbacks[k]);
+    }
+    // CGAL's facet search marks cells as it goes: one thread at a time.
+    for (std::size_t j = 0; j < claims[k].size(); ++j)
+    {
+      pieces.Claims.push_back(Sides(re.Tri(), walked[k][j], claims[k][j]));
+    }
   }
-  std::sort(all.begin(), all.end());
+  std::sort(pieces.Claims.begin(), pieces.Claims.end());
+}
+
+/// The triangles the walks of the selected patches cross, each kept once (for
+/// the least node id); shared and revisited ones counted.
+void SelectTriangles(const CompactPieces& pieces, const std::vector<char>& isSelected,
+  CompactComplex& out, std::vector<const Claim*>& written)
+{
+  for (const auto& f : pieces.ExactFallbacks)
+  {
+    out.ExactFallbacks += isSelected[f.first] ? f.second : 0;
+  }
+  const std::vector<Claim>& all = pieces.Claims;
   for (std::size_t k = 0; k < all.size();)
   {
-    std::size_t end = k + 1;
+    std::size_t end = k;
+    Id first = -1, last = -1;
     bool revisited = false;
-    int claims = 1;
+    int claims = 0;
     for (; end < all.size() && all[end].Triangle == all[k].Triangle; ++end)
     {
-      const bool same = all[end].Node == all[end - 1].Node;
-      revisited = revisited || same;
-      claims += same ? 0 : 1;
+      const Id node = all[end].Node;
+      if (!isSelected[node])
+      {
+        continue;
+      }
+      revisited = revisited || node == last;
+      claims += node == last ? 0 : 1;
+      first = first < 0 ? node : first;
+      last = node;
     }
-    out.SharedTriangles += claims > 1 ? 1 : 0;
-    out.RevisitedTriangles += revisited ? 1 : 0;
-    out.Triangles.push_back(all[k].Triangle);
-    out.TriangleNode.push_back(all[k].Node);
-    out.TriangleClaims.push_back(claims);
+    if (first >= 0)
+    {
+      out.SharedTriangles += claims > 1 ? 1 : 0;
+      out.RevisitedTriangles += revisited ? 1 : 0;
+      out.Triangles.push_back(all[k].Triangle);
+      out.TriangleNode.push_back(first);
+      out.TriangleClaims.push_back(claims);
+      written.push_back(&all[k]);
+    }
     k = end;
   }
 }
 
-/// The Delaunay cells whose Voronoi vertex flows to one of `maxima` (index-3
-/// node ids, sorted); `cellNode` (per cell) receives their maximum.
-void AddConeTetrahedra(const Retriangulation& re, const std::vector<Node>& nodes,
-  const std::vector<Id>& maxima, const Progress& progress, CompactComplex& out,
-  std::vector<Id>& cellNode)
+/// The maximum among `maxima` (index-3 node ids, sorted) that each Delaunay
+/// cell's Voronoi vertex flows to, -1 for none.
+void FlowCells(const Retriangulation& re, const std::vector<Node>& nodes,
+  const std::vector<Id>& maxima, const Progress& progress, CompactPieces& pieces)
 {
   const CriticalSimplices& cs = re.Critical();
   const Triangulation& tri = re.Tri();
@@ -150,8 +215,8 @@ void AddConeTetrahedra(const Retriangulation& re, const std::vector<Node>& nodes
   {
     maximumOfCell[cs.Cells[i].Cell] = static_cast<std::int32_t>(re.Base3() + static_cast<Id>(i));
   }
-  // d_P grows along the flow: a flow line that passes the largest selected
-  // value cannot end at a selected maximum, so it is stopped there (on surface
+  // d_P grows along the flow: a flow line that passes the largest value among
+  // `maxima` cannot end at one of them, so it is stopped there (on surface
   // samples most lines run on to the medial axis). The margin covers rounding
   // and the perturbation of degenerate clouds (1e-6 of the diagonal).
   double largest = 0;
@@ -162,73 +227,66 @@ void AddConeTetrahedra(const Retriangulation& re, const std::vector<Node>& nodes
   const double limit = 1.01 * std::ldexp(largest, -re.Prepared().ScaleExponent) +
     1e-5 * re.Prepared().Diagonal;
   SuccessorForest forest(tri, maximumOfCell, infinity, 0, false, false);
+  std::vector<Id>& cellMaximum = pieces.CellMaximum;
+  cellMaximum.assign(static_cast<std::size_t>(tri.NumberOfCells()), -1);
   ParallelSlices(tri.NumberOfCells(), Id(1) << 16, progress, 0.6, 0.9, "compact cells",
     [&](Id first, Id last) {
       for (Id c = first; c < last; ++c)
       {
         double bound = 0;
         const Id root = forest.RootBelow(c, limit * limit, &bound);
-        cellNode[c] = root >= 0 && std::binary_search(maxima.begin(), maxima.end(), root) ? root : -1;
+        cellMaximum[c] = root >= 0 && std::binary_search(maxima.begin(), maxima.end(), root) ? root : -1;
       }
     });
+}
+
+/// The Delaunay cells that flow to a selected maximum; `cellNode` (per cell)
+/// receives their maximum, -1 for the others.
+void SelectTetrahedra(const Retriangulation& re, const CompactPieces& pieces,
+  const std::vector<char>& isSelected, CompactComplex& out, std::vector<Id>& cellNode)
+{
+  const Triangulation& tri = re.Tri();
+  cellNode.assign(static_cast<std::size_t>(tri.NumberOfCells()), -1);
   for (Id c = 0; c < tri.NumberOfCells(); ++c)
   {
-    if (cellNode[c] >= 0)
+    const Id m = pieces.CellMaximum[c];
+    if (m >= 0 && isSelected[m])
     {
+      cellNode[c] = m;
       out.Tetrahedra.push_back(InputSimplex<4>(re, tri.SortedVertices(tri.Cell(c))));
-      out.TetrahedronNode.push_back(cellNode[c]);
+      out.TetrahedronNode.push_back(m);
     }
   }
 }
 
-/// The walls of the complement's regions: the compact triangles (triangulation
-/// ids, sorted, with their node) and, per cell, a bit per facet that is one
-/// (the search below looks at millions of facets).
+/// The walls of the complement's regions: per cell, a bit per facet that is
+/// a compact triangle, and the node of each such (cell, facet), sorted by
+/// cell * 4 + facet (the search below looks at millions of facets).
 struct Walls
 {
-  std::vector<Claim> Triangles;
+  std::vector<std::pair<Id, Id>> Sides;
   std::vector<std::uint8_t> Facets;
 };
 
-Walls FindWalls(const Retriangulation& re, const CompactComplex& out)
+Walls FindWalls(const Triangulation& tri, const CompactComplex& out,
+  const std::vector<const Claim*>& written)
 {
-  const Triangulation& tri = re.Tri();
-  const std::vector<Id>& inputId = re.Prepared().InputId;
-  std::vector<Id> vertexOf(
-    inputId.empty() ? 0 : static_cast<std::size_t>(*std::max_element(inputId.begin(), inputId.end()) + 1), -1);
-  for (Id v = 0; v < static_cast<Id>(inputId.size()); ++v)
-  {
-    vertexOf[inputId[v]] = v;
-  }
   Walls walls;
-  for (std::size_t k = 0; k < out.Triangles.size(); ++k)
-  {
-    std::array<Id, 3> t{ { vertexOf[out.Triangles[k][0]], vertexOf[out.Triangles[k][1]],
-      vertexOf[out.Triangles[k][2]] } };
-    std::sort(t.begin(), t.end());
-    walls.Triangles.push_back({ t, out.TriangleNode[k] });
-  }
-  std::sort(walls.Triangles.begin(), walls.Triangles.end());
   walls.Facets.assign(static_cast<std::size_t>(tri.NumberOfCells()), 0);
-  for (const Claim& w : walls.Triangles)
+  for (std::size_t k = 0; k < written.size(); ++k)
   {
-    CellHandle cell;
-    int opposite = 0;
-    if (!tri.Facet(w.Triangle[0], w.Triangle[1], w.Triangle[2], cell, opposite))
-    {
-      throw std::logic_error("compact reconstruction: a triangle that is not a Delaunay facet");
-    }
     for (int side = 0; side < 2; ++side)
     {
-      if (!tri.Dt().is_infinite(cell))
+      const Id cell = written[k]->Cells[side];
+      if (cell >= 0)
       {
-        walls.Facets[tri.CellId(cell)] |= static_cast<std::uint8_t>(1u << opposite);
+        const int facet = written[k]->Facets[side];
+        walls.Facets[cell] |= static_cast<std::uint8_t>(1u << facet);
+        walls.Sides.emplace_back(4 * cell + facet, out.TriangleNode[k]);
       }
-      const CellHandle other = cell->neighbor(opposite);
-      opposite = other->index(cell);
-      cell = other;
     }
   }
+  std::sort(walls.Sides.begin(), walls.Sides.end());
   return walls;
 }
 
@@ -241,8 +299,8 @@ Walls FindWalls(const Retriangulation& re, const CompactComplex& out)
 /// node of largest value.
 bool SearchRegion(const Retriangulation& re, const std::vector<Node>& nodes,
   const std::vector<Id>& cellNode, const Walls& walls, const std::vector<char>& isMaximum,
-  Id start, std::int32_t search, std::vector<std::int32_t>& mark, std::vector<Id>& component,
-  Id& wall, bool& maximum)
+  const Neighbourhood& neighbours, Id start, std::int32_t search, std::vector<std::int32_t>& mark,
+  std::vector<Id>& component, Id& wall, bool& maximum)
 {
   const Triangulation& tri = re.Tri();
   auto meet = [&](Id node) {
@@ -261,28 +319,18 @@ bool SearchRegion(const Retriangulation& re, const std::vector<Node>& nodes,
     const Id c = stack.back();
     stack.pop_back();
     component.push_back(c);
-    const CellHandle cell = tri.Cell(c);
     maximum = maximum || isMaximum[c] != 0;
     bool open = false;
     for (int k = 0; k < 4 && !open; ++k)
     {
-      const CellHandle next = cell->neighbor(k);
       if (walls.Facets[c] & (1u << k))
       {
-        std::array<Id, 3> t;
-        for (int j = 0, m = 0; j < 4; ++j)
-        {
-          if (j != k)
-          {
-            t[m++] = cell->vertex(j)->info();
-          }
-        }
-        std::sort(t.begin(), t.end());
-        meet(std::lower_bound(walls.Triangles.begin(), walls.Triangles.end(), Claim{ t, -1 })->Node);
+        const std::pair<Id, Id> key(4 * c + k, -1);
+        meet(std::lower_bound(walls.Sides.begin(), walls.Sides.end(), key)->second);
         continue;
       }
-      open = tri.Dt().is_infinite(next);
-      const Id n = open ? -1 : tri.CellId(next);
+      const Id n = neighbours[c][k];
+      open = n < 0;
       if (open || (!cellNode.empty() && cellNode[n] >= 0))
       {
         if (!open)
@@ -317,10 +365,11 @@ bool SearchRegion(const Retriangulation& re, const std::vector<Node>& nodes,
 /// value. Only regions next to a wall are searched, each until it is seen to
 /// be unbounded; the bounded ones with a maximum are counted in out.Voids.
 void FillVoidsWithoutMaximum(const Retriangulation& re, const std::vector<Node>& nodes,
-  const std::vector<Id>& cellNode, CompactComplex& out)
+  const std::vector<Id>& cellNode, const Neighbourhood& neighbours,
+  const std::vector<const Claim*>& written, CompactComplex& out)
 {
   const Triangulation& tri = re.Tri();
-  const Walls walls = FindWalls(re, out);
+  const Walls walls = FindWalls(tri, out, written);
   std::vector<Id> starts;
   for (Id c = 0; c < tri.NumberOfCells(); ++c)
   {
@@ -331,10 +380,10 @@ void FillVoidsWithoutMaximum(const Retriangulation& re, const std::vector<Node>&
     }
     for (int k = 0; inside && k < 4; ++k)
     {
-      const CellHandle next = tri.Cell(c)->neighbor(k);
-      if (!tri.Dt().is_infinite(next) && cellNode[tri.CellId(next)] < 0)
+      const Id next = neighbours[c][k];
+      if (next >= 0 && cellNode[next] < 0)
       {
-        starts.push_back(tri.CellId(next));
+        starts.push_back(next);
       }
     }
   }
@@ -354,8 +403,8 @@ void FillVoidsWithoutMaximum(const Retriangulation& re, const std::vector<Node>&
     }
     Id wall = -1;
     bool maximum = false;
-    if (!SearchRegion(re, nodes, cellNode, walls, isMaximum, start, ++search, mark, component, wall,
-          maximum) || wall < 0)
+    if (!SearchRegion(re, nodes, cellNode, walls, isMaximum, neighbours, start, ++search, mark,
+          component, wall, maximum) || wall < 0)
     {
       continue;
     }
@@ -429,6 +478,27 @@ void AddEdgesAndSamples(
   }
 }
 
+/// `selected` sorted, without repeats or the maximum at infinity; throws
+/// InputError for an id out of range.
+std::vector<Id> SortedNodes(const std::vector<Node>& nodes, const std::vector<Id>& selected)
+{
+  std::vector<Id> sorted;
+  for (const Id node : selected)
+  {
+    if (node < 0 || node >= static_cast<Id>(nodes.size()))
+    {
+      throw InputError("compact reconstruction: node " + std::to_string(node) + " out of range");
+    }
+    if (!nodes[node].IsInfinity())
+    {
+      sorted.push_back(node);
+    }
+  }
+  std::sort(sorted.begin(), sorted.end());
+  sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
+  return sorted;
+}
+
 template <class T>
 void SortUnique(std::vector<T>& v)
 {
@@ -491,23 +561,12 @@ void SetBettiNumbers(CompactComplex& out)
 
 } // namespace
 
-CompactComplex CompactReconstruction(const Retriangulation& re, const std::vector<Node>& nodes,
-  const std::vector<Id>& selected, const Progress& progress)
+CompactPieces PrepareCompact(const Retriangulation& re, const std::vector<Node>& nodes,
+  const std::vector<Id>& candidates, const Progress& progress)
 {
-  std::vector<Id> sorted(selected);
-  std::sort(sorted.begin(), sorted.end());
-  sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
   std::vector<Id> patches, maxima;
-  for (const Id node : sorted)
+  for (const Id node : SortedNodes(nodes, candidates))
   {
-    if (node < 0 || node >= static_cast<Id>(nodes.size()))
-    {
-      throw InputError("compact reconstruction: node " + std::to_string(node) + " out of range");
-    }
-    if (nodes[node].IsInfinity())
-    {
-      continue;
-    }
     if (nodes[node].Index == 2)
     {
       patches.push_back(node);
@@ -517,18 +576,51 @@ CompactComplex CompactReconstruction(const Retriangulation& re, const std::vecto
       maxima.push_back(node);
     }
   }
-  CompactComplex out;
-  AddPatchTriangles(re, nodes, patches, progress, out);
-  std::vector<Id> cellNode;
+  CompactPieces pieces;
+  pieces.Neighbours = Neighbours(re.Tri());
+  WalkPatches(re, nodes, patches, progress, pieces);
   if (!maxima.empty())
   {
-    cellNode.assign(static_cast<std::size_t>(re.Tri().NumberOfCells()), -1);
-    AddConeTetrahedra(re, nodes, maxima, progress, out, cellNode);
+    FlowCells(re, nodes, maxima, progress, pieces);
   }
-  progress(0.9, "compact voids");
-  FillVoidsWithoutMaximum(re, nodes, cellNode, out);
+  progress(1.0, "compact pieces");
+  return pieces;
+}
+
+CompactComplex SelectCompact(const Retriangulation& re, const std::vector<Node>& nodes,
+  const CompactPieces& pieces, const std::vector<Id>& selected, bool betti)
+{
+  const std::vector<Id> sorted = SortedNodes(nodes, selected);
+  std::vector<char> isSelected(nodes.size(), 0);
+  bool maximum = false;
+  for (const Id node : sorted)
+  {
+    isSelected[node] = 1;
+    maximum = maximum || nodes[node].Index == 3;
+  }
+  CompactComplex out;
+  std::vector<const Claim*> written; // the claim of each triangle
+  SelectTriangles(pieces, isSelected, out, written);
+  std::vector<Id> cellNode; // empty without a selected maximum
+  if (maximum && !pieces.CellMaximum.empty())
+  {
+    SelectTetrahedra(re, pieces, isSelected, out, cellNode);
+  }
+  FillVoidsWithoutMaximum(re, nodes, cellNode, pieces.Neighbours, written, out);
   AddEdgesAndSamples(nodes, sorted, out);
-  SetBettiNumbers(out);
+  if (betti)
+  {
+    SetBettiNumbers(out);
+  }
+  return out;
+}
+
+CompactComplex CompactReconstruction(const Retriangulation& re, const std::vector<Node>& nodes,
+  const std::vector<Id>& selected, const Progress& progress)
+{
+  const CompactPieces pieces = PrepareCompact(re, nodes, selected, progress.Range(0, 0.9));
+  progress(0.9, "compact voids");
+  CompactComplex out = SelectCompact(re, nodes, pieces, selected);
   progress(1.0, "compact output");
   return out;
 }

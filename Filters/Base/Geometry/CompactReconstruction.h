@@ -19,6 +19,7 @@
 #include "Progress.h"
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
 namespace flowrecon
@@ -62,6 +63,54 @@ struct CompactComplex
       this->Tetrahedra.size());
   }
 };
+
+/// A Delaunay triangle (input ids, sorted) crossed by the walk of an index-2 node.
+struct CompactClaim
+{
+  std::array<Id, 3> Triangle;
+  Id Node;
+  /// The finite Delaunay cells on its two sides (-1: infinite) and the
+  /// triangle's index in each: where the search for voids meets it as a wall.
+  std::array<std::int32_t, 2> Cells{ { -1, -1 } };
+  std::array<std::int8_t, 2> Facets{ { 0, 0 } };
+  bool operator<(const CompactClaim& o) const
+  {
+    return this->Triangle != o.Triangle ? this->Triangle < o.Triangle : this->Node < o.Node;
+  }
+};
+
+/// What the compact complex of any subset of some candidate nodes is made of,
+/// computed once: the walks of the index-2 candidates and the candidate
+/// maximum each Delaunay cell flows to. A filter that shows the compact complex
+/// for each t_r keeps them, so that a new t_r walks nothing again.
+struct CompactPieces
+{
+  /// Every index-2 candidate's facet and the triangles its walk crosses, one
+  /// claim per crossing, sorted (by triangle, then node).
+  std::vector<CompactClaim> Claims;
+  /// Per Delaunay cell, the candidate maximum it flows to, -1 for none; empty
+  /// without candidate maxima.
+  std::vector<Id> CellMaximum;
+  /// Walks redone in exact arithmetic, per index-2 candidate that needed any.
+  std::vector<std::pair<Id, Id>> ExactFallbacks;
+  /// Per Delaunay cell, its four neighbours' ids (-1: infinite), opposite its
+  /// vertices: the search for voids follows millions of them, which CGAL's
+  /// cells, scattered in memory, make several times slower.
+  std::vector<std::array<std::int32_t, 4>> Neighbours;
+};
+
+/// The pieces of the nodes `candidates` (as `selected` below); progress from
+/// 0 to 1 of `progress`.
+CompactPieces PrepareCompact(const Retriangulation& re, const std::vector<Node>& nodes,
+  const std::vector<Id>& candidates, const Progress& progress = Progress());
+
+/// The compact complex of `selected`, which must be among the candidates
+/// `pieces` were prepared for: the same complex as CompactReconstruction's, in
+/// time linear in the pieces and the triangulation.
+/// Without `betti`, compact.Betti is left zero (a caller that has the exact
+/// reconstruction's Betti numbers does not need them again).
+CompactComplex SelectCompact(const Retriangulation& re, const std::vector<Node>& nodes,
+  const CompactPieces& pieces, const std::vector<Id>& selected, bool betti = true);
 
 /// The compact complex of the nodes `selected` (ids of `nodes`, any index;
 /// the maximum at infinity is ignored). `re` is the triangulation of the
