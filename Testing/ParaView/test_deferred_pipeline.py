@@ -12,7 +12,9 @@ give errors naming the GUI's properties, and a stored simplification whose pairs
 claim a ratio at T is refused.
 
 The CLI's `flowrecon diagram` of the deferred complex, saved as a .vtm, must give
-the pairs of the cloud itself, and `flowrecon reconstruct` the filter's grid.
+the pairs of the cloud itself, and `flowrecon reconstruct` the filter's grid: the
+exact one (`--exact`), and the compact one (the default) at t_r 1.2, 1.5 and 1.8, which the
+filter selects from walks made once for T_max.
 
 Run: pvpython test_deferred_pipeline.py PLUGIN WORKDIR [FLOWRECON]   (no X server needed)
 """
@@ -167,7 +169,43 @@ def compare_cloud(name, points, ratio, least):
              dataset_state(servermanager.Fetch(reader)),
              dataset_state(servermanager.Fetch(lazy[2])))
         simple.Delete(reader)
+        compare_compact(name, xyz, lazy, ratio)
     return reader, lazy
+
+
+def compact_cells(grid):
+    """{(NodeId, sorted point ids)} of a compact grid (its points are the samples,
+    in input order, in both files)."""
+    node = grid.GetCellData().GetArray("NodeId")
+    cells = set()
+    for c in range(grid.GetNumberOfCells()):
+        ids = grid.GetCell(c).GetPointIds()
+        cells.add((node.GetValue(c), tuple(sorted(ids.GetId(k) for k in range(ids.GetNumberOfIds())))))
+    return cells
+
+
+def compare_compact(name, xyz, lazy, ratio):
+    """The compact geometry of the filter, prepared once for T_max and selected at
+    each t_r, against `flowrecon reconstruct`'s default file, made anew from the
+    cloud for that t_r alone (its own triangulation and walks)."""
+    recon = lazy[2]
+    recon.Geometry = "Compact (Delaunay simplices on the samples)"
+    for tr in [t for t in (1.2, 1.5, 1.8) if t < ratio]:
+        vtu = os.path.join(WORK, "%s_compact_tr%g.vtu" % (name.replace(" ", "_"), tr))
+        run = subprocess.run([CLI, "reconstruct", xyz, "-o", vtu, "--tr", str(tr), "--tp", "1.1",
+                              "--quiet"], capture_output=True, text=True)
+        check(run.returncode == 0, "flowrecon reconstruct %s: %s" % (xyz, run.stderr))
+        recon.ReconstructionThreshold = tr
+        recon.UpdatePipeline()
+        reader = simple.XMLUnstructuredGridReader(FileName=[vtu])
+        cli, ours = compact_cells(servermanager.Fetch(reader)), compact_cells(servermanager.Fetch(recon))
+        print("%s at t_r %g, compact: %d cells (flowrecon reconstruct %d)" % (
+            name, tr, len(ours), len(cli)), flush=True)
+        check(len(ours) > 0 and ours == cli,
+              "%s at t_r %g: the compact geometry differs from flowrecon reconstruct's "
+              "(%d and %d cells, %d in common)" % (name, tr, len(ours), len(cli), len(ours & cli)))
+        simple.Delete(reader)
+    recon.Geometry = "Exact stable manifolds"
 
 
 def wrong_settings(lazy):
