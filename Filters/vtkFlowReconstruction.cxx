@@ -374,8 +374,15 @@ void vtkFlowReconstruction::FillOutputs(vtkMultiBlockDataSet* input, double tmax
   auto* text = vtkTable::GetData(outputVector, TOPOLOGY_TEXT);
   const Cache& c = *this->Cached;
   const flowrecon::FlowComplex& fc = c.FC;
-  flowrecon::ReconstructionToVTK(fc, c.Carrier, c.Run, t, c.TriangleGroups, c.TetraGroups,
-    nullptr, nullptr, arrows);
+  if (this->SponsorArrows)
+  {
+    flowrecon::ReconstructionToVTK(fc, c.Carrier, c.Run, t, c.TriangleGroups, c.TetraGroups,
+      nullptr, nullptr, arrows);
+  }
+  else
+  {
+    arrows->Initialize();
+  }
   profile->ShallowCopy(c.Profile);
   flowrecon::MarkProfile(profile, t);
   flowrecon::ProfileJumpsToVTK(fc, c.Run, static_cast<std::size_t>(this->NumberOfJumps), profile);
@@ -565,5 +572,6 @@ void vtkFlowReconstruction::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ComputeTopology: " << (this->ComputeTopology ? "on" : "off") << "\n";
   os << indent << "NumberOfJumps: " << this->NumberOfJumps << "\n";
   os << indent << "Geometry: " << (this->Geometry == GEOMETRY_COMPACT ? "compact" : "exact") << "\n";
+  os << indent << "SponsorArrows: " << (this->SponsorArrows ? "on" : "off") << "\n";
   os << indent << "NumberOfQueueRuns: " << this->NumberOfQueueRuns << "\n";
 }

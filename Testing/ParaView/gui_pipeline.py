@@ -102,8 +102,18 @@ def main():
     for c in ("Step", "NodeId", "Index", "Priority", "Threshold"):
         check(c in columns, "profile has no column %s (has %s)" % (c, columns))
     check(profile.GetNumberOfRows() > 1000, "profile has %d rows" % profile.GetNumberOfRows())
+    # The sponsor arrows are made on request only: at most one line per step
+    # up to t_r (profile rows below t_r).
     arrows = OutputPort(recon, 2)
-    check(arrows.GetDataInformation().GetNumberOfCells() > 0, "no sponsor arrows")
+    check(arrows.GetDataInformation().GetNumberOfCells() == 0,
+          "sponsor arrows made though Sponsor Arrows is off (ParaView's default)")
+    recon.SponsorArrows = 1
+    recon.UpdatePipeline()
+    steps = sum(1 for i in range(profile.GetNumberOfRows())
+                if profile.GetColumnByName("Threshold").GetValue(i) <= t_r)
+    lines = arrows.GetDataInformation().GetNumberOfCells()
+    say("gui_pipeline: %d sponsor arrows on request, %d profile steps up to t_r" % (lines, steps))
+    check(0 < lines <= steps, "%d sponsor arrows for %d steps up to t_r" % (lines, steps))
 
     # render in the GUI's view, coloured by Threshold (every cell's is below t_r)
     view = GetActiveViewOrCreate("RenderView")

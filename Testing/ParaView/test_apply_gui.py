@@ -27,7 +27,8 @@ through Python's Show(); this is the GUI's own path:
     per t_r), tell the changes of output 4 (its Threshold, Dimension and Change,
     summed), and turning Warning Label Visibility off changes pixels of the text's
     colour.
-Then the sponsor arrows are shown (the eye: Show() in the render view): 3D Glyphs
+Then the sponsor arrows, empty until Sponsor Arrows is turned on (ParaView's
+default is off), are turned on and shown (the eye: Show() in the render view): 3D Glyphs
 oriented and scaled by Direction, and the picture must have clearly more drawn pixels
 than the same lines drawn as a wireframe (the arrows have heads and a width).
 Saves <prefix>_layout.png (the GUI's layout after Apply), <prefix>_render.png (the
@@ -316,6 +317,10 @@ def main():
         d.Visibility = 0
     for src in (reader, fc, simp):
         Hide(src, view)
+    check(recon.GetDataInformation(2).GetNumberOfCells() == 0,
+          "sponsor arrows made though Sponsor Arrows is off (ParaView's default)")
+    recon.SponsorArrows = 1
+    recon.UpdatePipeline()
     arrows = Show(OutputPort(recon, 2), view)
     glyphs = (arrows.Representation, arrows.SelectOrientationVectors,
               arrows.SelectScaleArray, arrows.ScaleFactor)

@@ -6,7 +6,7 @@ scalar-coloured display), then the colouring array and its association, the
 colour legends, the blocks shown and the camera after Reset Camera.
 
 - Flow Reconstruction: output 0 coloured by the cell array Index, output 2
-  (sponsor arrows) not shown, output 4 (under-sampling points) not coloured,
+  (sponsor arrows) not shown and empty until Sponsor Arrows is on, output 4 (under-sampling points) not coloured,
   Point Gaussian spheres of radius Spacing: one colour legend in the view;
   output 5 (the topology text) left-justified in the upper left corner.
 - Flow Complex and Flow Complex Simplification (the plugin's displays
@@ -326,6 +326,10 @@ def reconstruction(work):
     check_camera("Flow Reconstruction", view, cloud_bounds)
     # The sponsor arrows are one click away: arrows from sponsor to node
     # (3D Glyphs of the point vector Direction at magnitude x 1), by Priority.
+    check(recon.GetDataInformation(2).GetNumberOfCells() == 0,
+          "Flow Reconstruction: sponsor arrows made though Sponsor Arrows is off")
+    recon.SponsorArrows = 1
+    recon.UpdatePipeline()
     arrows = simple.Show(simple.OutputPort(recon, 2), view)
     check(colouring(arrows) == ("POINTS", "Priority"),
           "Flow Reconstruction: shown on request, the sponsor arrows are coloured by %s" % (

@@ -94,7 +94,7 @@ def pipeline(reader, defer, cap):
     simp = FlowComplexSimplification(Input=fc, AutomaticPersistenceThreshold=0)  # noqa: F821
     recon = FlowReconstruction(Input=simp, MaximumThreshold=cap,  # noqa: F821
                                AutomaticReconstructionThreshold=0,
-                               Geometry="Exact stable manifolds")
+                               Geometry="Exact stable manifolds", SponsorArrows=1)
     return fc, simp, recon
 
 

@@ -260,12 +260,23 @@ void SelectTetrahedra(const Retriangulation& re, const CompactPieces& pieces,
 }
 
 /// The walls of the complement's regions: per cell, a bit per facet that is
-/// a compact triangle, and the node of each such (cell, facet), sorted by
-/// cell * 4 + facet (the search below looks at millions of facets).
+/// a compact triangle, and the node of each such (cell, facet), keyed by
+/// cell * 4 + facet. Only a void to fill needs the nodes: they are sorted
+/// then (SortSides), not for every t_r.
 struct Walls
 {
   std::vector<std::pair<Id, Id>> Sides;
   std::vector<std::uint8_t> Facets;
+  bool Sorted = false;
+
+  void SortSides()
+  {
+    if (!this->Sorted)
+    {
+      std::sort(this->Sides.begin(), this->Sides.end());
+      this->Sorted = true;
+    }
+  }
 };
 
 Walls FindWalls(const Triangulation& tri, const CompactComplex& out,
@@ -286,7 +297,6 @@ Walls FindWalls(const Triangulation& tri, const CompactComplex& out,
       }
     }
   }
-  std::sort(walls.Sides.begin(), walls.Sides.end());
   return walls;
 }
 
@@ -295,21 +305,17 @@ Walls FindWalls(const Triangulation& tri, const CompactComplex& out,
 /// meets an infinite cell or a region searched before (`mark`: the search of
 /// each cell, 0 for none; a bounded region is closed by walls, so another
 /// search cannot reach it). Returns whether it is bounded; then `component`
-/// holds its cells, `maximum` whether one is a maximum, and `wall` the wall
-/// node of largest value.
-bool SearchRegion(const Retriangulation& re, const std::vector<Node>& nodes,
-  const std::vector<Id>& cellNode, const Walls& walls, const std::vector<char>& isMaximum,
-  const Neighbourhood& neighbours, Id start, std::int32_t search, std::vector<std::int32_t>& mark,
-  std::vector<Id>& component, Id& wall, bool& maximum)
+/// holds its cells, `maximum` whether one is a maximum, and `walled` whether
+/// it meets a wall or a cell of the complex. Millions of cells are crossed per
+/// t_r: only what decides boundedness is read here (WallNode does the rest).
+/// With `toVoid`, the search stops (false) at a maximum too: such a region is
+/// not filled, and only counting the voids needs to know more.
+bool SearchRegion(const std::vector<Id>& cellNode, const Walls& walls,
+  const std::vector<char>& isMaximum, const Neighbourhood& neighbours, Id start,
+  std::int32_t search, bool toVoid, std::vector<std::int32_t>& mark, std::vector<Id>& component,
+  bool& walled, bool& maximum)
 {
-  const Triangulation& tri = re.Tri();
-  auto meet = [&](Id node) {
-    if (wall < 0 || nodes[node].Value > nodes[wall].Value)
-    {
-      wall = node;
-    }
-  };
-  wall = -1;
+  walled = false;
   maximum = false;
   component.clear();
   std::vector<Id> stack{ start };
@@ -320,8 +326,53 @@ bool SearchRegion(const Retriangulation& re, const std::vector<Node>& nodes,
     stack.pop_back();
     component.push_back(c);
     maximum = maximum || isMaximum[c] != 0;
-    bool open = false;
-    for (int k = 0; k < 4 && !open; ++k)
+    if (maximum && toVoid)
+    {
+      return false;
+    }
+    walled = walled || walls.Facets[c] != 0;
+    for (int k = 0; k < 4; ++k)
+    {
+      if (walls.Facets[c] & (1u << k))
+      {
+        continue;
+      }
+      const Id n = neighbours[c][k];
+      if (n < 0 || (mark[n] != 0 && mark[n] != search))
+      {
+        return false;
+      }
+      if (!cellNode.empty() && cellNode[n] >= 0)
+      {
+        walled = true;
+        continue;
+      }
+      if (mark[n] == 0)
+      {
+        mark[n] = search;
+        stack.push_back(n);
+      }
+    }
+  }
+  return true;
+}
+
+/// The node of largest value among the walls and complex cells around the
+/// bounded region `component` (in SearchRegion's order; the first on ties).
+Id WallNode(const std::vector<Node>& nodes, const std::vector<Id>& cellNode, Walls& walls,
+  const Neighbourhood& neighbours, const std::vector<Id>& component)
+{
+  walls.SortSides();
+  Id wall = -1;
+  auto meet = [&](Id node) {
+    if (wall < 0 || nodes[node].Value > nodes[wall].Value)
+    {
+      wall = node;
+    }
+  };
+  for (const Id c : component)
+  {
+    for (int k = 0; k < 4; ++k)
     {
       if (walls.Facets[c] & (1u << k))
       {
@@ -330,28 +381,13 @@ bool SearchRegion(const Retriangulation& re, const std::vector<Node>& nodes,
         continue;
       }
       const Id n = neighbours[c][k];
-      open = n < 0;
-      if (open || (!cellNode.empty() && cellNode[n] >= 0))
+      if (!cellNode.empty() && cellNode[n] >= 0)
       {
-        if (!open)
-        {
-          meet(cellNode[n]);
-        }
-        continue;
+        meet(cellNode[n]);
       }
-      open = mark[n] != 0 && mark[n] != search;
-      if (!open && mark[n] == 0)
-      {
-        mark[n] = search;
-        stack.push_back(n);
-      }
-    }
-    if (open)
-    {
-      return false;
     }
   }
-  return true;
+  return wall;
 }
 
 /// The bounded regions of the complement of the compact complex (Delaunay
@@ -363,13 +399,14 @@ bool SearchRegion(const Retriangulation& re, const std::vector<Node>& nodes,
 /// region between them escaping through Voronoi facets, which no Delaunay
 /// simplex stands for. The filling's cells go to the wall node of largest
 /// value. Only regions next to a wall are searched, each until it is seen to
-/// be unbounded; the bounded ones with a maximum are counted in out.Voids.
+/// be unbounded; with `count`, the bounded ones with a maximum are counted in
+/// out.Voids (else a search ends at its first maximum).
 void FillVoidsWithoutMaximum(const Retriangulation& re, const std::vector<Node>& nodes,
   const std::vector<Id>& cellNode, const Neighbourhood& neighbours,
-  const std::vector<const Claim*>& written, CompactComplex& out)
+  const std::vector<const Claim*>& written, bool count, CompactComplex& out)
 {
   const Triangulation& tri = re.Tri();
-  const Walls walls = FindWalls(tri, out, written);
+  Walls walls = FindWalls(tri, out, written);
   std::vector<Id> starts;
   for (Id c = 0; c < tri.NumberOfCells(); ++c)
   {
@@ -401,42 +438,89 @@ void FillVoidsWithoutMaximum(const Retriangulation& re, const std::vector<Node>&
     {
       continue;
     }
-    Id wall = -1;
+    bool walled = false;
     bool maximum = false;
-    if (!SearchRegion(re, nodes, cellNode, walls, isMaximum, neighbours, start, ++search, mark,
-          component, wall, maximum) || wall < 0)
+    if (!SearchRegion(cellNode, walls, isMaximum, neighbours, start, ++search, !count, mark,
+          component, walled, maximum) ||
+      !walled)
     {
       continue;
     }
     if (maximum)
     {
       ++out.Voids; // a void of the exact reconstruction too
+      continue;
     }
-    else
+    ++out.FilledVoids;
+    const Id wall = WallNode(nodes, cellNode, walls, neighbours, component);
+    for (const Id c : component)
     {
-      ++out.FilledVoids;
-      for (const Id c : component)
-      {
-        out.Tetrahedra.push_back(InputSimplex<4>(re, tri.SortedVertices(tri.Cell(c))));
-        out.TetrahedronNode.push_back(wall);
-      }
+      out.Tetrahedra.push_back(InputSimplex<4>(re, tri.SortedVertices(tri.Cell(c))));
+      out.TetrahedronNode.push_back(wall);
     }
   }
 }
 
-/// Index-1 and index-0 nodes whose edge or sample no triangle or tetrahedron holds.
+/// Index-1 and index-0 nodes whose edge or sample no triangle or tetrahedron
+/// holds. Linear: the selected edges are grouped by their first vertex, which
+/// each edge of a triangle or tetrahedron looks up (a sort of every such edge
+/// took a third of a t_r change).
 void AddEdgesAndSamples(
   const std::vector<Node>& nodes, const std::vector<Id>& selected, CompactComplex& out)
 {
-  std::vector<std::array<Id, 2>> held;
-  std::vector<Id> used;
+  Id points = 0; // input ids below it
+  std::vector<Id> edgeNodes;
+  for (const Id node : selected)
+  {
+    const Node& n = nodes[node];
+    if (n.Index == 1 || (n.Index == 0 && !n.IsInfinity()))
+    {
+      points = std::max(points, static_cast<Id>(n.Simplex[n.Index]) + 1);
+    }
+    if (n.Index == 1)
+    {
+      edgeNodes.push_back(node);
+    }
+  }
+  for (const std::array<Id, 3>& t : out.Triangles)
+  {
+    points = std::max(points, t[2] + 1);
+  }
+  for (const std::array<Id, 4>& t : out.Tetrahedra)
+  {
+    points = std::max(points, t[3] + 1);
+  }
+  // Selected edges by first vertex (counting sort), and whether each is held.
+  std::vector<Id> row(static_cast<std::size_t>(points) + 1, 0);
+  for (const Id node : edgeNodes)
+  {
+    ++row[nodes[node].Simplex[0] + 1];
+  }
+  for (std::size_t v = 1; v < row.size(); ++v)
+  {
+    row[v] += row[v - 1];
+  }
+  std::vector<Id> byFirst(edgeNodes.size());
+  {
+    std::vector<Id> next(row.begin(), row.end() - 1);
+    for (std::size_t e = 0; e < edgeNodes.size(); ++e)
+    {
+      byFirst[next[nodes[edgeNodes[e]].Simplex[0]]++] = static_cast<Id>(e);
+    }
+  }
+  std::vector<char> held(edgeNodes.size(), 0);
+  std::vector<char> used(static_cast<std::size_t>(points), 0);
   auto hold = [&](const Id* v, int n) {
     for (int a = 0; a < n; ++a)
     {
-      used.push_back(v[a]);
-      for (int b = a + 1; b < n; ++b)
+      used[v[a]] = 1;
+      for (int b = a + 1; b < n; ++b) // sorted simplices: v[a] < v[b]
       {
-        held.push_back({ { v[a], v[b] } }); // sorted simplices: v[a] < v[b]
+        for (Id j = row[v[a]]; j < row[v[a] + 1]; ++j)
+        {
+          const Id e = byFirst[j];
+          held[e] = held[e] || nodes[edgeNodes[e]].Simplex[1] == v[b];
+        }
       }
     }
   };
@@ -448,29 +532,21 @@ void AddEdgesAndSamples(
   {
     hold(t.data(), 4);
   }
-  std::sort(held.begin(), held.end());
-  held.erase(std::unique(held.begin(), held.end()), held.end());
-  for (const Id node : selected)
+  for (std::size_t e = 0; e < edgeNodes.size(); ++e)
   {
-    const Node& n = nodes[node];
-    if (n.Index == 1)
+    const Node& n = nodes[edgeNodes[e]];
+    if (!held[e])
     {
-      const std::array<Id, 2> e{ { n.Simplex[0], n.Simplex[1] } };
-      if (!std::binary_search(held.begin(), held.end(), e))
-      {
-        out.Edges.push_back(e);
-        out.EdgeNode.push_back(node);
-        used.push_back(e[0]);
-        used.push_back(e[1]);
-      }
+      out.Edges.push_back({ { n.Simplex[0], n.Simplex[1] } });
+      out.EdgeNode.push_back(edgeNodes[e]);
+      used[n.Simplex[0]] = 1;
+      used[n.Simplex[1]] = 1;
     }
   }
-  std::sort(used.begin(), used.end());
   for (const Id node : selected)
   {
     const Node& n = nodes[node];
-    if (n.Index == 0 && !n.IsInfinity() &&
-      !std::binary_search(used.begin(), used.end(), static_cast<Id>(n.Simplex[0])))
+    if (n.Index == 0 && !n.IsInfinity() && !used[n.Simplex[0]])
     {
       out.Vertices.push_back(n.Simplex[0]);
       out.VertexNode.push_back(node);
@@ -606,7 +682,7 @@ CompactComplex SelectCompact(const Retriangulation& re, const std::vector<Node>&
   {
     SelectTetrahedra(re, pieces, isSelected, out, cellNode);
   }
-  FillVoidsWithoutMaximum(re, nodes, cellNode, pieces.Neighbours, written, out);
+  FillVoidsWithoutMaximum(re, nodes, cellNode, pieces.Neighbours, written, betti, out);
   AddEdgesAndSamples(nodes, sorted, out);
   if (betti)
   {
