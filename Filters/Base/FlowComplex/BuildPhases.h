@@ -11,6 +11,7 @@
 #include "FlowComplexBuilder.h"
 #include "InputPreparation.h"
 #include "Progress.h"
+#include "SuccessorForest.h"
 #include "Triangulation.h"
 
 #include <array>
@@ -79,6 +80,10 @@ public:
   bool Keep = false;
   std::unique_ptr<const Triangulation> KeptTriangulation;
   CriticalSimplices KeptCritical;
+  /// With Keep, and no polylines: the flow lines' forest and its maxima per
+  /// cell, whose memoised chains later stages continue (Retriangulation::Flow).
+  std::unique_ptr<const std::vector<std::int32_t>> KeptMaximumOfCell;
+  std::unique_ptr<SuccessorForest> KeptForest;
 
 private:
   // The phases, in the order Run calls them.
@@ -129,6 +134,10 @@ private:
   std::vector<Id> TriangleBegin;      ///< per facet: first triangle (geometry only)
   std::vector<std::array<std::int32_t, 2>> Ends; ///< per facet: the maxima reached
   std::vector<char> PatchFaces;       ///< per facet: which end its normals face
+  /// The forest of the flow lines (without polylines) and the maxima it
+  /// refers to: kept with the triangulation (Keep), else freed after the phase.
+  std::unique_ptr<const std::vector<std::int32_t>> LineMaxima;
+  std::unique_ptr<SuccessorForest> LineForest;
 };
 
 } // namespace internal

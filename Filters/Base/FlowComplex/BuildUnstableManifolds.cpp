@@ -76,11 +76,11 @@ void Builder::TraceUnstableManifolds()
   // reordering of the sides below): the cones need the side of each patch.
   this->PatchFaces.assign(this->Options.StableManifolds ? this->Cs.Facets.size() : 0, 0);
   fc.FlowLines.clear();
-  const std::vector<std::int32_t> maximumOfCell = this->MaximumOfCells();
+  this->LineMaxima = std::make_unique<const std::vector<std::int32_t>>(this->MaximumOfCells());
   const double stub = RayStub * this->In.Diagonal;
-  SuccessorForest forest(
-    *this->Tri, maximumOfCell, fc.InfinityNode, stub, this->Options.UnstableManifolds,
-    this->Options.ExactOnly);
+  this->LineForest = std::make_unique<SuccessorForest>(*this->Tri, *this->LineMaxima,
+    fc.InfinityNode, stub, this->Options.UnstableManifolds, this->Options.ExactOnly);
+  SuccessorForest& forest = *this->LineForest;
   const bool record = this->Options.UnstableManifolds;
   // Deferred flow lines: stopped where their ratio is certainly above the
   // deferral ratio (a geometry-free build only: drawing needs every line).
@@ -113,6 +113,13 @@ void Builder::TraceUnstableManifolds()
     throw;
   }
   fc.Report.ExactFallbacks += forest.ExactFallbacks();
+  // A kept triangulation keeps the forest: the deferred lines' walks go on
+  // from where these stopped, and what each stage follows serves the next.
+  if (!this->Keep || record)
+  {
+    this->LineForest.reset();
+    this->LineMaxima.reset();
+  }
   fc.PendingFlowLines.clear();
   for (const std::vector<PendingFlowLine>& lines : walk.Pending)
   {

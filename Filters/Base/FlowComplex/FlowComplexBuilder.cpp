@@ -100,6 +100,8 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
     Builder* B;
     ~Release()
     {
+      B->LineForest.reset();
+      B->LineMaxima.reset();
       B->Tri.reset();
       B->Cs = CriticalSimplices();
     }
@@ -126,6 +128,8 @@ void Builder::Run(const std::vector<Point3>& coords, bool first)
   {
     this->KeptTriangulation = std::move(this->Tri);
     this->KeptCritical = std::move(this->Cs);
+    this->KeptForest = std::move(this->LineForest);
+    this->KeptMaximumOfCell = std::move(this->LineMaxima);
   }
 }
 
@@ -263,6 +267,8 @@ FlowComplex BuildFlowComplex(const std::vector<Point3>& points, const BuildOptio
     const double magnitude = PerturbationMagnitude(in, attempt);
     try
     {
+      builder.KeptForest.reset(); // refers to the triangulation below
+      builder.KeptMaximumOfCell.reset();
       builder.KeptTriangulation.reset(); // refers to the coordinates below
       builder.Perturbed = attempt > 1;
       builder.Displacement = magnitude;
@@ -286,7 +292,8 @@ FlowComplex BuildFlowComplex(const std::vector<Point3>& points, const BuildOptio
   if (keep)
   {
     *keep = std::make_unique<Retriangulation>(std::move(in), options, std::move(coords),
-      std::move(builder.KeptTriangulation), std::move(builder.KeptCritical));
+      std::move(builder.KeptTriangulation), std::move(builder.KeptCritical),
+      std::move(builder.KeptForest), std::move(builder.KeptMaximumOfCell));
   }
   fc.Time.Total = Seconds(start);
   progress(1.0, "done");

@@ -199,8 +199,6 @@ void FlowCells(const Retriangulation& re, const std::vector<Node>& nodes,
 {
   const CriticalSimplices& cs = re.Critical();
   const Triangulation& tri = re.Tri();
-  const Id infinity = re.Base3() + static_cast<Id>(cs.Cells.size());
-  std::vector<std::int32_t> maximumOfCell(static_cast<std::size_t>(tri.NumberOfCells()), -1);
   for (const Id node : maxima)
   {
     const Id c = node - re.Base3();
@@ -210,10 +208,6 @@ void FlowCells(const Retriangulation& re, const std::vector<Node>& nodes,
     {
       throw InputError(Retriangulation::Mismatch());
     }
-  }
-  for (std::size_t i = 0; i < cs.Cells.size(); ++i)
-  {
-    maximumOfCell[cs.Cells[i].Cell] = static_cast<std::int32_t>(re.Base3() + static_cast<Id>(i));
   }
   // d_P grows along the flow: a flow line that passes the largest value among
   // `maxima` cannot end at one of them, so it is stopped there (on surface
@@ -226,7 +220,9 @@ void FlowCells(const Retriangulation& re, const std::vector<Node>& nodes,
   }
   const double limit = 1.01 * std::ldexp(largest, -re.Prepared().ScaleExponent) +
     1e-5 * re.Prepared().Diagonal;
-  SuccessorForest forest(tri, maximumOfCell, infinity, 0, false, false);
+  // The triangulation's own forest: the chains the run's flow lines walked
+  // are not walked again.
+  SuccessorForest& forest = re.Flow();
   std::vector<Id>& cellMaximum = pieces.CellMaximum;
   cellMaximum.assign(static_cast<std::size_t>(tri.NumberOfCells()), -1);
   ParallelSlices(tri.NumberOfCells(), Id(1) << 16, progress, 0.6, 0.9, "compact cells",

@@ -168,19 +168,14 @@ void DeferredFlowLines::Follow(const std::vector<Id>& nodes)
 
 void DeferredFlowLines::MakeForest()
 {
-  if (this->Forest)
+  if (!this->Forest)
   {
-    return;
+    if (this->Re.Base3() + static_cast<Id>(this->Re.Critical().Cells.size()) != this->InfinityNode)
+    {
+      throw InputError("deferred flow lines: the complex does not fit its triangulation");
+    }
+    this->Forest = &this->Re.Flow();
   }
-  const CriticalSimplices& cs = this->Re.Critical();
-  const Triangulation& tri = this->Re.Tri();
-  this->MaximumOfCell.assign(static_cast<std::size_t>(tri.NumberOfCells()), -1);
-  for (std::size_t i = 0; i < cs.Cells.size(); ++i)
-  {
-    this->MaximumOfCell[cs.Cells[i].Cell] = static_cast<std::int32_t>(this->Re.Base3() + static_cast<Id>(i));
-  }
-  this->Forest = std::make_unique<SuccessorForest>(
-    tri, this->MaximumOfCell, this->InfinityNode, 0, false, this->Re.Options().ExactOnly);
 }
 
 std::vector<DeferredFlowLines::Ends> DeferredFlowLines::EndsAbove(double levelSq)

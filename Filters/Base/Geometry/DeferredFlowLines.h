@@ -133,8 +133,7 @@ private:
   std::vector<std::pair<double, std::size_t>> ByLowerBound;
   std::size_t NextByBound = 0;
   Id Followed = 0;
-  std::unique_ptr<SuccessorForest> Forest;
-  std::vector<std::int32_t> MaximumOfCell;
+  SuccessorForest* Forest = nullptr; ///< Re.Flow(): shared with the build and the other runs
 
   // From SetSimplification:
   std::vector<std::int32_t> RemovedAt;   ///< per node: the 2-3 pair removing it as upper, or -1
@@ -145,7 +144,7 @@ private:
   std::size_t Position(Id node) const; ///< in Pending; npos when absent
   /// Appends the raw 2-3 arcs of the followed Pending[k].
   void AppendRawRow(std::size_t k, std::vector<Arc>& arcs) const;
-  void MakeForest();
+  void MakeForest(); ///< (serial) Forest, before the lines are followed in parallel
   double LeastBound(std::size_t k) const;
 };
 

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace flowrecon
 {
@@ -90,14 +91,44 @@ std::unique_ptr<Retriangulation> Retriangulation::OfStoredComplex(
 
 Retriangulation::Retriangulation(PreparedInput in, const BuildOptions& options,
   std::unique_ptr<const std::vector<Point3>> coords, std::unique_ptr<const Triangulation> tri,
-  CriticalSimplices cs)
+  CriticalSimplices cs, std::unique_ptr<SuccessorForest> flow,
+  std::unique_ptr<const std::vector<std::int32_t>> maximumOfCell)
   : In(std::move(in))
   , Opts(options)
   , Coords(std::move(coords))
   , Tri_(std::move(tri))
   , Cs(std::move(cs))
+  , MaximumOfCell(std::move(maximumOfCell))
+  , Forest(std::move(flow))
 {
+  if (static_cast<bool>(this->Forest) != static_cast<bool>(this->MaximumOfCell))
+  {
+    throw std::logic_error("a kept flow-line forest without its maxima");
+  }
   this->SetBases();
+}
+
+// The forest refers to the triangulation: it goes first.
+Retriangulation::~Retriangulation()
+{
+  this->Forest.reset();
+}
+
+SuccessorForest& Retriangulation::Flow() const
+{
+  if (!this->Forest)
+  {
+    auto maxima = std::make_unique<std::vector<std::int32_t>>(
+      static_cast<std::size_t>(this->Tri_->NumberOfCells()), -1);
+    for (std::size_t i = 0; i < this->Cs.Cells.size(); ++i)
+    {
+      (*maxima)[this->Cs.Cells[i].Cell] = static_cast<std::int32_t>(this->Base3_ + static_cast<Id>(i));
+    }
+    this->MaximumOfCell = std::move(maxima);
+    this->Forest = std::make_unique<SuccessorForest>(*this->Tri_, *this->MaximumOfCell,
+      this->Base3_ + static_cast<Id>(this->Cs.Cells.size()), 0, false, this->Opts.ExactOnly);
+  }
+  return *this->Forest;
 }
 
 void Retriangulation::SetBases()
