@@ -6,6 +6,7 @@
 #include "AutomaticThresholds.h"
 #include "CompactConversion.h"
 #include "CompactFamily.h"
+#include "ContractArrays.h" // MakePoints
 #include "CoreCall.h"
 #include "DeferredReconstruction.h"
 #include "FlowComplexConversion.h"
@@ -128,8 +129,11 @@ struct vtkFlowReconstruction::Cache
   /// share their arrays.
   vtkSmartPointer<vtkUnstructuredGrid> Full;
   vtkSmartPointer<vtkTable> Profile;
-  /// With Geometry compact: the walks of the nodes below its T_max.
+  /// With Geometry compact: the walks of the nodes below its T_max, and the
+  /// samples' points, the same object at every t_r (ParaView computes the
+  /// statistics of a new points array at each update).
   std::unique_ptr<flowrecon::CompactFamily> Compact;
+  vtkSmartPointer<vtkPoints> CompactPoints;
 };
 
 /// The t_r shown, and the automatic choice that gave it (when Chosen).
@@ -426,7 +430,7 @@ void vtkFlowReconstruction::FillOutputs(vtkMultiBlockDataSet* input, double tmax
     const flowrecon::CompactComplex compact = c.Compact->At(t, thresholds);
     flowrecon::CompactCellsToVTK(compact,
       std::vector<flowrecon::Point3>(fc.Points.begin(), fc.Points.begin() + fc.NumberOfInputPoints),
-      fc.Nodes, thresholds, grid);
+      fc.Nodes, thresholds, grid, c.CompactPoints);
   }
   // What ParaView colours by in a render view: the reconstruction by Index (the
   // array Flow Complex's critical points and stable manifolds are coloured by),
@@ -525,6 +529,11 @@ bool vtkFlowReconstruction::PrepareCompact(double tmax)
     [&]() {
       c.Compact = std::make_unique<flowrecon::CompactFamily>(c.FC, c.Carrier, c.Run, tmax, nullptr,
         progress, "lower MaximumThreshold, or choose the exact Geometry");
+      if (!c.CompactPoints)
+      {
+        c.CompactPoints = flowrecon::MakePoints(std::vector<flowrecon::Point3>(
+          c.FC.Points.begin(), c.FC.Points.begin() + c.FC.NumberOfInputPoints));
+      }
       finished = true;
     },
     []() {});

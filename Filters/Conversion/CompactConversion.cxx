@@ -20,7 +20,7 @@ namespace flowrecon
 
 void CompactCellsToVTK(const CompactComplex& compact, const std::vector<Point3>& samples,
   const std::vector<Node>& nodes, const std::vector<double>& nodeThreshold,
-  vtkUnstructuredGrid* grid)
+  vtkUnstructuredGrid* grid, vtkPoints* points)
 {
   const vtkIdType cells = static_cast<vtkIdType>(compact.NumberOfCells());
   vtkNew<vtkCellArray> cellArray;
@@ -73,7 +73,14 @@ void CompactCellsToVTK(const CompactComplex& compact, const std::vector<Point3>&
   kept->ShallowCopy(grid->GetFieldData());
   grid->Initialize();
   grid->SetFieldData(kept);
-  grid->SetPoints(MakePoints(samples));
+  if (points)
+  {
+    grid->SetPoints(points);
+  }
+  else
+  {
+    grid->SetPoints(MakePoints(samples));
+  }
   grid->SetCells(types, cellArray);
   for (vtkDataArray* a : std::initializer_list<vtkDataArray*>{ nodeId, index, threshold, claims })
   {

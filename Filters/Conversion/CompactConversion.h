@@ -8,6 +8,7 @@
 
 #include <vector>
 
+class vtkPoints;
 class vtkUnstructuredGrid;
 
 namespace flowrecon
@@ -23,10 +24,12 @@ void CompactToVTK(const CompactComplex& compact, const std::vector<Point3>& samp
   const std::array<Id, 4>& betti, vtkUnstructuredGrid* grid);
 
 /// `grid`'s cells and cell data := those of `compact`, as CompactToVTK's; its
-/// field data (a filter's Betti numbers and thresholds) stays.
+/// field data (a filter's Betti numbers and thresholds) stays. `points`, when
+/// given, are the samples' points, shared as they are: a filter that keeps
+/// them between t_r changes spares ParaView their statistics each time.
 void CompactCellsToVTK(const CompactComplex& compact, const std::vector<Point3>& samples,
   const std::vector<Node>& nodes, const std::vector<double>& nodeThreshold,
-  vtkUnstructuredGrid* grid);
+  vtkUnstructuredGrid* grid, vtkPoints* points = nullptr);
 
 } // namespace flowrecon
 
