@@ -68,15 +68,11 @@ bool SameSimplex(const Node& node, const std::array<Id, N>& simplex)
   return N == 4 || node.Simplex[N] < 0;
 }
 
-/// `claim` with the cells on the two sides of its triangle `t` (triangulation ids).
-Claim Sides(const Triangulation& tri, const std::array<Id, 3>& t, Claim claim)
+/// `claim` with the cells on the two sides of its triangle: the facet
+/// `opposite` of `cell` (CGAL's facet search would mark cells: one thread at a
+/// time; the walks know a cell of each triangle they cross).
+Claim Sides(const Triangulation& tri, CellHandle cell, int opposite, Claim claim)
 {
-  CellHandle cell;
-  int opposite = 0;
-  if (!tri.Facet(t[0], t[1], t[2], cell, opposite))
-  {
-    throw std::logic_error("compact reconstruction: a triangle that is not a Delaunay facet");
-  }
   for (int side = 0; side < 2; ++side)
   {
     if (!tri.Dt().is_infinite(cell))
@@ -91,6 +87,22 @@ Claim Sides(const Triangulation& tri, const std::array<Id, 3>& t, Claim claim)
   return claim;
 }
 
+/// The index in `cell` of its vertex not in the triangle `t` (triangulation ids).
+int OppositeOf(const Triangulation& tri, CellHandle cell, const std::array<Id, 3>& t)
+{
+  int sum = 0;
+  for (const Id v : t)
+  {
+    int i = 0;
+    if (!cell->has_vertex(tri.Vertex(v), i))
+    {
+      throw std::logic_error("compact reconstruction: a walk's cell misses its triangle");
+    }
+    sum += i;
+  }
+  return 6 - sum;
+}
+
 /// The claims of the walks of `patches` (index-2 node ids): each one's facet
 /// and every triangle its walk crosses, sorted.
 void WalkPatches(const Retriangulation& re, const std::vector<Node>& nodes,
@@ -99,9 +111,9 @@ void WalkPatches(const Retriangulation& re, const std::vector<Node>& nodes,
   const CriticalSimplices& cs = re.Critical();
   const Id facets = static_cast<Id>(cs.Facets.size());
   std::vector<std::vector<Claim>> claims(patches.size());
-  std::vector<std::vector<std::array<Id, 3>>> walked(patches.size()); // triangulation ids
   std::vector<Id> fallbacks(patches.size(), 0);
   std::vector<char> foreign(patches.size(), 0);
+  const Triangulation& tri = re.Tri();
   ParallelSlices(static_cast<Id>(patches.size()), Id(1) << 14, progress, 0.0, 0.6,
     "compact patches", [&](Id first, Id last) {
       for (Id k = first; k < last; ++k)
@@ -122,16 +134,19 @@ void WalkPatches(const Retriangulation& re, const std::vector<Node>& nodes,
           continue;
         }
         const Patch patch = ComputeStableManifold(
-          re.Tri(), cs, static_cast<std::size_t>(f), false, fallbacks[k], false, true);
-        claims[k].push_back({ own, node });
-        walked[k].push_back({ { facet.Vertices[0], facet.Vertices[1], facet.Vertices[2] } });
-        for (const std::array<Id, 3>& t : patch.Walked)
+          tri, cs, static_cast<std::size_t>(f), false, fallbacks[k], false, true);
+        claims[k].reserve(patch.Walked.size() + 1);
+        claims[k].push_back(Sides(tri, tri.Cell(facet.Cell), facet.Opposite, { own, node }));
+        for (std::size_t j = 0; j < patch.Walked.size(); ++j)
         {
-          claims[k].push_back({ InputSimplex<3>(re, t), node });
-          walked[k].push_back(t);
+          const std::array<Id, 3>& t = patch.Walked[j];
+          const CellHandle cell = patch.WalkedCells[j];
+          claims[k].push_back(
+            Sides(tri, cell, OppositeOf(tri, cell, t), { InputSimplex<3>(re, t), node }));
         }
       }
     });
+  std::size_t total = 0;
   for (std::size_t k = 0; k < patches.size(); ++k)
   {
     if (foreign[k])
@@ -142,11 +157,13 @@ void WalkPatches(const Retriangulation& re, const std::vector<Node>& nodes,
     {
       pieces.ExactFallbacks.emplace_back(patches[k], fallbacks[k]);
     }
-    // CGAL's facet search marks cells as it goes: one thread at a time.
-    for (std::size_t j = 0; j < claims[k].size(); ++j)
-    {
-      pieces.Claims.push_back(Sides(re.Tri(), walked[k][j], claims[k][j]));
-    }
+    total += claims[k].size();
+  }
+  pieces.Claims.reserve(pieces.Claims.size() + total);
+  for (std::vector<Claim>& c : claims)
+  {
+    pieces.Claims.insert(pieces.Claims.end(), c.begin(), c.end());
+    std::vector<Claim>().swap(c);
   }
   std::sort(pieces.Claims.begin(), pieces.Claims.end());
 }

@@ -70,6 +70,7 @@ Patch Walk(const Triangulation& tri, const CriticalSimplices& cs, const std::arr
     if (withWalked)
     {
       patch.Walked.push_back({ { it.U, it.V, s } });
+      patch.WalkedCells.push_back(exitCell);
     }
     const Id yRef = -1 - static_cast<Id>(points.size());
     points.push_back(y);

@@ -24,6 +24,9 @@ struct Patch
   /// per exit, in triangulation vertex ids (only when asked for): with the
   /// critical facet, the Delaunay triangles a compact output puts in its place.
   std::vector<std::array<Id, 3>> Walked;
+  /// A Delaunay cell holding each Walked triangle (the walk's exit cell), so
+  /// that its two sides need no search of the triangulation.
+  std::vector<CellHandle> WalkedCells;
 };
 
 /// Stable manifold of the acute Gabriel facet cs.Facets[facet]. With `withGeometry` false
