@@ -60,14 +60,14 @@ flowrecon_add_cli_test(ReconstructOutputDirectoryMissing EXIT 1 STDERR_LINES 1
 # are reconstructed at t_r 2; at t_r 1.1 only the 4 samples and the 6 edges,
 # all at ratio 1 (equal edges join by horizontal extension at ratio 1)).
 # The default output, Delaunay simplices on the samples: at t_r 2 the solid
-# (its 4 faces and the cell), at t_r 1.1 its 6 edges (b1 = 3); --compact is
+# (the cell alone: its 4 faces are its own), at t_r 1.1 its 6 edges (b1 = 3); --compact is
 # the same run.
 flowrecon_add_cli_test(ReconstructTetrahedron EXIT 0 STDERR_LINES 0
-  STDOUT "^[^\n]*tet_compact\\.vtu: 5 cells, 15 of 15 steps at t_r 2\nBetti numbers: 1 0 0\ncompact output: 4 triangles, 1 tetrahedra, 0 edges, 0 samples, 1\\.25 cells per sample; 0 triangles shared by two patches, 0 crossed twice by one walk, 0 voids without a maximum filled\ncompact output's Betti numbers 1 0 0\n$"
+  STDOUT "^[^\n]*tet_compact\\.vtu: 1 cells, 15 of 15 steps at t_r 2\nBetti numbers: 1 0 0\ncompact output: 0 triangles, 1 tetrahedra, 0 edges, 0 samples, 0\\.25 cells per sample; 0 triangles shared by two patches, 0 crossed twice by one walk, 0 voids without a maximum filled\ncompact output's Betti numbers 1 0 0\n$"
   VTM "${_w}/tet_compact.vtu"
   ARGS reconstruct "${_d}/tetrahedron.xyz" -o "${_w}/tet_compact.vtu" --tp 0 --tr 2)
 flowrecon_add_cli_test(ReconstructCompactAlias EXIT 0 STDERR_LINES 0
-  STDOUT "^[^\n]*tet_alias\\.vtu: 5 cells, 15 of 15 steps at t_r 2\nBetti numbers: 1 0 0\ncompact output: 4 triangles, 1 tetrahedra, 0 edges, 0 samples, 1\\.25 cells per sample; 0 triangles shared by two patches, 0 crossed twice by one walk, 0 voids without a maximum filled\ncompact output's Betti numbers 1 0 0\n$"
+  STDOUT "^[^\n]*tet_alias\\.vtu: 1 cells, 15 of 15 steps at t_r 2\nBetti numbers: 1 0 0\ncompact output: 0 triangles, 1 tetrahedra, 0 edges, 0 samples, 0\\.25 cells per sample; 0 triangles shared by two patches, 0 crossed twice by one walk, 0 voids without a maximum filled\ncompact output's Betti numbers 1 0 0\n$"
   ARGS reconstruct "${_d}/tetrahedron.xyz" -o "${_w}/tet_alias.vtu" --tp 0 --tr 2 --compact)
 flowrecon_add_cli_test(ReconstructTetrahedronEdges EXIT 0 STDERR_LINES 3
   STDOUT "tet_compact_edges\\.vtu: 6 cells, 10 of 15 steps at t_r 1\\.1\nBetti numbers: 1 3 0\ncompact output: 0 triangles, 0 tetrahedra, 6 edges, 0 samples, 1\\.5 cells per sample;.*\ncompact output's Betti numbers 1 3 0\n"
