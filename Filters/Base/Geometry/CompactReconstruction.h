@@ -8,7 +8,8 @@
 // homeomorphic to S(c) when no triangle or edge is shared between steps
 // (docs/compact-output.md). An index-3 node gives
 // the Delaunay cells whose Voronoi vertex flows to it, an index-1 node its
-// Gabriel edge, an index-0 node its sample. Where two walks cross one
+// Gabriel edge, an index-0 node its sample; a triangle that is a facet of a
+// written tetrahedron is left out (the solid holds it). Where two walks cross one
 // Delaunay triangle the two patches share it: counted, not resolved; where
 // two patches close around Voronoi vertices that the exact ones leave open,
 // the void is filled.
@@ -28,8 +29,8 @@ namespace flowrecon
 class Retriangulation;
 
 /// Cells over input point ids, each with the node it stands for. Triangles
-/// are distinct; an edge or a sample appears only when no triangle or
-/// tetrahedron holds it.
+/// are distinct and appear only when no tetrahedron has them as a facet; an
+/// edge or a sample appears only when no triangle or tetrahedron holds it.
 struct CompactComplex
 {
   std::vector<Id> Vertices, VertexNode;
@@ -41,10 +42,10 @@ struct CompactComplex
   std::vector<int> TriangleClaims;
   std::vector<std::array<Id, 4>> Tetrahedra;
   std::vector<Id> TetrahedronNode;
-  /// Delaunay triangles crossed by the walks of two (or more) index-2 nodes:
+  /// Written triangles crossed by the walks of two (or more) index-2 nodes:
   /// written once, for the least node id.
   Id SharedTriangles = 0;
-  /// Delaunay triangles crossed twice by one walk (written once).
+  /// Written triangles crossed twice by one walk (written once).
   Id RevisitedTriangles = 0;
   /// Voids of the complex with no maximum inside, filled with their Delaunay
   /// cells (see CompactReconstruction).
