@@ -2,11 +2,11 @@
 
 #include "CompressedRows.h"
 #include "HasseDiagram.h"
+#include "IndexedHeap.h"
 
 #include <algorithm>
 #include <array>
 #include <limits>
-#include <queue>
 #include <string>
 #include <tuple>
 #include <stdexcept>
@@ -77,13 +77,20 @@ struct Entry
   double Priority;
   std::int32_t Gated; ///< 0 for regularization: it precedes any extension of equal priority
   std::int32_t Node;
-  /// Reversed, so that std::priority_queue pops the least key.
-  bool operator<(const Entry& o) const
+};
+
+struct EntryLess
+{
+  bool operator()(const Entry& a, const Entry& b) const
   {
-    return std::tie(this->Priority, this->Gated, this->Node) >
-      std::tie(o.Priority, o.Gated, o.Node);
+    return std::tie(a.Priority, a.Gated, a.Node) < std::tie(b.Priority, b.Gated, b.Node);
   }
 };
+
+/// Each node at most once, with its best offer: a better one lowers its key
+/// in place. The keys are distinct (node ids break ties), so the order of the
+/// insertions is the least key each time, whatever the heap.
+using OfferQueue = IndexedHeap<Entry, &Entry::Node, EntryLess>;
 
 static_assert(sizeof(Entry) == 16 && sizeof(Insertion) == 32, "per-node records of the run");
 
@@ -107,6 +114,7 @@ public:
     , Survives(survives)
     , Graph(nodes.size(), arcs)
     , Tr(tr)
+    , Queue(nodes.size())
     , Late(late)
   {
   }
@@ -140,16 +148,10 @@ public:
       this->Extend(this->Result.Order[step]);
     }
     const double total = std::max<double>(1, static_cast<double>(this->Nodes.size()));
-    while (!this->Queue.empty())
+    while (!this->Queue.Empty())
     {
-      const Entry top = this->Queue.top();
-      this->Queue.pop();
+      const Entry top = this->Queue.Pop();
       const Insertion& best = this->Result.Nodes[top.Node];
-      // Lazy deletion: skip entries superseded by a better offer or already used.
-      if (best.Step >= 0 || best.Priority != top.Priority || best.Threshold != top.Gated)
-      {
-        continue;
-      }
       const double priority = best.Priority;
       this->Insert(top.Node, priority, best.Kind, best.Sponsor);
       this->Result.Profile.push_back(priority);
@@ -338,7 +340,7 @@ private:
       best.Threshold = gated;
       best.Kind = kind;
       best.Sponsor = static_cast<std::int32_t>(sponsor);
-      this->Queue.push(Entry{ ratio, gated, static_cast<std::int32_t>(d) });
+      this->Queue.Push(Entry{ ratio, gated, static_cast<std::int32_t>(d) });
     }
   }
 
@@ -346,7 +348,7 @@ private:
   const std::vector<bool>& Survives;
   Adjacency Graph;
   double Tr;
-  std::priority_queue<Entry> Queue;
+  OfferQueue Queue;
   double Running = 1;
   ReconstructionResult Result;
   const LateArcs* Late;
