@@ -279,8 +279,7 @@ bool vtkFlowReconstruction::RunQueue(vtkMultiBlockDataSet* input, bool& aborted)
   flowrecon::CallCore(
     this, "reconstruction",
     [&]() {
-      const std::vector<Id> init = flowrecon::InitializationEdges(
-        nodes, flowrecon::NearestNeighboursFromDiagram(nodes, fc.Arcs));
+      const std::vector<Id> init = flowrecon::InitializationEdgesFromDiagram(nodes, fc.Arcs);
       ++this->NumberOfQueueRuns;
       if (!deferred)
       {

@@ -87,6 +87,7 @@ void TestFigure1()
   CHECK(InitializationEdges(d.Nodes, nn) == (std::vector<Id>{ S1, S3, S4 }));
   std::vector<Id> fromDiagram = NearestNeighboursFromDiagram(d.Nodes, d.Arcs);
   CHECK(std::vector<Id>(fromDiagram.begin(), fromDiagram.begin() + 4) == nn);
+  CHECK(InitializationEdgesFromDiagram(d.Nodes, d.Arcs) == (std::vector<Id>{ S1, S3, S4 }));
   CHECK(std::count(fromDiagram.begin() + 4, fromDiagram.end(), Id(-1)) == 8);
 
   const std::vector<bool> all(d.Nodes.size(), true);
@@ -444,6 +445,8 @@ void CheckProperties(const std::string& name, const std::vector<Point3>& cloud, 
   }
   CHECK(NearestNeighboursFromDiagram(nodes, fc.Arcs) == nn);
   const std::vector<Id> init = InitializationEdges(nodes, nn);
+  // The one-pass form gives the same edges as the lookup by simplex.
+  CHECK(InitializationEdgesFromDiagram(nodes, fc.Arcs) == init);
   // Every nearest-neighbour pair is a Gabriel edge, found.
   std::set<std::pair<Id, Id>> pairs;
   for (const Id v : samples)

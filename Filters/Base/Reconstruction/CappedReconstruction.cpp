@@ -148,8 +148,7 @@ void GrowRun(CappedReconstruction& r, double cap, bool late, const Progress& pro
   FlowComplex& fc = r.Complex;
   const std::vector<bool> survives =
     r.Simplified ? r.Simplification.Survives : std::vector<bool>(fc.Nodes.size(), true);
-  const std::vector<Id> init =
-    InitializationEdges(fc.Nodes, NearestNeighboursFromDiagram(fc.Nodes, fc.Arcs));
+  const std::vector<Id> init = InitializationEdgesFromDiagram(fc.Nodes, fc.Arcs);
   const SimplificationResult* s = r.Simplified ? &r.Simplification : nullptr;
   if (!late)
   {

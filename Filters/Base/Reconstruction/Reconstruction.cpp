@@ -434,21 +434,31 @@ std::vector<Id> InitializationEdges(
   return result;
 }
 
-std::vector<Id> NearestNeighboursFromDiagram(
-  const std::vector<Node>& nodes, const std::vector<Arc>& arcs)
+namespace
+{
+
+/// Per node: the two samples of each Gabriel edge (by its 0-1 arcs), and the
+/// shortest Gabriel edge of each sample (least (value, id); -1 for none).
+struct ShortestEdges
+{
+  std::vector<std::array<Id, 2>> Ends;
+  std::vector<Id> Shortest;
+};
+
+ShortestEdges FindShortestEdges(const std::vector<Node>& nodes, const std::vector<Arc>& arcs)
 {
   CheckArcs(nodes, arcs, nullptr);
   const std::size_t n = nodes.size();
-  // The two samples of each Gabriel edge.
-  std::vector<std::array<Id, 2>> ends(n, { { -1, -1 } });
-  std::vector<Id> shortest(n, -1);
+  ShortestEdges r;
+  r.Ends.assign(n, { { -1, -1 } });
+  r.Shortest.assign(n, -1);
   for (const Arc& a : arcs)
   {
     if (a.Multiplicity <= 0 || nodes[a.Lower].Index != 0)
     {
       continue;
     }
-    std::array<Id, 2>& e = ends[a.Upper];
+    std::array<Id, 2>& e = r.Ends[a.Upper];
     if (e[0] < 0)
     {
       e[0] = a.Lower;
@@ -457,22 +467,63 @@ std::vector<Id> NearestNeighboursFromDiagram(
     {
       e[1] = a.Lower;
     }
-    Id& s = shortest[a.Lower];
+    Id& s = r.Shortest[a.Lower];
     if (s < 0 || std::make_pair(nodes[a.Upper].Value, static_cast<Id>(a.Upper)) < std::make_pair(nodes[s].Value, s))
     {
       s = a.Upper;
     }
   }
-  std::vector<Id> nn(n, -1);
-  for (std::size_t v = 0; v < n; ++v)
+  return r;
+}
+
+} // namespace
+
+std::vector<Id> NearestNeighboursFromDiagram(
+  const std::vector<Node>& nodes, const std::vector<Arc>& arcs)
+{
+  const ShortestEdges edges = FindShortestEdges(nodes, arcs);
+  std::vector<Id> nn(nodes.size(), -1);
+  for (std::size_t v = 0; v < nodes.size(); ++v)
   {
-    const Id e = shortest[v];
-    if (e >= 0 && ends[e][1] >= 0)
+    const Id e = edges.Shortest[v];
+    if (e >= 0 && edges.Ends[e][1] >= 0)
     {
-      nn[v] = ends[e][0] == static_cast<Id>(v) ? ends[e][1] : ends[e][0];
+      nn[v] = edges.Ends[e][0] == static_cast<Id>(v) ? edges.Ends[e][1] : edges.Ends[e][0];
     }
   }
   return nn;
+}
+
+std::vector<Id> InitializationEdgesFromDiagram(
+  const std::vector<Node>& nodes, const std::vector<Arc>& arcs)
+{
+  const ShortestEdges edges = FindShortestEdges(nodes, arcs);
+  std::vector<char> chosen(nodes.size(), 0);
+  for (std::size_t v = 0; v < nodes.size(); ++v)
+  {
+    const Id e = edges.Shortest[v];
+    if (e < 0 || edges.Ends[e][1] < 0)
+    {
+      continue;
+    }
+    // The edge node of the pair {v, nn(v)} is e itself when the node's simplex
+    // is its samples' (InitializationEdges looks the pair up by simplex).
+    const Id a = nodes[edges.Ends[e][0]].Simplex[0], b = nodes[edges.Ends[e][1]].Simplex[0];
+    const Node& edge = nodes[e];
+    if (edge.Index == 1 && edge.Simplex[0] == std::min(a, b) && edge.Simplex[1] == std::max(a, b))
+    {
+      chosen[e] = 1;
+    }
+  }
+  std::vector<Id> result;
+  for (std::size_t e = 0; e < nodes.size(); ++e)
+  {
+    if (chosen[e])
+    {
+      result.push_back(static_cast<Id>(e));
+    }
+  }
+  return result;
 }
 
 std::vector<int> EdgeMultiplicities(const std::vector<Node>& nodes,

@@ -125,6 +125,13 @@ std::vector<Id> InitializationEdges(
 std::vector<Id> NearestNeighboursFromDiagram(
   const std::vector<Node>& nodes, const std::vector<Arc>& arcs);
 
+/// InitializationEdges(nodes, NearestNeighboursFromDiagram(nodes, arcs)) in
+/// one linear pass: the shortest Gabriel edge of each sample is its
+/// initialization edge, with no search of the edges by their samples (a sort
+/// of every index-1 node, twice a cloud's run).
+std::vector<Id> InitializationEdgesFromDiagram(
+  const std::vector<Node>& nodes, const std::vector<Arc>& arcs);
+
 /// For each index-1 node in the reconstruction at threshold t: the number of
 /// reconstructed index-2 nodes it bounds, counting arc multiplicities (the
 /// paper's "multiplicity" of Gabriel edges, Fig. 3d). 0 for every other node.

@@ -33,8 +33,7 @@ StoredTopology TopologyOfStoredComplex(const FlowComplex& fc, double tp, double 
   {
     s = Simplify(fc.Nodes, std::vector<Arc>(fc.Arcs), tp, progress.Range(0, 0.3), deferred);
   }
-  const std::vector<Id> init =
-    InitializationEdges(fc.Nodes, NearestNeighboursFromDiagram(fc.Nodes, fc.Arcs));
+  const std::vector<Id> init = InitializationEdgesFromDiagram(fc.Nodes, fc.Arcs);
   ReconstructionResult run;
   std::vector<Id> carriers;
   if (!deferred)
