@@ -262,7 +262,7 @@ void FlowCells(const Retriangulation& re, const std::vector<Node>& nodes,
   // The triangulation's own forest: the chains the run's flow lines walked
   // are not walked again.
   SuccessorForest& forest = re.Flow();
-  std::vector<Id>& cellMaximum = pieces.CellMaximum;
+  std::vector<std::int32_t>& cellMaximum = pieces.CellMaximum;
   cellMaximum.assign(static_cast<std::size_t>(tri.NumberOfCells()), -1);
   ParallelSlices(tri.NumberOfCells(), Id(1) << 16, progress, 0.6, 0.9, "compact cells",
     [&](Id first, Id last) {
@@ -270,7 +270,8 @@ void FlowCells(const Retriangulation& re, const std::vector<Node>& nodes,
       {
         double bound = 0;
         const Id root = forest.RootBelow(c, limit * limit, &bound);
-        cellMaximum[c] = root >= 0 && std::binary_search(maxima.begin(), maxima.end(), root) ? root : -1;
+        cellMaximum[c] = static_cast<std::int32_t>(
+          root >= 0 && std::binary_search(maxima.begin(), maxima.end(), root) ? root : -1);
       }
     });
 }
@@ -278,7 +279,7 @@ void FlowCells(const Retriangulation& re, const std::vector<Node>& nodes,
 /// The Delaunay cells that flow to a selected maximum; `cellNode` (per cell)
 /// receives their maximum, -1 for the others.
 void SelectTetrahedra(const Retriangulation& re, const CompactPieces& pieces,
-  const std::vector<char>& isSelected, CompactComplex& out, std::vector<Id>& cellNode)
+  const std::vector<char>& isSelected, CompactComplex& out, std::vector<std::int32_t>& cellNode)
 {
   const Triangulation& tri = re.Tri();
   cellNode.assign(static_cast<std::size_t>(tri.NumberOfCells()), -1);
@@ -287,7 +288,7 @@ void SelectTetrahedra(const Retriangulation& re, const CompactPieces& pieces,
     const Id m = pieces.CellMaximum[c];
     if (m >= 0 && isSelected[m])
     {
-      cellNode[c] = m;
+      cellNode[c] = static_cast<std::int32_t>(m);
       out.Tetrahedra.push_back(InputSimplex<4>(re, tri.SortedVertices(tri.Cell(c))));
       out.TetrahedronNode.push_back(m);
     }
@@ -345,7 +346,7 @@ Walls FindWalls(const Triangulation& tri, const CompactComplex& out,
 /// t_r: only what decides boundedness is read here (WallNode does the rest).
 /// With `toVoid`, the search stops (false) at a maximum too: such a region is
 /// not filled, and only counting the voids needs to know more.
-bool SearchRegion(const std::vector<Id>& cellNode, const Walls& walls,
+bool SearchRegion(const std::vector<std::int32_t>& cellNode, const Walls& walls,
   const std::vector<char>& isMaximum, const Neighbourhood& neighbours, Id start,
   std::int32_t search, bool toVoid, std::vector<std::int32_t>& mark, std::vector<Id>& component,
   bool& walled, bool& maximum)
@@ -394,7 +395,7 @@ bool SearchRegion(const std::vector<Id>& cellNode, const Walls& walls,
 
 /// The node of largest value among the walls and complex cells around the
 /// bounded region `component` (in SearchRegion's order; the first on ties).
-Id WallNode(const std::vector<Node>& nodes, const std::vector<Id>& cellNode, Walls& walls,
+Id WallNode(const std::vector<Node>& nodes, const std::vector<std::int32_t>& cellNode, Walls& walls,
   const Neighbourhood& neighbours, const std::vector<Id>& component)
 {
   walls.SortSides();
@@ -438,7 +439,7 @@ Id WallNode(const std::vector<Node>& nodes, const std::vector<Id>& cellNode, Wal
 /// out.Voids (else a search ends at its first maximum). `filled` receives the
 /// filling's cells.
 void FillVoidsWithoutMaximum(const Retriangulation& re, const std::vector<Node>& nodes,
-  const std::vector<Id>& cellNode, const Neighbourhood& neighbours,
+  const std::vector<std::int32_t>& cellNode, const Neighbourhood& neighbours,
   const std::vector<const Claim*>& written, bool count, CompactComplex& out,
   std::vector<Id>& filled)
 {
@@ -504,7 +505,7 @@ void FillVoidsWithoutMaximum(const Retriangulation& re, const std::vector<Node>&
 /// `filled`): the tetrahedra hold them already, so the union is the same, and
 /// a volume sample's solid is written as its tetrahedra alone instead of with
 /// every wall between their maxima (about 7 triangles a sample more).
-void DropCoveredTriangles(const Triangulation& tri, const std::vector<Id>& cellNode,
+void DropCoveredTriangles(const Triangulation& tri, const std::vector<std::int32_t>& cellNode,
   const std::vector<Id>& filled, std::vector<const Claim*>& written, CompactComplex& out)
 {
   if (out.Tetrahedra.empty())
@@ -820,7 +821,7 @@ CompactComplex SelectCompact(const Retriangulation& re, const std::vector<Node>&
   CompactComplex out;
   std::vector<const Claim*> written; // the claim of each triangle
   SelectTriangles(pieces, isSelected, out, written);
-  std::vector<Id> cellNode; // empty without a selected maximum
+  std::vector<std::int32_t> cellNode; // empty without a selected maximum
   if (maximum && !pieces.CellMaximum.empty())
   {
     SelectTetrahedra(re, pieces, isSelected, out, cellNode);

@@ -91,7 +91,7 @@ struct CompactPieces
   std::vector<CompactClaim> Claims;
   /// Per Delaunay cell, the candidate maximum it flows to, -1 for none; empty
   /// without candidate maxima.
-  std::vector<Id> CellMaximum;
+  std::vector<std::int32_t> CellMaximum; // 32-bit node ids: one per Delaunay cell
   /// Walks redone in exact arithmetic, per index-2 candidate that needed any.
   std::vector<std::pair<Id, Id>> ExactFallbacks;
   /// Per Delaunay cell, its four neighbours' ids (-1: infinite), opposite its
