@@ -44,9 +44,20 @@ recon.UpdatePipeline()
 done("Flow Reconstruction", t0)
 cells = recon.GetDataInformation().GetNumberOfCells()
 fd = servermanager.Fetch(recon).GetFieldData()
-tr = fd.GetArray("ReconstructionThreshold").GetValue(0)
-tp = fd.GetArray("PersistenceThreshold").GetValue(0)
-betti = [int(fd.GetArray("BettiNumbers").GetValue(k)) for k in range(3)]
+
+
+def values(name, count):
+    """The first `count` values of a field array, or None when the filter wrote
+    none (no Betti numbers: the cells exceeded MaximumTopologyCells)."""
+    a = fd.GetArray(name)
+    if a is None or a.GetNumberOfTuples() * a.GetNumberOfComponents() < count:
+        return None
+    return [a.GetValue(k) for k in range(count)]
+
+
+tr = values("ReconstructionThreshold", 1)
+tp = values("PersistenceThreshold", 1)
+betti = values("BettiNumbers", 3)
 t0 = time.time()
 recon.AutomaticReconstructionThreshold = 0
 recon.ReconstructionThreshold = 3.0
@@ -55,5 +66,6 @@ done("t_r -> 3", t0)
 cells3 = recon.GetDataInformation().GetNumberOfCells()
 for stage in stages:
     print("%s: %.2f s, resident %.2f GB, peak so far %.2f GB" % stage)
-print("automatic: t_r %.3f, t_p %g, Betti numbers %d %d %d, %d cells; at t_r 3: %d cells"
-      % (tr, tp, betti[0], betti[1], betti[2], cells, cells3))
+print("automatic: t_r %s, t_p %s, Betti numbers %s, %d cells; at t_r 3: %d cells"
+      % ("%.3f" % tr[0] if tr else "none", "%g" % tp[0] if tp else "none",
+         " ".join("%d" % b for b in betti) if betti else "none", cells, cells3))
