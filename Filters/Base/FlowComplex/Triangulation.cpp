@@ -149,15 +149,4 @@ bool Triangulation::Link(Id u, Id v, std::vector<Id>& out, std::vector<CellHandl
   return true;
 }
 
-bool Triangulation::Facet(Id a, Id b, Id c, CellHandle& cell, int& opposite) const
-{
-  int i = 0, j = 0, k = 0;
-  if (!this->DT.is_facet(this->Vertices[a], this->Vertices[b], this->Vertices[c], cell, i, j, k))
-  {
-    return false;
-  }
-  opposite = 6 - i - j - k;
-  return true;
-}
-
 } // namespace flowrecon

@@ -59,10 +59,6 @@ public:
   bool Link(Id u, Id v, std::vector<Id>& out, std::vector<CellHandle>* cells = nullptr,
     CellHandle hint = CellHandle()) const;
 
-  /// Finds the Delaunay facet abc: a cell containing it and the index of the
-  /// opposite vertex in that cell. Returns false if abc is not a facet.
-  bool Facet(Id a, Id b, Id c, CellHandle& cell, int& opposite) const;
-
 private:
   const std::vector<Point3>& Coords;
   std::uint64_t SerialNumber;

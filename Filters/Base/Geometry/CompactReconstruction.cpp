@@ -691,6 +691,8 @@ Id CountDistinct(Id points, const Emit& emit)
 /// duality (the complex lies in a triangulation of R^3: its voids are the
 /// bounded regions of the complement); b1 from the Euler characteristic
 /// V - E + F - T = b0 - b1 + b2, counting the distinct faces of the cells.
+/// Needs DropCoveredTriangles first: F adds the written triangles to the
+/// tetrahedra's distinct facets, so none may be one of those facets.
 /// Linear but for short per-vertex sorts, where cell homology of millions of
 /// triangles reduces a large H1 matrix (50 s at 10^6 sphere points).
 void SetBettiNumbers(CompactComplex& out)
