@@ -86,6 +86,13 @@ constexpr const char* ThresholdWarnings = "ThresholdWarnings";
 // array of one value in the field data of port 0, and the column of the
 // one-row table of the topology text port, which a render view draws).
 constexpr const char* Topology = "Topology";
+// The bars of the reconstructions of Flow Complex Simplification's output
+// (field data): one tuple per bar (Dimension, Birth, Death, BirthNode,
+// DeathNode; Death 1e308 and DeathNode -1 for a class that never dies), the
+// Betti numbers of every t_r from its Hasse diagram, exact for t_r up to the
+// one value of ReconstructionBarsBelow (1e308: every t_r).
+constexpr const char* ReconstructionBars = "ReconstructionBars";
+constexpr const char* ReconstructionBarsBelow = "ReconstructionBarsBelow";
 // The t_p candidates an automatic t_p chose among, in order of preference.
 constexpr const char* PersistenceCandidates = "PersistenceCandidates";
 constexpr const char* Dimension = "Dimension";

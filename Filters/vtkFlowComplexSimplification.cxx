@@ -9,6 +9,7 @@
 #include "Simplification.h"
 #include "StoredComplexTopology.h"
 #include "SurvivingBlocks.h"
+#include "TopologyConversion.h"
 
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
@@ -20,6 +21,8 @@
 #include "vtkObjectFactory.h"
 #include "vtkStringArray.h"
 
+#include <algorithm>
+#include <cmath>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -27,53 +30,76 @@
 namespace
 {
 
-/// The automatic t_p: the candidate whose reconstructions up to `cap` have
-/// the most stable topology, and what the choice warns about.
+/// The topology of the reconstructions of one t_p, from the Hasse diagram.
+flowrecon::StoredTopology TopologyAt(const flowrecon::FlowComplex& fc, double tp, double cap,
+  const flowrecon::Retriangulation* re, const flowrecon::Progress& progress)
+{
+  try
+  {
+    return flowrecon::TopologyOfStoredComplex(fc, tp, cap, re, progress);
+  }
+  catch (const flowrecon::Degenerate&)
+  {
+    throw flowrecon::InputError("a deferred patch met a tie the flow complex did not see: "
+                                "set Defer Patches Above to 0 in Flow Complex");
+  }
+}
+
+/// The deferred patches drawn below the cap are walked on the samples'
+/// triangulation, computed again (the input does not hold it).
+std::unique_ptr<flowrecon::Retriangulation> TriangulationFor(
+  const flowrecon::FlowComplex& fc, const flowrecon::Progress& progress)
+{
+  if (fc.DeferredPatches.empty())
+  {
+    return nullptr;
+  }
+  return flowrecon::Retriangulation::OfStoredComplex(
+    fc, progress, "lower Defer Patches Above in Flow Complex, or the cloud's size");
+}
+
+/// The t_p (chosen or given) and the Betti numbers of its reconstructions.
 struct PersistenceChoice
 {
   std::vector<double> Candidates{ { 1.1, 0 } };
   double Chosen = 1.1;
   std::vector<std::string> Warnings;
+  bool HasBars = false; ///< Bars hold every t_r below BarsBelow
+  std::vector<flowrecon::Bar> Bars;
+  double BarsBelow = HUGE_VAL;
 };
 
+/// The automatic t_p: the candidate whose reconstructions up to `cap` have
+/// the most stable topology, and what the choice warns about.
 PersistenceChoice ChoosePersistenceThreshold(
   const flowrecon::FlowComplex& fc, double cap, const flowrecon::Progress& progress)
 {
   PersistenceChoice c;
-  // The deferred patches drawn below the cap are walked on the samples'
-  // triangulation, computed again (the input does not hold it).
-  std::unique_ptr<flowrecon::Retriangulation> re;
-  if (!fc.DeferredPatches.empty())
-  {
-    re = flowrecon::Retriangulation::OfStoredComplex(fc, progress.Range(0, 0.3),
-      "lower Defer Patches Above in Flow Complex, or the cloud's size");
-  }
+  const std::unique_ptr<flowrecon::Retriangulation> re =
+    TriangulationFor(fc, progress.Range(0, 0.3));
+  std::vector<flowrecon::StoredTopology> topologies;
   std::vector<std::vector<flowrecon::TopologyStep>> profiles;
   const double share = 0.7 / static_cast<double>(c.Candidates.size());
   for (std::size_t k = 0; k < c.Candidates.size(); ++k)
   {
     const double from = 0.3 + share * static_cast<double>(k);
-    flowrecon::StoredTopology t;
-    try
-    {
-      t = flowrecon::TopologyOfStoredComplex(
-        fc, c.Candidates[k], cap, re.get(), progress.Range(from, from + share));
-    }
-    catch (const flowrecon::Degenerate&)
-    {
-      throw flowrecon::InputError("a deferred patch met a tie the flow complex did not see: "
-                                  "set Defer Patches Above to 0 in Flow Complex");
-    }
+    topologies.push_back(
+      TopologyAt(fc, c.Candidates[k], cap, re.get(), progress.Range(from, from + share)));
+    const flowrecon::StoredTopology& t = topologies.back();
     if (!t.Error.empty())
     {
       std::ostringstream line;
       line << "t_p " << c.Candidates[k] << ": no Betti numbers: " << t.Error;
       c.Warnings.push_back(line.str());
     }
-    profiles.push_back(std::move(t.Profile));
+    profiles.push_back(t.Profile);
   }
   const flowrecon::ThresholdChoice choice = flowrecon::ChooseThresholds(profiles, cap);
   c.Chosen = c.Candidates[choice.Candidate];
+  flowrecon::StoredTopology& chosen = topologies[choice.Candidate];
+  c.HasBars = chosen.Error.empty();
+  c.Bars = std::move(chosen.Bars);
+  c.BarsBelow = fc.DeferredPatches.empty() ? HUGE_VAL : cap;
   for (const std::string& line :
     flowrecon::PersistenceChoiceWarnings(choice, c.Candidates, /*trChosen=*/true))
   {
@@ -162,7 +188,9 @@ int vtkFlowComplexSimplification::RequestData(
 
   const bool deferred = !fc.DeferredPatches.empty();
   const bool automatic = this->AutomaticPersistenceThreshold;
-  if (automatic && deferred && !flowrecon::ReadSamples(input, fc, error))
+  // The topology of a given t_p needs one more queue (the choice has it).
+  const bool topology = automatic || this->ComputeTopology;
+  if (topology && deferred && !flowrecon::ReadSamples(input, fc, error))
   {
     vtkErrorMacro(<< error);
     return 0;
@@ -193,7 +221,24 @@ int vtkFlowComplexSimplification::RequestData(
         this->SetProgressText("choosing t_p");
         choice = ChoosePersistenceThreshold(fc, this->MaximumThreshold, progress.Range(0, 0.7));
       }
-      const flowrecon::Progress rest = progress.Range(automatic ? 0.7 : 0, 1);
+      else if (topology)
+      {
+        // Exact below the deferral ratio: a larger T_max downstream falls back
+        // to the Betti numbers of the drawn cells.
+        this->SetProgressText("Betti numbers");
+        const double cap = deferred ? std::min(this->MaximumThreshold, fc.DeferralRatio) : HUGE_VAL;
+        const auto re = TriangulationFor(fc, progress.Range(0, 0.3));
+        flowrecon::StoredTopology t =
+          TopologyAt(fc, choice.Chosen, cap, re.get(), progress.Range(0.3, 0.7));
+        choice.HasBars = t.Error.empty();
+        choice.Bars = std::move(t.Bars);
+        choice.BarsBelow = cap;
+        if (!t.Error.empty())
+        {
+          vtkWarningMacro(<< "no Betti numbers from the Hasse diagram: " << t.Error);
+        }
+      }
+      const flowrecon::Progress rest = progress.Range(topology ? 0.7 : 0, 1);
       // With deferred patches, what a replay on them needs is recorded too.
       const flowrecon::SimplificationResult s = flowrecon::Simplify(fc.Nodes,
         std::vector<flowrecon::Arc>(fc.Arcs), choice.Chosen, rest.Range(0, 0.6), deferred);
@@ -204,6 +249,10 @@ int vtkFlowComplexSimplification::RequestData(
       if (automatic)
       {
         AddChoice(choice, output);
+      }
+      if (choice.HasBars)
+      {
+        flowrecon::ReconstructionBarsToVTK(choice.Bars, choice.BarsBelow, output->GetFieldData());
       }
       flowrecon::SetDefaultScalars(output);
       this->SetProgressText(nullptr);
@@ -218,4 +267,5 @@ void vtkFlowComplexSimplification::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PersistenceThreshold: " << this->PersistenceThreshold << "\n";
   os << indent << "AutomaticPersistenceThreshold: " << (this->AutomaticPersistenceThreshold ? "on" : "off") << "\n";
   os << indent << "MaximumThreshold: " << this->MaximumThreshold << "\n";
+  os << indent << "ComputeTopology: " << (this->ComputeTopology ? "on" : "off") << "\n";
 }

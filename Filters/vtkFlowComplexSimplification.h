@@ -43,6 +43,14 @@
  * `PersistenceCandidates` and `ThresholdWarnings` (one line when another
  * candidate gives other Betti numbers), which Flow Reconstruction carries on.
  *
+ * The output's field data also holds `ReconstructionBars` and
+ * `ReconstructionBarsBelow` (TopologyConversion.h): the Betti numbers of the
+ * reconstructions of every t_r, read off the Hasse diagram of the chosen
+ * t_p's run (ComputeTopology). Flow Reconstruction shows them as they are,
+ * which spares it the persistent homology of its drawn cells: what gives
+ * Betti numbers at 10^6 points and lets its compact output skip the exact
+ * geometry.
+ *
  * An input that is already simplified is rejected: simplify the flow complex
  * itself with the larger threshold instead.
  */
@@ -93,6 +101,21 @@ public:
   vtkGetMacro(MaximumThreshold, double);
   ///@}
 
+  ///@{
+  /**
+   * Whether to hand Flow Reconstruction the Betti numbers of every t_r of the
+   * chosen t_p, read off the Hasse diagram (field data ReconstructionBars).
+   * An automatic t_p has them from its choice; a given one costs one
+   * reconstruction queue without geometry (and, for a complex with deferred
+   * patches, the samples' triangulation). Off, with a given t_p, Flow
+   * Reconstruction computes them from its drawn cells, up to its
+   * MaximumTopologyCells. Default on.
+   */
+  vtkSetMacro(ComputeTopology, bool);
+  vtkGetMacro(ComputeTopology, bool);
+  vtkBooleanMacro(ComputeTopology, bool);
+  ///@}
+
   /// Name of the block this filter adds.
   static const char* PersistencePairsBlockName() { return "PersistencePairs"; }
 
@@ -105,6 +128,7 @@ protected:
 
   double PersistenceThreshold = 1.1;
   bool AutomaticPersistenceThreshold = true;
+  bool ComputeTopology = true;
   double MaximumThreshold = 5;
 
 private:

@@ -18,6 +18,7 @@
 #include "Retriangulation.h"
 #include "Reconstruction.h"
 #include "Simplification.h"
+#include "StoredComplexTopology.h"
 #include "StableManifoldGeometry.h"
 
 #include "vtkCellArray.h"
@@ -121,6 +122,25 @@ struct vtkFlowReconstruction::Cache
   std::vector<flowrecon::Bar> Bars;
   std::vector<Id> CellNodes; ///< node of each cell the bars refer to
   std::string TopologyError;
+  /// The bars read off the Hasse diagram (node ids), exact for t_r up to
+  /// HasseBelow (0: none): handed on by the simplification, or computed with
+  /// the queue on an unsimplified input. They need no drawn cell.
+  std::vector<flowrecon::Bar> HasseBars;
+  double HasseBelow = 0;
+
+  bool HasHasse(double tmax) const { return tmax <= this->HasseBelow; }
+  const std::vector<flowrecon::Bar>& BarsBelow(double tmax) const
+  {
+    return this->HasHasse(tmax) ? this->HasseBars : this->Bars;
+  }
+  std::string ErrorBelow(double tmax) const
+  {
+    return this->HasHasse(tmax) ? std::string() : this->TopologyError;
+  }
+  std::vector<Id> NodesOfCells(double tmax) const
+  {
+    return this->HasHasse(tmax) ? std::vector<Id>() : this->CellNodes; // empty: node ids
+  }
   /// With deferred patches: the triangulation their walks used, kept for the
   /// first drawing (then freed).
   std::unique_ptr<flowrecon::Retriangulation> Re;
@@ -213,13 +233,17 @@ int vtkFlowReconstruction::RequestData(
     flowrecon::EmptyOutputs(outputVector);
     return 0;
   }
-  if (this->Cached->GeometryThreshold != tmax && !this->DrawGeometry(tmax))
+  // The exact cells are drawn for the exact geometry, and for Betti numbers
+  // that the Hasse diagram does not give.
+  const bool cellTopology = this->ComputeTopology && !this->Cached->HasHasse(tmax);
+  if ((this->Geometry == GEOMETRY_EXACT || cellTopology) &&
+    this->Cached->GeometryThreshold != tmax && !this->DrawGeometry(tmax))
   {
     flowrecon::EmptyOutputs(outputVector);
     return this->GetAbortExecute() ? 1 : 0;
   }
   // Once per drawing and cell limit, when asked for (also when turned on later).
-  if (this->ComputeTopology &&
+  if (cellTopology &&
     !(this->Cached->HasTopology && this->Cached->TopologyLimit == this->MaximumTopologyCells))
   {
     this->ComputeBettiNumbers(tmax);
@@ -308,11 +332,61 @@ bool vtkFlowReconstruction::RunQueue(vtkMultiBlockDataSet* input, bool& aborted)
       finished = true;
     },
     [&]() { aborted = true; });
-  if (finished)
+  if (!finished)
   {
-    this->Cached = std::move(cache);
+    return false;
   }
-  return finished;
+  cache->Profile = vtkSmartPointer<vtkTable>::New();
+  flowrecon::ReconstructionToVTK(cache->FC, cache->Carrier, cache->Run, HUGE_VAL,
+    cache->TriangleGroups, cache->TetraGroups, nullptr, cache->Profile, nullptr);
+  if (cache->Simplified)
+  {
+    // The simplification's bars are those of this very run (same diagram, same queue).
+    if (!flowrecon::ReconstructionBarsFromVTK(input->GetFieldData(),
+          static_cast<Id>(cache->FC.Nodes.size()), cache->HasseBars, cache->HasseBelow, error))
+    {
+      cache->HasseBelow = 0;
+      if (!error.empty())
+      {
+        vtkWarningMacro(<< error << ": the Betti numbers come from the drawn cells");
+      }
+    }
+  }
+  else if (this->ComputeTopology)
+  {
+    this->HasseTopology(*cache, aborted);
+    if (aborted)
+    {
+      return false;
+    }
+  }
+  this->Cached = std::move(cache);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkFlowReconstruction::HasseTopology(Cache& cache, bool& aborted)
+{
+  this->SetProgressText("Betti numbers");
+  flowrecon::CallCore(
+    this, "Betti numbers",
+    [&]() {
+      try
+      {
+        cache.HasseBars = flowrecon::BarsOfStoredRun(
+          cache.FC, cache.Carrier, cache.Run, cache.Re.get(), flowrecon::AlgorithmProgress(this));
+        cache.HasseBelow = cache.FC.DeferredPatches.empty() ? HUGE_VAL : cache.FC.DeferralRatio;
+      }
+      catch (const flowrecon::InputError& e)
+      {
+        // Not a closed decomposition (a file cut short): the drawn cells still tell.
+        vtkWarningMacro(<< "no Betti numbers from the Hasse diagram (" << e.what()
+                        << "): computing them from the drawn cells");
+        cache.HasseBars.clear();
+        cache.HasseBelow = 0;
+      }
+    },
+    [&]() { aborted = true; });
 }
 
 //------------------------------------------------------------------------------
@@ -332,9 +406,10 @@ bool vtkFlowReconstruction::SelectThreshold(double tmax, Selection& selection)
                        "Compute Topology on, or set t_r yourself");
       return false;
     }
-    if (c.TopologyError.empty() && tmax > choice.Rule.Lowest)
+    if (c.ErrorBelow(tmax).empty() && tmax > choice.Rule.Lowest)
     {
-      choice = flowrecon::ChooseThresholds({ flowrecon::TopologyProfile(c.Bars, 1, tmax) }, tmax);
+      choice = flowrecon::ChooseThresholds(
+        { flowrecon::TopologyProfile(c.BarsBelow(tmax), 1, tmax) }, tmax);
       t = choice.ReconstructionThreshold;
       selection.Chosen = true;
       flowrecon::CheckFilled(choice,
@@ -344,7 +419,7 @@ bool vtkFlowReconstruction::SelectThreshold(double tmax, Selection& selection)
     else
     {
       vtkWarningMacro(<< "no automatic t_r ("
-                      << (c.TopologyError.empty() ? "Maximum Threshold is at most 1.5"
+                      << (c.ErrorBelow(tmax).empty() ? "Maximum Threshold is at most 1.5"
                                                   : "no Betti numbers")
                       << "): showing the Reconstruction Threshold " << t);
     }
@@ -389,7 +464,14 @@ void vtkFlowReconstruction::FillOutputs(vtkMultiBlockDataSet* input, double tmax
   profile->ShallowCopy(c.Profile);
   flowrecon::MarkProfile(profile, t);
   flowrecon::ProfileJumpsToVTK(fc, c.Run, static_cast<std::size_t>(this->NumberOfJumps), profile);
-  flowrecon::GridBelow(c.Full, t, flowrecon::EdgeMultiplicities(fc.Nodes, fc.Arcs, c.Run, t), grid);
+  if (this->Geometry == GEOMETRY_EXACT)
+  {
+    flowrecon::GridBelow(c.Full, t, flowrecon::EdgeMultiplicities(fc.Nodes, fc.Arcs, c.Run, t), grid);
+  }
+  else
+  {
+    grid->Initialize(); // the compact cells go in below, after the field data
+  }
   flowrecon::ReleaseFreedMemory(); // the previous output's arrays, replaced just now
   std::string why; // no Betti numbers
   if (!this->ComputeTopology)
@@ -398,9 +480,10 @@ void vtkFlowReconstruction::FillOutputs(vtkMultiBlockDataSet* input, double tmax
     undersampling->Initialize();
     why = " (Compute Topology is off)";
   }
-  else if (c.TopologyError.empty())
+  else if (c.ErrorBelow(tmax).empty())
   {
-    flowrecon::TopologyToVTK(c.Bars, t, tmax, grid, topology);
+    const std::vector<flowrecon::Bar>& bars = c.BarsBelow(tmax);
+    flowrecon::TopologyToVTK(bars, t, tmax, grid, topology);
     // Changes beyond T_max are not known: the window stops there. A short
     // stable window: its end is where the topology changes next.
     double window = std::min(this->UnderSamplingWindow, tmax / t);
@@ -409,15 +492,16 @@ void vtkFlowReconstruction::FillOutputs(vtkMultiBlockDataSet* input, double tmax
       window = std::max(window, choice->Window.To / t * (1 + 1e-9));
     }
     flowrecon::UnderSamplingToVTK(
-      flowrecon::TopologyChangesAbove(c.Bars, t, std::max(1.0, window)), c.CellNodes, fc, undersampling);
+      flowrecon::TopologyChangesAbove(bars, t, std::max(1.0, window)), c.NodesOfCells(tmax), fc,
+      undersampling);
     AddThresholds(PersistenceOf(input), t, choice, grid);
   }
   else
   {
     topology->Initialize();
     undersampling->Initialize();
-    vtkWarningMacro(<< "no Betti numbers: " << c.TopologyError);
-    why = ": " + c.TopologyError;
+    vtkWarningMacro(<< "no Betti numbers: " << c.ErrorBelow(tmax));
+    why = ": " + c.ErrorBelow(tmax);
   }
   flowrecon::TopologyTextToVTK(
     flowrecon::TopologyLine(grid, topology, undersampling, t, tmax, why), grid, text);
@@ -493,9 +577,8 @@ bool vtkFlowReconstruction::DrawGeometry(double tmax)
   cache.Full = vtkSmartPointer<vtkUnstructuredGrid>::New();
   try
   {
-    cache.Profile = vtkSmartPointer<vtkTable>::New();
     flowrecon::ReconstructionToVTK(fc, cache.Carrier, cache.Run, tmax, cache.TriangleGroups,
-      cache.TetraGroups, cache.Full, cache.Profile, nullptr);
+      cache.TetraGroups, cache.Full, nullptr, nullptr);
   }
   catch (const flowrecon::InputError& e)
   {
@@ -526,8 +609,9 @@ bool vtkFlowReconstruction::PrepareCompact(double tmax)
   flowrecon::CallCore(
     this, "compact geometry",
     [&]() {
-      c.Compact = std::make_unique<flowrecon::CompactFamily>(c.FC, c.Carrier, c.Run, tmax, nullptr,
-        progress, "lower MaximumThreshold, or choose the exact Geometry");
+      // The queue's triangulation when the drawing did not free it.
+      c.Compact = std::make_unique<flowrecon::CompactFamily>(c.FC, c.Carrier, c.Run, tmax,
+        std::move(c.Re), progress, "lower MaximumThreshold, or choose the exact Geometry");
       if (!c.CompactPoints)
       {
         c.CompactPoints = flowrecon::MakePoints(std::vector<flowrecon::Point3>(

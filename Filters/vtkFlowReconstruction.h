@@ -44,9 +44,14 @@
  * `Step`, `NodeId`, `Sponsor`.
  *
  * Betti numbers (over Z/2) of the simplicial complex the output cells span
- * (cells glued where they share points, with all their faces), from one
- * persistent-homology computation over the drawn family filtered by
- * `Threshold` (flowrecon::CellBarcode): port 0 has field data `BettiNumbers`
+ * (cells glued where they share points, with all their faces), for every t_r
+ * at once, read off the Hasse diagram without geometry (HasseTopology.h): the
+ * input's `ReconstructionBars` (handed on by vtkFlowComplexSimplification),
+ * or computed with the queue when the input is not simplified. Where neither
+ * holds (a T_max above the bars' ReconstructionBarsBelow, a simplified input
+ * saved without them, Compute Topology turned on after the queue ran), from
+ * one persistent-homology computation over the drawn family filtered by
+ * `Threshold` (flowrecon::CellBarcode). Port 0 has field data `BettiNumbers`
  * (b0, b1, b2 at the current t_r), and output port 3 (vtkTable) is the
  * topology profile: columns `Threshold`, `b0`, `b1`, `b2`, one row per change,
  * each holding for t_r in (Threshold, next Threshold] up to MaximumThreshold;
@@ -161,8 +166,9 @@ public:
 
   ///@{
   /**
-   * The most cells (of the family below MaximumThreshold) whose Betti numbers
-   * are computed; above it they are skipped with a warning. -1 for no limit.
+   * When the Betti numbers come from the drawn cells (not from the Hasse
+   * diagram), the most cells of the family below MaximumThreshold they are
+   * computed for; above it they are skipped with a warning. -1 for no limit.
    * Default 4e6 (about 20 s).
    */
   vtkSetClampMacro(MaximumTopologyCells, vtkIdType, -1, VTK_ID_MAX);
@@ -191,7 +197,8 @@ public:
    * about 2 triangles a sample on a surface instead of about 9 cells, with cell
    * data NodeId, Index, Threshold and Claims only; the walks they come from are
    * made once per input and MaximumThreshold, so that a new t_r only selects.
-   * The Betti numbers, profiles and warnings are the same in both.
+   * The Betti numbers, profiles and warnings are the same in both; with the
+   * Betti numbers from the Hasse diagram the exact cells are never drawn.
    */
   vtkSetClampMacro(Geometry, int, GEOMETRY_EXACT, GEOMETRY_COMPACT);
   vtkGetMacro(Geometry, int);
@@ -261,6 +268,9 @@ private:
   /// Runs the priority queue (t_r = infinity) on a new input into the cache
   /// (false: failed, an error reported, or aborted, `aborted` set).
   bool RunQueue(vtkMultiBlockDataSet* input, bool& aborted);
+  /// The bars of the run in `cache` read off its unsimplified Hasse diagram
+  /// (`aborted` set on request).
+  void HasseTopology(Cache& cache, bool& aborted);
   /// Draws the cells of the nodes below `tmax` into the cache (false: failed or aborted).
   bool DrawGeometry(double tmax);
   /// The Betti numbers of the drawn family into the cache (an error there is

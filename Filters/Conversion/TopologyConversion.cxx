@@ -17,6 +17,8 @@
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
+#include <cmath>
+#include <string>
 #include <utility>
 #include <initializer_list>
 #include <limits>
@@ -246,6 +248,75 @@ void ThresholdsToVTK(double tp, double tr, bool tpChosen, bool trChosen,
     w->InsertNextValue(window->To);
     field->AddArray(w);
   }
+}
+
+void ReconstructionBarsToVTK(const std::vector<Bar>& bars, double below, vtkFieldData* field)
+{
+  auto a = NamedArray<vtkDoubleArray>(flowrecon::names::ReconstructionBars);
+  const char* parts[] = { "Dimension", "Birth", "Death", "BirthNode", "DeathNode" };
+  a->SetNumberOfComponents(5);
+  for (int k = 0; k < 5; ++k)
+  {
+    a->SetComponentName(k, parts[k]);
+  }
+  a->SetNumberOfTuples(static_cast<vtkIdType>(bars.size()));
+  for (std::size_t i = 0; i < bars.size(); ++i)
+  {
+    const Bar& b = bars[i];
+    // Node ids below 2^53 are exact in a double.
+    const double row[5] = { static_cast<double>(b.Dimension), b.Birth,
+      std::min(b.Death, Unbounded), static_cast<double>(b.BirthCell),
+      static_cast<double>(b.DeathCell) };
+    a->SetTypedTuple(static_cast<vtkIdType>(i), row);
+  }
+  field->AddArray(a);
+  auto cap = NamedArray<vtkDoubleArray>(flowrecon::names::ReconstructionBarsBelow);
+  cap->InsertNextValue(std::min(below, Unbounded));
+  field->AddArray(cap);
+}
+
+bool ReconstructionBarsFromVTK(vtkFieldData* field, Id nodeCount, std::vector<Bar>& bars,
+  double& below, std::string& error)
+{
+  bars.clear();
+  error.clear();
+  vtkDataArray* a = field ? field->GetArray(flowrecon::names::ReconstructionBars) : nullptr;
+  vtkDataArray* cap = field ? field->GetArray(flowrecon::names::ReconstructionBarsBelow) : nullptr;
+  if (!a || !cap)
+  {
+    return false;
+  }
+  if (a->GetNumberOfComponents() != 5 || cap->GetNumberOfTuples() != 1)
+  {
+    error = "field data ReconstructionBars: expected 5 components and one ReconstructionBarsBelow";
+    return false;
+  }
+  below = cap->GetComponent(0, 0);
+  below = below >= Unbounded ? HUGE_VAL : below;
+  bars.resize(static_cast<std::size_t>(a->GetNumberOfTuples()));
+  const auto isNode = [nodeCount](double v, bool orNone) {
+    return (orNone && v == -1) || (v >= 0 && v < static_cast<double>(nodeCount) && v == std::floor(v));
+  };
+  for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
+  {
+    double row[5];
+    a->GetTuple(i, row);
+    Bar& b = bars[static_cast<std::size_t>(i)];
+    b.Dimension = static_cast<int>(row[0]);
+    b.Birth = row[1];
+    b.Death = row[2] >= Unbounded ? HUGE_VAL : row[2];
+    if (!(row[0] == 0 || row[0] == 1 || row[0] == 2) || !(b.Birth < b.Death) ||
+      !isNode(row[3], false) || !isNode(row[4], true))
+    {
+      error = "field data ReconstructionBars: tuple " + std::to_string(i) +
+        " is not a bar of this complex (dimension 0-2, birth < death, node ids)";
+      bars.clear();
+      return false;
+    }
+    b.BirthCell = static_cast<Id>(row[3]);
+    b.DeathCell = static_cast<Id>(row[4]);
+  }
+  return true;
 }
 
 } // namespace flowrecon

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+class vtkFieldData;
 class vtkPolyData;
 class vtkTable;
 class vtkUnstructuredGrid;
@@ -64,6 +65,17 @@ void ThresholdWarningsToVTK(const std::vector<std::string>& lines, vtkUnstructur
 /// into short lines (what a render view draws in a corner): after the Betti
 /// numbers, and at each "; ".
 void TopologyTextToVTK(const std::string& line, vtkUnstructuredGrid* grid, vtkTable* text);
+
+/// The bars of a complex's reconstructions (BarsOfStoredRun: node ids), exact
+/// for t_r <= `below`, as the field-data arrays ReconstructionBars and
+/// ReconstructionBarsBelow of `field` (what Flow Complex Simplification hands
+/// to Flow Reconstruction: the Betti numbers of every t_r without a cell).
+void ReconstructionBarsToVTK(const std::vector<Bar>& bars, double below, vtkFieldData* field);
+
+/// Reads them back: false when `field` has none, or when they do not fit a
+/// complex of `nodeCount` nodes (then `error` says why).
+bool ReconstructionBarsFromVTK(vtkFieldData* field, Id nodeCount, std::vector<Bar>& bars,
+  double& below, std::string& error);
 
 } // namespace flowrecon
 

@@ -56,35 +56,54 @@ StoredTopology TopologyOfStoredComplex(const FlowComplex& fc, double tp, double 
     run = std::move(late.Run);
     carriers = std::move(late.Carriers);
   }
-  // The raw diagram: the stored arcs, and those of the deferred patches drawn
-  // below the cap (theirs, or a maximum's over them), walked unsimplified.
-  std::vector<Arc> raw = fc.Arcs;
-  if (deferred)
-  {
-    const std::vector<double> before = PresenceTimes(fc.Nodes, raw, carriers, run);
-    std::vector<Id> drawn;
-    for (const Id y : fc.DeferredPatches)
-    {
-      if (before[y] < HUGE_VAL)
-      {
-        drawn.push_back(y);
-      }
-    }
-    DeferredPatches walker(fc, nullptr, *re);
-    const std::vector<Arc> more = walker.Walk(drawn, progress.Range(0.7, 0.9));
-    raw.insert(raw.end(), more.begin(), more.end());
-  }
-  progress(0.9, "Betti numbers");
   try
   {
-    t.Profile = TopologyProfile(
-      HasseBarcode(fc.Nodes, raw, PresenceTimes(fc.Nodes, raw, carriers, run)), 1, cap);
+    t.Bars = BarsOfStoredRun(fc, carriers, run, re, progress.Range(0.7, 1));
+    t.Profile = TopologyProfile(t.Bars, 1, cap);
   }
   catch (const InputError& e)
   {
     t.Error = e.what();
   }
   return t;
+}
+
+std::vector<Bar> BarsOfStoredRun(const FlowComplex& fc, const std::vector<Id>& carriers,
+  const ReconstructionResult& run, const Retriangulation* re, const Progress& progress)
+{
+  // The raw diagram: the stored arcs, and those of the deferred patches drawn
+  // (theirs, or a maximum's over them) that no run walked yet, unsimplified.
+  std::vector<Arc> raw = fc.Arcs;
+  if (!fc.DeferredPatches.empty())
+  {
+    if (!re)
+    {
+      throw InputError("the deferred patches need the triangulation of the samples");
+    }
+    // A walked patch has its 1-2 arcs (a 2-cell is bounded by edges).
+    std::vector<char> walked(fc.Nodes.size(), 0);
+    for (const Arc& a : raw)
+    {
+      if (fc.Nodes[a.Upper].Index == 2)
+      {
+        walked[a.Upper] = 1;
+      }
+    }
+    const std::vector<double> before = PresenceTimes(fc.Nodes, raw, carriers, run);
+    std::vector<Id> drawn;
+    for (const Id y : fc.DeferredPatches)
+    {
+      if (before[y] < HUGE_VAL && !walked[y])
+      {
+        drawn.push_back(y);
+      }
+    }
+    DeferredPatches walker(fc, nullptr, *re);
+    const std::vector<Arc> more = walker.Walk(drawn, progress.Range(0, 0.6));
+    raw.insert(raw.end(), more.begin(), more.end());
+  }
+  progress(0.6, "Betti numbers");
+  return HasseBarcode(fc.Nodes, raw, PresenceTimes(fc.Nodes, raw, carriers, run));
 }
 
 } // namespace flowrecon

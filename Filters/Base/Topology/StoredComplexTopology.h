@@ -6,6 +6,7 @@
 
 #include "CellHomology.h"
 #include "FlowComplex.h"
+#include "Reconstruction.h"
 #include "Progress.h"
 
 #include <string>
@@ -20,9 +21,22 @@ class Retriangulation;
 struct StoredTopology
 {
   double PersistenceThreshold = 0;
+  std::vector<Bar> Bars;             ///< HasseBarcode (node ids), exact below the cap
   std::vector<TopologyStep> Profile; ///< TopologyProfile from 1 up to the cap
   std::string Error;                 ///< why there is no profile ("" when there is)
 };
+
+/// The bars of the raw cells that `run` draws (PresenceTimes, HasseBarcode),
+/// exact for t_r below `cap`. `fc`: as built (unsimplified arcs), except that
+/// its Arcs may already hold the 1-2 arcs of some deferred patches (a run on
+/// it walked them, ReconstructDeferred); `carriers`: CellCarriers of `run`;
+/// `retriangulation`: of fc's samples, needed when patches were deferred
+/// (those drawn below the cap and not walked yet are walked). Throws
+/// InputError when the diagram is not a closed decomposition, Aborted on
+/// request.
+std::vector<Bar> BarsOfStoredRun(const FlowComplex& fc, const std::vector<Id>& carriers,
+  const ReconstructionResult& run, const Retriangulation* retriangulation,
+  const Progress& progress);
 
 /// `fc`: a flow complex as built (unsimplified arcs, none into
 /// fc.DeferredPatches), simplified at `tp` (below 1: not simplified) and

@@ -2,7 +2,9 @@
 // next update although the drawing is cached: turned on after a run without
 // them, or the cell limit changed, the Betti numbers (port 0's field data) and
 // the topology profile (port 3) are a fresh filter's, and the queue does not
-// run again.
+// run again. The fresh filter reads them off the Hasse diagram with its queue;
+// turned on later, they come from the drawn cells (and their cell limit): the
+// two ways agree.
 #include "Check.h"
 
 #include "vtkFlowComplex.h"

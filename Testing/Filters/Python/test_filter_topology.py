@@ -1,0 +1,151 @@
+"""Flow Reconstruction's Betti numbers read off the Hasse diagram, against GUDHI.
+
+The filter takes the Betti numbers of every t_r from the Hasse diagram: handed
+on by Flow Complex Simplification (field data ReconstructionBars, for an
+automatic or a given t_p) or computed with its queue on an unsimplified input;
+with them its compact output never draws the exact cells. The oracle is GUDHI:
+a SimplexTree of the exact output's cells (Geometry exact, every step up to
+T_max) filtered by their Threshold, whose persistence over Z/2 gives the Betti
+numbers at any t. Checked, for each pipeline and cloud: every row of the
+topology profile (port 3) at the middle and the end of its interval, the
+BettiNumbers field data at t_r, the same profile and Betti numbers with the
+compact geometry, the compact cells' own Betti numbers (GUDHI), and the same
+profile when the Betti numbers come from the drawn cells instead (Simplification
+without Compute Topology). Clouds: surfaces, a solid, a curve, a non-manifold
+union, a sphere with a segment, an exact grid, a noisy sphere; deferred patches
+(Defer Patches Above near T_max) on two of them.
+"""
+import gudhi
+import numpy as np
+from vtkmodules.util.numpy_support import vtk_to_numpy
+
+from flowrecon import vtkFlowComplexSimplification, vtkFlowReconstruction
+from flowrecon_testing import clouds as cl
+from flowrecon_testing.checks import check, finish
+from flowrecon_testing.flowcomplex_io import import_filter, make_polydata
+from flowrecon_testing.oracles import gudhi_betti
+
+TMAX = 4.0
+TR = 2.0
+
+
+def clouds():
+    rng = np.random.default_rng(11)
+    sphere = cl.sphere(500, rng)
+    t = np.linspace(0, 2 * np.pi, 150, endpoint=False)
+    g = np.arange(5.0)
+    return {
+        "sphere": sphere,
+        "torus": cl.chart_torus(800, rng, 0.4),
+        "ball": rng.uniform(-1, 1, (600, 3)),
+        "trefoil": np.c_[np.sin(t) + 2 * np.sin(2 * t), np.cos(t) - 2 * np.cos(2 * t),
+                         -np.sin(3 * t)],
+        "two hemispheres": cl.two_hemispheres(),
+        "sphere and segment": cl.with_segment(sphere[:350], np.linspace(-1.7, 1.7, 40)),
+        "grid": cl.grid(g, g, g),
+        "noisy sphere": cl.noisy(sphere, rng, 0.04),
+    }
+
+
+def profile(reconstruction):
+    table = reconstruction.GetOutputDataObject(vtkFlowReconstruction.TOPOLOGY_PROFILE)
+    cols = [vtk_to_numpy(table.GetColumnByName(n)) for n in ("Threshold", "b0", "b1", "b2")]
+    return [(float(r[0]), tuple(int(v) for v in r[1:])) for r in zip(*cols)]
+
+
+def betti_field(reconstruction):
+    a = reconstruction.GetOutput().GetFieldData().GetArray("BettiNumbers")
+    return tuple(int(a.GetValue(k)) for k in range(3)) if a else None
+
+
+def intervals_of(grid):
+    off = vtk_to_numpy(grid.GetCells().GetOffsetsArray())
+    conn = vtk_to_numpy(grid.GetCells().GetConnectivityArray())
+    thr = vtk_to_numpy(grid.GetCellData().GetArray("Threshold"))
+    st = gudhi.SimplexTree()
+    for c in range(len(off) - 1):
+        st.insert(conn[off[c]:off[c + 1]].tolist(), float(thr[c]))
+    st.compute_persistence(homology_coeff_field=2, persistence_dim_max=True)
+    return [st.persistence_intervals_in_dimension(d) for d in range(3)]
+
+
+def betti_at(intervals, t):
+    return tuple(int(sum(1 for b, d in intervals[k] if b < t <= d)) for k in range(3))
+
+
+def pipeline(points, tp, defer, hasse=True):
+    """(reconstruction, simplification or None) at t_p `tp` ("auto", a number,
+    or None for no simplification filter), T_max 4, t_r 2, every step drawn."""
+    fc = import_filter()()
+    fc.SetInputData(make_polydata(points))
+    fc.SetDeferPatchesAbove(defer)
+    upstream = fc
+    simplification = None
+    if tp is not None:
+        simplification = vtkFlowComplexSimplification()
+        simplification.SetInputConnection(fc.GetOutputPort())
+        simplification.SetMaximumThreshold(TMAX)
+        if tp == "auto":
+            simplification.AutomaticPersistenceThresholdOn()
+        else:
+            simplification.AutomaticPersistenceThresholdOff()
+            simplification.SetPersistenceThreshold(tp)
+            simplification.SetComputeTopology(hasse)
+        upstream = simplification
+    r = vtkFlowReconstruction()
+    r.SetInputConnection(upstream.GetOutputPort())
+    r.SetMaximumThreshold(TMAX)
+    r.AutomaticReconstructionThresholdOff()
+    r.SetReconstructionThreshold(TR)
+    r.SetMaximumTopologyCells(-1)
+    return r, simplification
+
+
+checked = 0
+for name, points in clouds().items():
+    cases = [("auto", 5.0), (1.1, 5.0), (None, 5.0)]
+    if name in ("torus", "noisy sphere"):
+        cases += [("auto", TMAX), (None, TMAX)]
+    for tp, defer in cases:
+        label = "%s, t_p %s, deferral %g" % (name, tp, defer)
+        r, simplification = pipeline(points, tp, defer)
+        if simplification is not None:
+            simplification.Update()
+            check(simplification.GetOutput().GetFieldData().GetArray("ReconstructionBars")
+                  is not None, label + ": the simplification hands on no bars")
+        r.SetGeometryToExact()
+        r.EveryStepOn()  # the whole family below T_max, for GUDHI
+        r.Update()
+        intervals = intervals_of(r.GetOutput())
+        r.EveryStepOff()
+        r.Update()
+        rows = profile(r)
+        check(len(rows) > 0, label + ": no topology profile")
+        ends = [t for t, _ in rows[1:]] + [TMAX]
+        for (start, betti), end in zip(rows, ends):
+            for t in [x for x in ((start + end) / 2, end) if start < x <= end]:
+                checked += 1
+                check(betti_at(intervals, t) == betti,
+                      "%s: profile row from %.6g says %s, GUDHI %s at %.9g"
+                      % (label, start, betti, betti_at(intervals, t), t))
+        exact = betti_field(r)
+        check(exact == betti_at(intervals, TR),
+              "%s: BettiNumbers %s, GUDHI %s at t_r 2" % (label, exact, betti_at(intervals, TR)))
+        r.SetGeometryToCompact()
+        r.Update()
+        check(profile(r) == rows, label + ": the compact geometry changes the profile")
+        check(betti_field(r) == exact, label + ": the compact geometry changes BettiNumbers")
+        check(gudhi_betti(r.GetOutput()) == exact,
+              "%s: the compact cells' Betti numbers %s, the reconstruction's %s"
+              % (label, gudhi_betti(r.GetOutput()), exact))
+        if tp == 1.1:
+            # The drawn cells' persistent homology, the filter's other way.
+            cells, _ = pipeline(points, tp, defer, hasse=False)
+            cells.SetGeometryToExact()
+            cells.Update()
+            check(profile(cells) == rows and betti_field(cells) == exact,
+                  label + ": the drawn cells give another topology")
+        print("%s: %d rows, Betti numbers %s at t_r 2" % (label, len(rows), exact))
+check(checked > 100, "only %d profile points checked" % checked)
+print("%d profile points equal GUDHI's" % checked)
+finish()
