@@ -167,6 +167,9 @@ Reconstruction FromComplex(const Arguments& args, vtkMultiBlockDataSet* complex,
       simplification->SetInputData(complex);
       simplification->SetPersistenceThreshold(tp);
       simplification->SetAutomaticPersistenceThreshold(false); // chosen below, as on a cloud
+      // The Betti numbers of the reconstructions below, from the Hasse diagram.
+      simplification->SetComputeTopology(settings.Topology);
+      simplification->SetMaximumThreshold(automatic ? settings.Cap : settings.DrawThreshold);
       RunFilter(simplification, input, options, "simplification");
       s = vtkMultiBlockDataSet::SafeDownCast(simplification->GetOutputDataObject(0));
     }
