@@ -242,8 +242,15 @@ int vtkFlowComplexSimplification::RequestData(
       // With deferred patches, what a replay on them needs is recorded too.
       const flowrecon::SimplificationResult s = flowrecon::Simplify(fc.Nodes,
         std::vector<flowrecon::Arc>(fc.Arcs), choice.Chosen, rest.Range(0, 0.6), deferred);
-      fc.Arcs = s.Arcs; // the HasseDiagram block shows the simplified diagram
-      flowrecon::ReplaceHasseDiagram(input, fc, output);
+      // The HasseDiagram block shows the simplified diagram; when nothing was
+      // cancelled (t_p 0) it is the input's, shared (a tenth of the output at 10^6).
+      const bool changed = !std::equal(s.Arcs.begin(), s.Arcs.end(), fc.Arcs.begin(),
+                             fc.Arcs.end(), [](const flowrecon::Arc& a, const flowrecon::Arc& b) {
+                               return a.Lower == b.Lower && a.Upper == b.Upper &&
+                                 a.Multiplicity == b.Multiplicity;
+                             });
+      fc.Arcs = s.Arcs;
+      flowrecon::ReplaceHasseDiagram(input, changed ? &fc : nullptr, output);
       flowrecon::AddSimplification(fc, s, choice.Chosen, output);
       flowrecon::AddSurvivingBlocks(output); // what the display shows
       if (automatic)

@@ -6,6 +6,7 @@
 #include "vtkCellData.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
+#include "vtkFieldData.h"
 #include "vtkIdList.h"
 #include "vtkInformation.h"
 #include "vtkMultiBlockDataSet.h"
@@ -15,6 +16,7 @@
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 
+#include <algorithm>
 #include <vector>
 
 namespace flowrecon
@@ -29,6 +31,15 @@ namespace
 vtkSmartPointer<vtkPolyData> Part(
   vtkPolyData* in, const std::vector<bool>& keepPoint, const std::vector<bool>& keepCell)
 {
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  if (std::find(keepPoint.begin(), keepPoint.end(), false) == keepPoint.end() &&
+    std::find(keepCell.begin(), keepCell.end(), false) == keepCell.end())
+  {
+    // Nothing cancelled (t_p 0): the same points, cells and arrays, shared.
+    out->ShallowCopy(in);
+    out->SetFieldData(vtkNew<vtkFieldData>());
+    return out;
+  }
   std::vector<vtkIdType> newId(keepPoint.size(), -1);
   vtkNew<vtkIdList> fromPoints, toPoints, fromCells, toCells, ids;
   for (vtkIdType p = 0; p < static_cast<vtkIdType>(keepPoint.size()); ++p)
@@ -40,7 +51,6 @@ vtkSmartPointer<vtkPolyData> Part(
       fromPoints->InsertNextId(p);
     }
   }
-  auto out = vtkSmartPointer<vtkPolyData>::New();
   vtkNew<vtkPoints> points;
   points->SetDataType(in->GetPoints()->GetDataType());
   points->SetNumberOfPoints(fromPoints->GetNumberOfIds());
