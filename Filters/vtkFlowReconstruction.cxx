@@ -276,7 +276,7 @@ bool vtkFlowReconstruction::RunQueue(vtkMultiBlockDataSet* input, bool& aborted)
   cache->InputTime = input->GetMTime();
   flowrecon::SimplificationResult s;
   std::string error;
-  if (!flowrecon::FromMultiBlock(input, cache->FC, error))
+  if (!flowrecon::FromMultiBlock(input, cache->FC, error, false, /*flowLines=*/false))
   {
     vtkErrorMacro(<< error);
     return false;

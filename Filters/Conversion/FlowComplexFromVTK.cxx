@@ -352,7 +352,7 @@ bool ReadFlowLines(vtkPolyData* um, FlowComplex& fc, std::string& error, bool st
 } // namespace
 
 bool FromMultiBlock(
-  vtkMultiBlockDataSet* input, FlowComplex& fc, std::string& error, bool diagramOnly)
+  vtkMultiBlockDataSet* input, FlowComplex& fc, std::string& error, bool diagramOnly, bool flowLines)
 {
   fc = FlowComplex();
   auto* cp = vtkPolyData::SafeDownCast(NamedBlock(input, flowrecon::names::CriticalPoints));
@@ -372,7 +372,7 @@ bool FromMultiBlock(
     return false;
   }
   auto* um = vtkPolyData::SafeDownCast(NamedBlock(input, flowrecon::names::UnstableManifolds));
-  if (um && !ReadFlowLines(um, fc, error, !diagramOnly))
+  if (um && !ReadFlowLines(um, fc, error, !diagramOnly && flowLines))
   {
     fc = FlowComplex();
     return false;

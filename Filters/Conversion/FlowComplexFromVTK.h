@@ -25,8 +25,11 @@ namespace flowrecon
 /// With `diagramOnly`, the manifold geometry and the flow lines are checked but
 /// not read (fc.Points, Triangles, Tetrahedra, FlowLines stay empty): what a
 /// stage that works on the Hasse diagram alone needs, without the geometry's copy.
+/// Without `flowLines`, the flow lines are checked but not read: no stage
+/// after the flow complex uses them (they are ~40 % of the copy of a surface
+/// sample's complex).
 bool FromMultiBlock(vtkMultiBlockDataSet* input, FlowComplex& fc, std::string& error,
-  bool diagramOnly = false);
+  bool diagramOnly = false, bool flowLines = true);
 
 /// The samples (the first fc.NumberOfInputPoints points of StableManifolds)
 /// into fc.Points, after a diagramOnly read: what recomputing the samples'
