@@ -110,6 +110,8 @@ struct vtkFlowReconstruction::Cache
   std::vector<Id> Carrier;
   /// Whether FC.Arcs are simplified (else they give the cones' boundaries).
   bool Simplified = false;
+  /// Whether FC holds the input's drawn cells (not read for the compact geometry).
+  bool GeometryRead = false;
   /// The T_max whose geometry FC holds (-1: none yet).
   double GeometryThreshold = -1;
   /// Triangles and tetrahedra of each node (compressed rows of cell positions).
@@ -237,7 +239,7 @@ int vtkFlowReconstruction::RequestData(
   // that the Hasse diagram does not give.
   const bool cellTopology = this->ComputeTopology && !this->Cached->HasHasse(tmax);
   if ((this->Geometry == GEOMETRY_EXACT || cellTopology) &&
-    this->Cached->GeometryThreshold != tmax && !this->DrawGeometry(tmax))
+    this->Cached->GeometryThreshold != tmax && !this->DrawGeometry(input, tmax))
   {
     flowrecon::EmptyOutputs(outputVector);
     return this->GetAbortExecute() ? 1 : 0;
@@ -276,7 +278,12 @@ bool vtkFlowReconstruction::RunQueue(vtkMultiBlockDataSet* input, bool& aborted)
   cache->InputTime = input->GetMTime();
   flowrecon::SimplificationResult s;
   std::string error;
-  if (!flowrecon::FromMultiBlock(input, cache->FC, error, false, /*flowLines=*/false))
+  // The compact geometry needs the samples, not the input's drawn cells: they
+  // are read when the exact ones are drawn (ReadManifoldGeometry).
+  cache->GeometryRead = this->Geometry == GEOMETRY_EXACT;
+  if (!flowrecon::FromMultiBlock(input, cache->FC, error, !cache->GeometryRead,
+        /*flowLines=*/false) ||
+    (!cache->GeometryRead && !flowrecon::ReadSamples(input, cache->FC, error)))
   {
     vtkErrorMacro(<< error);
     return false;
@@ -523,11 +530,18 @@ void vtkFlowReconstruction::FillOutputs(vtkMultiBlockDataSet* input, double tmax
 }
 
 //------------------------------------------------------------------------------
-bool vtkFlowReconstruction::DrawGeometry(double tmax)
+bool vtkFlowReconstruction::DrawGeometry(vtkMultiBlockDataSet* input, double tmax)
 {
   Cache& cache = *this->Cached;
   flowrecon::FlowComplex& fc = cache.FC;
   cache.GeometryThreshold = -1;
+  std::string error;
+  if (!cache.GeometryRead && !flowrecon::ReadManifoldGeometry(input, fc, error))
+  {
+    vtkErrorMacro(<< error);
+    return false;
+  }
+  cache.GeometryRead = true;
   // The nodes whose cells the output can show: carriers below T_max.
   const std::vector<Id> draw = flowrecon::NodesToDraw(fc.Nodes, cache.Carrier, cache.Run, tmax);
   // The input's own cells do when they cover every such node (a complex

@@ -271,8 +271,9 @@ private:
   /// The bars of the run in `cache` read off its unsimplified Hasse diagram
   /// (`aborted` set on request).
   void HasseTopology(Cache& cache, bool& aborted);
-  /// Draws the cells of the nodes below `tmax` into the cache (false: failed or aborted).
-  bool DrawGeometry(double tmax);
+  /// Draws the cells of the nodes below `tmax` into the cache (reading the
+  /// input's own first, when they were not read) (false: failed or aborted).
+  bool DrawGeometry(vtkMultiBlockDataSet* input, double tmax);
   /// The Betti numbers of the drawn family into the cache (an error there is
   /// kept as its TopologyError: the reconstruction is still shown).
   void ComputeBettiNumbers(double tmax);

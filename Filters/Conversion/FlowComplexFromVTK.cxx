@@ -386,6 +386,23 @@ bool FromMultiBlock(
   return true;
 }
 
+bool ReadManifoldGeometry(vtkMultiBlockDataSet* input, FlowComplex& fc, std::string& error)
+{
+  auto* cp = vtkPolyData::SafeDownCast(NamedBlock(input, flowrecon::names::CriticalPoints));
+  auto* sm = vtkUnstructuredGrid::SafeDownCast(NamedBlock(input, flowrecon::names::StableManifolds));
+  if (!cp || !sm)
+  {
+    error = "not a flow complex: the blocks CriticalPoints and StableManifolds are required";
+    return false;
+  }
+  fc.Triangles.clear();
+  fc.TriangleNode.clear();
+  fc.Tetrahedra.clear();
+  fc.TetrahedronNode.clear();
+  return ReadStableManifolds(sm, fc, error, true) &&
+    ReadNodePoints(cp, sm->GetNumberOfPoints(), fc, error, true);
+}
+
 bool ReadSamples(vtkMultiBlockDataSet* input, FlowComplex& fc, std::string& error)
 {
   auto* sm = vtkUnstructuredGrid::SafeDownCast(NamedBlock(input, flowrecon::names::StableManifolds));

@@ -36,6 +36,11 @@ bool FromMultiBlock(vtkMultiBlockDataSet* input, FlowComplex& fc, std::string& e
 /// triangulation needs (Retriangulation::OfStoredComplex).
 bool ReadSamples(vtkMultiBlockDataSet* input, FlowComplex& fc, std::string& error);
 
+/// The manifold geometry (fc.Points, Triangles, Tetrahedra and their nodes,
+/// NodePoint) after a diagramOnly read of the same input: what drawing the
+/// exact cells reads when the input holds them. The nodes and arcs stay.
+bool ReadManifoldGeometry(vtkMultiBlockDataSet* input, FlowComplex& fc, std::string& error);
+
 } // namespace flowrecon
 
 #endif
