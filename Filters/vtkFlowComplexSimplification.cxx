@@ -4,6 +4,7 @@
 #include "AutomaticThresholds.h"
 #include "FlowComplexConversion.h"
 #include "FlowReconNames.h"
+#include "MemoryGuard.h"
 #include "ReconstructionReport.h"
 #include "Retriangulation.h"
 #include "Simplification.h"
@@ -211,7 +212,7 @@ int vtkFlowComplexSimplification::RequestData(
     return 0;
   }
   const flowrecon::Progress progress = flowrecon::AlgorithmProgress(this);
-  return flowrecon::CallCore(
+  const int ok = flowrecon::CallCore(
     this, "simplification",
     [&]() {
       PersistenceChoice choice;
@@ -242,15 +243,8 @@ int vtkFlowComplexSimplification::RequestData(
       // With deferred patches, what a replay on them needs is recorded too.
       const flowrecon::SimplificationResult s = flowrecon::Simplify(fc.Nodes,
         std::vector<flowrecon::Arc>(fc.Arcs), choice.Chosen, rest.Range(0, 0.6), deferred);
-      // The HasseDiagram block shows the simplified diagram; when nothing was
-      // cancelled (t_p 0) it is the input's, shared (a tenth of the output at 10^6).
-      const bool changed = !std::equal(s.Arcs.begin(), s.Arcs.end(), fc.Arcs.begin(),
-                             fc.Arcs.end(), [](const flowrecon::Arc& a, const flowrecon::Arc& b) {
-                               return a.Lower == b.Lower && a.Upper == b.Upper &&
-                                 a.Multiplicity == b.Multiplicity;
-                             });
-      fc.Arcs = s.Arcs;
-      flowrecon::ReplaceHasseDiagram(input, changed ? &fc : nullptr, output);
+      fc.Arcs = s.Arcs; // the HasseDiagram block shows the simplified diagram
+      flowrecon::ReplaceHasseDiagram(input, fc, output);
       flowrecon::AddSimplification(fc, s, choice.Chosen, output);
       flowrecon::AddSurvivingBlocks(output); // what the display shows
       if (automatic)
@@ -263,8 +257,13 @@ int vtkFlowComplexSimplification::RequestData(
       }
       flowrecon::SetDefaultScalars(output);
       this->SetProgressText(nullptr);
+      fc = flowrecon::FlowComplex();
     },
     [&]() { output->Initialize(); });
+  // The candidates' runs, their triangulation and the diagram's copy, freed
+  // by now: handed back before Flow Reconstruction allocates its own.
+  flowrecon::ReleaseFreedMemory();
+  return ok;
 }
 
 //------------------------------------------------------------------------------

@@ -414,7 +414,7 @@ void ToMultiBlock(const FlowComplex& fc, vtkMultiBlockDataSet* output, const Pro
 }
 
 void ReplaceHasseDiagram(
-  vtkMultiBlockDataSet* input, const FlowComplex* fc, vtkMultiBlockDataSet* output)
+  vtkMultiBlockDataSet* input, const FlowComplex& fc, vtkMultiBlockDataSet* output)
 {
   output->Initialize();
   output->GetFieldData()->ShallowCopy(input->GetFieldData());
@@ -425,9 +425,9 @@ void ReplaceHasseDiagram(
     const char* name = meta ? meta->Get(vtkCompositeDataSet::NAME()) : nullptr;
     vtkDataObject* block = input->GetBlock(b);
     vtkSmartPointer<vtkDataObject> copy;
-    if (fc && name && std::strcmp(name, flowrecon::names::HasseDiagram) == 0)
+    if (name && std::strcmp(name, flowrecon::names::HasseDiagram) == 0)
     {
-      copy = HasseDiagramBlock(*fc);
+      copy = HasseDiagramBlock(fc);
     }
     else if (block)
     {

@@ -31,9 +31,8 @@ void AddReport(const FlowComplex& fc, vtkFieldData* fd);
 /// `output` as `input` with the HasseDiagram block made from fc.Arcs: every
 /// other block (and the field data) is a shallow copy, so a stage that changes
 /// only the arcs costs what the arcs cost, not what the drawn geometry costs.
-/// A null `fc` (the arcs did not change) shares the input's HasseDiagram too.
 void ReplaceHasseDiagram(
-  vtkMultiBlockDataSet* input, const FlowComplex* fc, vtkMultiBlockDataSet* output);
+  vtkMultiBlockDataSet* input, const FlowComplex& fc, vtkMultiBlockDataSet* output);
 
 /// Makes Index the active scalars of CriticalPoints (points), StableManifolds and
 /// GabrielEdges (cells), likewise of their Surviving parts, and PersistencePairs have none: what a VTK mapper, or ParaView once a
