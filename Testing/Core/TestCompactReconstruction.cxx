@@ -302,12 +302,15 @@ bool SameComplex(const CompactComplex& a, const CompactComplex& b)
 
 /// The pieces of the reconstruction at T (what a filter keeps) give, for every
 /// t_r <= T, the complex computed from scratch for the nodes at t_r, and
-/// nothing but the nodes asked for.
+/// nothing but the nodes asked for, read from the triangulation or from the
+/// table of its cells (CellsOf).
 void SelectedFromPieces(const std::string& name, const std::vector<Point3>& p, double tmax)
 {
   const Built b = Build(p);
   const CompactPieces pieces =
     PrepareCompact(*b.Re, b.Complex.Nodes, ReconstructionNodes(b.Complex, tmax));
+  // The table of cells a family keeps instead of the triangulation.
+  const CompactCells table = CellsOf(*b.Re);
   int same = 0, tried = 0;
   Id cells = 0;
   for (const double tr : { 1.2, 1.6, 2.0, 2.5, 3.0, tmax })
@@ -317,7 +320,8 @@ void SelectedFromPieces(const std::string& name, const std::vector<Point3>& p, d
     const CompactComplex chosen = SelectCompact(*b.Re, b.Complex.Nodes, pieces, selected);
     // Without the Betti numbers (a filter's t_r change) the void searches end
     // at their first maximum: the cells must not change.
-    CompactComplex quick = SelectCompact(*b.Re, b.Complex.Nodes, pieces, selected, false);
+    CompactComplex quick = SelectCompact(table, b.Complex.Nodes, pieces, selected, false);
+    CHECK(SameComplex(SelectCompact(table, b.Complex.Nodes, pieces, selected), chosen));
     CHECK(quick.Betti == (std::array<Id, 4>{ { 0, 0, 0, 0 } }));
     quick.Voids = fresh.Voids;
     quick.Betti = fresh.Betti;

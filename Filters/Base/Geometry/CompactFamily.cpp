@@ -33,14 +33,14 @@ CompactFamily::CompactFamily(const FlowComplex& fc, const std::vector<Id>& carri
   , Carriers(carriers)
   , Run(run)
   , Tmax(tmax)
-  , Re(std::move(re))
 {
-  if (!this->Re)
+  if (!re)
   {
-    this->Re = Retriangulation::OfStoredComplex(fc, progress.Range(0, 0.4), advice);
+    re = Retriangulation::OfStoredComplex(fc, progress.Range(0, 0.4), advice);
   }
   this->Pieces =
-    PrepareCompact(*this->Re, fc.Nodes, NodesAt(carriers, run, tmax), progress.Range(0.4, 1));
+    PrepareCompact(*re, fc.Nodes, NodesAt(carriers, run, tmax), progress.Range(0.4, 1));
+  this->Cells = CellsOf(*re);
 }
 
 CompactFamily::~CompactFamily() = default;
@@ -53,7 +53,7 @@ CompactComplex CompactFamily::At(double tr, std::vector<double>& nodeThreshold) 
   {
     nodeThreshold[node] = this->Run.Nodes[this->Carriers[node]].Threshold;
   }
-  return SelectCompact(*this->Re, this->FC.Nodes, this->Pieces, selected, false);
+  return SelectCompact(this->Cells, this->FC.Nodes, this->Pieces, selected, false);
 }
 
 } // namespace flowrecon

@@ -48,8 +48,10 @@ private:
   const std::vector<Id>& Carriers;
   const ReconstructionResult& Run;
   double Tmax;
-  std::unique_ptr<Retriangulation> Re;
   CompactPieces Pieces;
+  /// The cells the selection reads: the triangulation itself is freed once
+  /// the pieces are prepared.
+  CompactCells Cells;
 };
 
 } // namespace flowrecon

@@ -58,6 +58,59 @@ std::array<Id, N> InputSimplex(const Retriangulation& re, const std::array<Id, N
   return s;
 }
 
+/// The Delaunay cells as the selection reads them: from the triangulation, or
+/// from a CompactCells table made of it.
+class CellView
+{
+public:
+  explicit CellView(const Retriangulation& re)
+    : Re(&re)
+  {
+  }
+  explicit CellView(const CompactCells& cells)
+    : Table(&cells)
+  {
+  }
+  Id Count() const
+  {
+    return this->Re ? this->Re->Tri().NumberOfCells() : static_cast<Id>(this->Table->Vertices.size());
+  }
+  /// The cell's input ids, sorted.
+  std::array<Id, 4> Tetrahedron(Id c) const
+  {
+    if (this->Re)
+    {
+      const Triangulation& tri = this->Re->Tri();
+      return InputSimplex<4>(*this->Re, tri.SortedVertices(tri.Cell(c)));
+    }
+    const std::array<std::int32_t, 4>& v = this->Table->Vertices[c];
+    return { { v[0], v[1], v[2], v[3] } };
+  }
+  std::vector<char> MaximumFlags() const
+  {
+    std::vector<char> flags(static_cast<std::size_t>(this->Count()), 0);
+    if (this->Re)
+    {
+      for (const CriticalCell& c : this->Re->Critical().Cells)
+      {
+        flags[c.Cell] = 1;
+      }
+    }
+    else
+    {
+      for (const std::int32_t c : this->Table->Maxima)
+      {
+        flags[c] = 1;
+      }
+    }
+    return flags;
+  }
+
+private:
+  const Retriangulation* Re = nullptr;
+  const CompactCells* Table = nullptr;
+};
+
 /// Whether `node`'s simplex is `simplex` (input ids, sorted).
 template <std::size_t N>
 bool SameSimplex(const Node& node, const std::array<Id, N>& simplex)
@@ -278,18 +331,17 @@ void FlowCells(const Retriangulation& re, const std::vector<Node>& nodes,
 
 /// The Delaunay cells that flow to a selected maximum; `cellNode` (per cell)
 /// receives their maximum, -1 for the others.
-void SelectTetrahedra(const Retriangulation& re, const CompactPieces& pieces,
+void SelectTetrahedra(const CellView& cells, const CompactPieces& pieces,
   const std::vector<char>& isSelected, CompactComplex& out, std::vector<std::int32_t>& cellNode)
 {
-  const Triangulation& tri = re.Tri();
-  cellNode.assign(static_cast<std::size_t>(tri.NumberOfCells()), -1);
-  for (Id c = 0; c < tri.NumberOfCells(); ++c)
+  cellNode.assign(static_cast<std::size_t>(cells.Count()), -1);
+  for (Id c = 0; c < cells.Count(); ++c)
   {
     const Id m = pieces.CellMaximum[c];
     if (m >= 0 && isSelected[m])
     {
       cellNode[c] = static_cast<std::int32_t>(m);
-      out.Tetrahedra.push_back(InputSimplex<4>(re, tri.SortedVertices(tri.Cell(c))));
+      out.Tetrahedra.push_back(cells.Tetrahedron(c));
       out.TetrahedronNode.push_back(m);
     }
   }
@@ -315,11 +367,10 @@ struct Walls
   }
 };
 
-Walls FindWalls(const Triangulation& tri, const CompactComplex& out,
-  const std::vector<const Claim*>& written)
+Walls FindWalls(Id cellCount, const CompactComplex& out, const std::vector<const Claim*>& written)
 {
   Walls walls;
-  walls.Facets.assign(static_cast<std::size_t>(tri.NumberOfCells()), 0);
+  walls.Facets.assign(static_cast<std::size_t>(cellCount), 0);
   for (std::size_t k = 0; k < written.size(); ++k)
   {
     for (int side = 0; side < 2; ++side)
@@ -438,15 +489,14 @@ Id WallNode(const std::vector<Node>& nodes, const std::vector<std::int32_t>& cel
 /// be unbounded; with `count`, the bounded ones with a maximum are counted in
 /// out.Voids (else a search ends at its first maximum). `filled` receives the
 /// filling's cells.
-void FillVoidsWithoutMaximum(const Retriangulation& re, const std::vector<Node>& nodes,
+void FillVoidsWithoutMaximum(const CellView& cells, const std::vector<Node>& nodes,
   const std::vector<std::int32_t>& cellNode, const Neighbourhood& neighbours,
   const std::vector<const Claim*>& written, bool count, CompactComplex& out,
   std::vector<Id>& filled)
 {
-  const Triangulation& tri = re.Tri();
-  Walls walls = FindWalls(tri, out, written);
+  Walls walls = FindWalls(cells.Count(), out, written);
   std::vector<Id> starts;
-  for (Id c = 0; c < tri.NumberOfCells(); ++c)
+  for (Id c = 0; c < cells.Count(); ++c)
   {
     const bool inside = !cellNode.empty() && cellNode[c] >= 0;
     if (!inside && walls.Facets[c] != 0)
@@ -462,12 +512,8 @@ void FillVoidsWithoutMaximum(const Retriangulation& re, const std::vector<Node>&
       }
     }
   }
-  std::vector<char> isMaximum(static_cast<std::size_t>(tri.NumberOfCells()), 0);
-  for (const CriticalCell& c : re.Critical().Cells)
-  {
-    isMaximum[c.Cell] = 1;
-  }
-  std::vector<std::int32_t> mark(static_cast<std::size_t>(tri.NumberOfCells()), 0);
+  const std::vector<char> isMaximum = cells.MaximumFlags();
+  std::vector<std::int32_t> mark(static_cast<std::size_t>(cells.Count()), 0);
   std::vector<Id> component;
   std::int32_t search = 0;
   for (const Id start : starts)
@@ -493,7 +539,7 @@ void FillVoidsWithoutMaximum(const Retriangulation& re, const std::vector<Node>&
     const Id wall = WallNode(nodes, cellNode, walls, neighbours, component);
     for (const Id c : component)
     {
-      out.Tetrahedra.push_back(InputSimplex<4>(re, tri.SortedVertices(tri.Cell(c))));
+      out.Tetrahedra.push_back(cells.Tetrahedron(c));
       out.TetrahedronNode.push_back(wall);
       filled.push_back(c);
     }
@@ -505,14 +551,14 @@ void FillVoidsWithoutMaximum(const Retriangulation& re, const std::vector<Node>&
 /// `filled`): the tetrahedra hold them already, so the union is the same, and
 /// a volume sample's solid is written as its tetrahedra alone instead of with
 /// every wall between their maxima (about 7 triangles a sample more).
-void DropCoveredTriangles(const Triangulation& tri, const std::vector<std::int32_t>& cellNode,
+void DropCoveredTriangles(Id cellCount, const std::vector<std::int32_t>& cellNode,
   const std::vector<Id>& filled, std::vector<const Claim*>& written, CompactComplex& out)
 {
   if (out.Tetrahedra.empty())
   {
     return;
   }
-  std::vector<char> solid(static_cast<std::size_t>(tri.NumberOfCells()), 0);
+  std::vector<char> solid(static_cast<std::size_t>(cellCount), 0);
   for (std::size_t c = 0; c < cellNode.size(); ++c)
   {
     solid[c] = cellNode[c] >= 0 ? 1 : 0;
@@ -809,7 +855,10 @@ CompactPieces PrepareCompact(const Retriangulation& re, const std::vector<Node>&
   return pieces;
 }
 
-CompactComplex SelectCompact(const Retriangulation& re, const std::vector<Node>& nodes,
+namespace
+{
+
+CompactComplex Select(const CellView& cells, const std::vector<Node>& nodes,
   const CompactPieces& pieces, const std::vector<Id>& selected, bool betti)
 {
   const std::vector<Id> sorted = SortedNodes(nodes, selected);
@@ -826,11 +875,11 @@ CompactComplex SelectCompact(const Retriangulation& re, const std::vector<Node>&
   std::vector<std::int32_t> cellNode; // empty without a selected maximum
   if (maximum && !pieces.CellMaximum.empty())
   {
-    SelectTetrahedra(re, pieces, isSelected, out, cellNode);
+    SelectTetrahedra(cells, pieces, isSelected, out, cellNode);
   }
   std::vector<Id> filled;
-  FillVoidsWithoutMaximum(re, nodes, cellNode, pieces.Neighbours, written, betti, out, filled);
-  DropCoveredTriangles(re.Tri(), cellNode, filled, written, out);
+  FillVoidsWithoutMaximum(cells, nodes, cellNode, pieces.Neighbours, written, betti, out, filled);
+  DropCoveredTriangles(cells.Count(), cellNode, filled, written, out);
   CountSharing(pieces, isSelected, written, out);
   AddEdgesAndSamples(nodes, sorted, out);
   if (betti)
@@ -838,6 +887,45 @@ CompactComplex SelectCompact(const Retriangulation& re, const std::vector<Node>&
     SetBettiNumbers(out);
   }
   return out;
+}
+
+} // namespace
+
+CompactComplex SelectCompact(const Retriangulation& re, const std::vector<Node>& nodes,
+  const CompactPieces& pieces, const std::vector<Id>& selected, bool betti)
+{
+  return Select(CellView(re), nodes, pieces, selected, betti);
+}
+
+CompactComplex SelectCompact(const CompactCells& cells, const std::vector<Node>& nodes,
+  const CompactPieces& pieces, const std::vector<Id>& selected, bool betti)
+{
+  return Select(CellView(cells), nodes, pieces, selected, betti);
+}
+
+CompactCells CellsOf(const Retriangulation& re)
+{
+  const Triangulation& tri = re.Tri();
+  if (re.Prepared().InputId.size() > static_cast<std::size_t>(INT32_MAX))
+  {
+    throw InputError("compact output: more than 2^31 samples");
+  }
+  CompactCells cells;
+  cells.Vertices.resize(static_cast<std::size_t>(tri.NumberOfCells()));
+  ParallelSlices(tri.NumberOfCells(), Id(1) << 16, Progress(), 0.0, 0.0, "compact cells",
+    [&](Id from, Id to) {
+      for (Id c = from; c < to; ++c)
+      {
+        const std::array<Id, 4> t = InputSimplex<4>(re, tri.SortedVertices(tri.Cell(c)));
+        cells.Vertices[c] = { { static_cast<std::int32_t>(t[0]), static_cast<std::int32_t>(t[1]),
+          static_cast<std::int32_t>(t[2]), static_cast<std::int32_t>(t[3]) } };
+      }
+    });
+  for (const CriticalCell& c : re.Critical().Cells)
+  {
+    cells.Maxima.push_back(static_cast<std::int32_t>(c.Cell));
+  }
+  return cells;
 }
 
 CompactComplex CompactReconstruction(const Retriangulation& re, const std::vector<Node>& nodes,
