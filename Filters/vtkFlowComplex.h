@@ -76,7 +76,7 @@ public:
    * the field data DeferralRatio). On samples of surfaces with tubes those
    * patches hold most of the arcs (~n^1.5). Flow Reconstruction walks the ones
    * it needs, exactly, for any Maximum Threshold up to this value; Persistence
-   * Diagram walks them all. Default 4, Flow Reconstruction's default Maximum
+   * Diagram walks them all. Default 5, Flow Reconstruction's default Maximum
    * Threshold; 0 or anything up to 1: every patch.
    */
   vtkSetClampMacro(DeferPatchesAbove, double, 0.0, VTK_DOUBLE_MAX);
