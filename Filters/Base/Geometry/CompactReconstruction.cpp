@@ -400,12 +400,12 @@ Walls FindWalls(Id cellCount, const CompactComplex& out, const std::vector<const
 bool SearchRegion(const std::vector<std::int32_t>& cellNode, const Walls& walls,
   const std::vector<char>& isMaximum, const Neighbourhood& neighbours, Id start,
   std::int32_t search, bool toVoid, std::vector<std::int32_t>& mark, std::vector<Id>& component,
-  bool& walled, bool& maximum)
+  std::vector<Id>& stack, bool& walled, bool& maximum)
 {
   walled = false;
   maximum = false;
   component.clear();
-  std::vector<Id> stack{ start };
+  stack.assign(1, start); // reused: most searches stop within a few cells
   mark[start] = search;
   while (!stack.empty())
   {
@@ -514,7 +514,7 @@ void FillVoidsWithoutMaximum(const CellView& cells, const std::vector<Node>& nod
   }
   const std::vector<char> isMaximum = cells.MaximumFlags();
   std::vector<std::int32_t> mark(static_cast<std::size_t>(cells.Count()), 0);
-  std::vector<Id> component;
+  std::vector<Id> component, stack;
   std::int32_t search = 0;
   for (const Id start : starts)
   {
@@ -525,7 +525,7 @@ void FillVoidsWithoutMaximum(const CellView& cells, const std::vector<Node>& nod
     bool walled = false;
     bool maximum = false;
     if (!SearchRegion(cellNode, walls, isMaximum, neighbours, start, ++search, !count, mark,
-          component, walled, maximum) ||
+          component, stack, walled, maximum) ||
       !walled)
     {
       continue;
@@ -627,12 +627,17 @@ void AddEdgesAndSamples(
   {
     row[v] += row[v - 1];
   }
-  std::vector<Id> byFirst(edgeNodes.size());
+  // With each edge's second vertex beside it: the holding test below reads
+  // them row by row instead of the nodes at random.
+  std::vector<Id> byFirst(edgeNodes.size()), secondByFirst(edgeNodes.size());
   {
     std::vector<Id> next(row.begin(), row.end() - 1);
     for (std::size_t e = 0; e < edgeNodes.size(); ++e)
     {
-      byFirst[next[nodes[edgeNodes[e]].Simplex[0]]++] = static_cast<Id>(e);
+      const Node& n = nodes[edgeNodes[e]];
+      const Id j = next[n.Simplex[0]]++;
+      byFirst[j] = static_cast<Id>(e);
+      secondByFirst[j] = n.Simplex[1];
     }
   }
   std::vector<char> held(edgeNodes.size(), 0);
@@ -645,8 +650,10 @@ void AddEdgesAndSamples(
       {
         for (Id j = row[v[a]]; j < row[v[a] + 1]; ++j)
         {
-          const Id e = byFirst[j];
-          held[e] = held[e] || nodes[edgeNodes[e]].Simplex[1] == v[b];
+          if (secondByFirst[j] == v[b])
+          {
+            held[byFirst[j]] = 1;
+          }
         }
       }
     }
