@@ -17,12 +17,11 @@ Usage: test_topology_profile.py FLOWRECON WORKDIR
 import os
 import sys
 
-import gudhi
 import numpy as np
-from vtkmodules.util.numpy_support import vtk_to_numpy
 
 from flowrecon_testing import clouds as cl
 from flowrecon_testing import run as fr
+from flowrecon_testing.oracles import betti_at, filtered_intervals
 from flowrecon_testing.run import printed_betti, read_topology_profile
 
 FLOWRECON, WORK = sys.argv[1], sys.argv[2]
@@ -30,22 +29,7 @@ failures = []
 
 
 def clouds():
-    rng = np.random.default_rng(5)
-    sphere = cl.sphere(600, rng)
-    torus = cl.chart_torus(900, rng, 0.4)
-    t = np.linspace(0, 2 * np.pi, 160, endpoint=False)
-    g = np.arange(5.0)
-    return {
-        "sphere": sphere,
-        "torus": torus,
-        "ball": rng.uniform(-1, 1, (700, 3)),
-        "trefoil": np.c_[np.sin(t) + 2 * np.sin(2 * t), np.cos(t) - 2 * np.cos(2 * t),
-                         -np.sin(3 * t)],
-        "two hemispheres": cl.two_hemispheres(),
-        "sphere and segment": cl.with_segment(sphere[:400], np.linspace(-1.7, 1.7, 40)),
-        "grid": cl.grid(g, g, g),
-        "noisy sphere": cl.noisy(sphere, rng, 0.04),
-    }
+    return cl.topology_fixtures(np.random.default_rng(5), 600, 900, 700, 160, 400)
 
 
 def run(*args):
@@ -54,20 +38,9 @@ def run(*args):
 
 def gudhi_intervals(path):
     grid = fr.read_grid(path)
-    off = vtk_to_numpy(grid.GetCells().GetOffsetsArray())
-    conn = vtk_to_numpy(grid.GetCells().GetConnectivityArray())
-    thr = vtk_to_numpy(grid.GetCellData().GetArray("Threshold"))
-    st = gudhi.SimplexTree()
-    for c in range(len(off) - 1):
-        st.insert(conn[off[c]:off[c + 1]].tolist(), float(thr[c]))
-    st.compute_persistence(homology_coeff_field=2, persistence_dim_max=True)
     field = grid.GetFieldData().GetArray("BettiNumbers")
     stored = tuple(int(field.GetValue(k)) for k in range(3)) if field else None
-    return [st.persistence_intervals_in_dimension(d) for d in range(3)], stored
-
-
-def betti_at(intervals, t):
-    return tuple(int(sum(1 for b, d in intervals[k] if b < t <= d)) for k in range(3))
+    return filtered_intervals(grid), stored
 
 
 os.makedirs(WORK, exist_ok=True)

@@ -17,7 +17,6 @@ without Compute Topology). Clouds: surfaces, a solid, a curve, a non-manifold
 union, a sphere with a segment, an exact grid, a noisy sphere; deferred patches
 (Defer Patches Above near T_max) on two of them.
 """
-import gudhi
 import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
@@ -25,28 +24,14 @@ from flowrecon import vtkFlowComplexSimplification, vtkFlowReconstruction
 from flowrecon_testing import clouds as cl
 from flowrecon_testing.checks import check, finish
 from flowrecon_testing.flowcomplex_io import import_filter, make_polydata
-from flowrecon_testing.oracles import gudhi_betti
+from flowrecon_testing.oracles import betti_at, filtered_intervals, gudhi_betti
 
 TMAX = 4.0
 TR = 2.0
 
 
 def clouds():
-    rng = np.random.default_rng(11)
-    sphere = cl.sphere(500, rng)
-    t = np.linspace(0, 2 * np.pi, 150, endpoint=False)
-    g = np.arange(5.0)
-    return {
-        "sphere": sphere,
-        "torus": cl.chart_torus(800, rng, 0.4),
-        "ball": rng.uniform(-1, 1, (600, 3)),
-        "trefoil": np.c_[np.sin(t) + 2 * np.sin(2 * t), np.cos(t) - 2 * np.cos(2 * t),
-                         -np.sin(3 * t)],
-        "two hemispheres": cl.two_hemispheres(),
-        "sphere and segment": cl.with_segment(sphere[:350], np.linspace(-1.7, 1.7, 40)),
-        "grid": cl.grid(g, g, g),
-        "noisy sphere": cl.noisy(sphere, rng, 0.04),
-    }
+    return cl.topology_fixtures(np.random.default_rng(11), 500, 800, 600, 150, 350)
 
 
 def profile(reconstruction):
@@ -66,21 +51,6 @@ def grid_key(grid):
             vtk_to_numpy(grid.GetCells().GetConnectivityArray()).tobytes(),
             vtk_to_numpy(grid.GetPoints().GetData()).tobytes(),
             vtk_to_numpy(grid.GetCellData().GetArray("Threshold")).tobytes())
-
-
-def intervals_of(grid):
-    off = vtk_to_numpy(grid.GetCells().GetOffsetsArray())
-    conn = vtk_to_numpy(grid.GetCells().GetConnectivityArray())
-    thr = vtk_to_numpy(grid.GetCellData().GetArray("Threshold"))
-    st = gudhi.SimplexTree()
-    for c in range(len(off) - 1):
-        st.insert(conn[off[c]:off[c + 1]].tolist(), float(thr[c]))
-    st.compute_persistence(homology_coeff_field=2, persistence_dim_max=True)
-    return [st.persistence_intervals_in_dimension(d) for d in range(3)]
-
-
-def betti_at(intervals, t):
-    return tuple(int(sum(1 for b, d in intervals[k] if b < t <= d)) for k in range(3))
 
 
 def pipeline(points, tp, defer, hasse=True):
@@ -126,7 +96,7 @@ for name, points in clouds().items():
         r.SetGeometryToExact()
         r.EveryStepOn()  # the whole family below T_max, for GUDHI
         r.Update()
-        intervals = intervals_of(r.GetOutput())
+        intervals = filtered_intervals(r.GetOutput())
         r.EveryStepOff()
         r.Update()
         rows = profile(r)

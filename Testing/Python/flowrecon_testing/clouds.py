@@ -60,6 +60,29 @@ def basic_clouds(rng, cube, sphere_points, torus, indexing="xy"):
             "torus": chart_torus(torus, rng), "grid 6x6x5": grid(g, g, g[:5], indexing=indexing)}
 
 
+def topology_fixtures(rng, sphere_points, torus_points, ball_points, curve_points,
+                      segment_sphere_points):
+    """{name: points} of the clouds the topology tests check against GUDHI: a
+    sphere, a torus (r 0.4), a ball, a trefoil, the paper's two hemispheres, a sphere
+    with a segment, an exact (degenerate) 5 x 5 x 5 grid and a noisy sphere."""
+    ball = sphere(sphere_points, rng)
+    torus = chart_torus(torus_points, rng, 0.4)
+    t = np.linspace(0, 2 * np.pi, curve_points, endpoint=False)
+    g = np.arange(5.0)
+    return {
+        "sphere": ball,
+        "torus": torus,
+        "ball": rng.uniform(-1, 1, (ball_points, 3)),
+        "trefoil": np.c_[np.sin(t) + 2 * np.sin(2 * t), np.cos(t) - 2 * np.cos(2 * t),
+                         -np.sin(3 * t)],
+        "two hemispheres": two_hemispheres(),
+        "sphere and segment": with_segment(ball[:segment_sphere_points],
+                                           np.linspace(-1.7, 1.7, 40)),
+        "grid": grid(g, g, g),
+        "noisy sphere": noisy(ball, rng, 0.04),
+    }
+
+
 def two_hemispheres():
     """The paper's two hemispheres, Data/two_hemispheres.xyz."""
     return np.loadtxt(os.path.join(DATA, "two_hemispheres.xyz"))[:, :3]

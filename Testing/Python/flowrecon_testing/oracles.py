@@ -19,6 +19,27 @@ def gudhi_betti(grid):
     return tuple((st.betti_numbers() + [0, 0, 0])[:3])
 
 
+def filtered_intervals(grid, array="Threshold"):
+    """GUDHI's persistence intervals over Z/2, per dimension 0-2, of the cells of a
+    vtkUnstructuredGrid filtered by a cell array (faces take their least value)."""
+    import gudhi
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    off = vtk_to_numpy(grid.GetCells().GetOffsetsArray())
+    conn = vtk_to_numpy(grid.GetCells().GetConnectivityArray())
+    thr = vtk_to_numpy(grid.GetCellData().GetArray(array))
+    st = gudhi.SimplexTree()
+    for c in range(len(off) - 1):
+        st.insert(conn[off[c]:off[c + 1]].tolist(), float(thr[c]))
+    st.compute_persistence(homology_coeff_field=2, persistence_dim_max=True)
+    return [st.persistence_intervals_in_dimension(d) for d in range(3)]
+
+
+def betti_at(intervals, t):
+    """The Betti numbers at t of filtered_intervals: the classes born before t
+    that die at t or later."""
+    return tuple(int(sum(1 for b, d in intervals[k] if b < t <= d)) for k in range(3))
+
+
 def default_output_problems(vtu, stdout, stderr):
     """What is wrong with the default output of `flowrecon reconstruct` (Delaunay
     simplices on the samples) written to `vtu`, whose run printed `stdout` and
