@@ -359,23 +359,19 @@ bool vtkFlowReconstruction::RunQueue(vtkMultiBlockDataSet* input, bool& aborted)
       }
     }
   }
-  else if (this->ComputeTopology)
+  else if (this->ComputeTopology && !this->HasseTopology(*cache, aborted))
   {
-    this->HasseTopology(*cache, aborted);
-    if (aborted)
-    {
-      return false;
-    }
+    return false;
   }
   this->Cached = std::move(cache);
   return true;
 }
 
 //------------------------------------------------------------------------------
-void vtkFlowReconstruction::HasseTopology(Cache& cache, bool& aborted)
+bool vtkFlowReconstruction::HasseTopology(Cache& cache, bool& aborted)
 {
   this->SetProgressText("Betti numbers");
-  flowrecon::CallCore(
+  const int ok = flowrecon::CallCore(
     this, "Betti numbers",
     [&]() {
       try
@@ -392,8 +388,16 @@ void vtkFlowReconstruction::HasseTopology(Cache& cache, bool& aborted)
         cache.HasseBars.clear();
         cache.HasseBelow = 0;
       }
+      catch (const flowrecon::Degenerate&)
+      {
+        vtkWarningMacro(<< "no Betti numbers from the Hasse diagram (a deferred patch met a "
+                           "tie): computing them from the drawn cells");
+        cache.HasseBars.clear();
+        cache.HasseBelow = 0;
+      }
     },
     [&]() { aborted = true; });
+  return ok == 1 && !aborted;
 }
 
 //------------------------------------------------------------------------------

@@ -269,8 +269,9 @@ private:
   /// (false: failed, an error reported, or aborted, `aborted` set).
   bool RunQueue(vtkMultiBlockDataSet* input, bool& aborted);
   /// The bars of the run in `cache` read off its unsimplified Hasse diagram
-  /// (`aborted` set on request).
-  void HasseTopology(Cache& cache, bool& aborted);
+  /// (false: failed, an error reported, or aborted, `aborted` set; a diagram
+  /// they cannot be read from leaves them to the drawn cells, with a warning).
+  bool HasseTopology(Cache& cache, bool& aborted);
   /// Draws the cells of the nodes below `tmax` into the cache (reading the
   /// input's own first, when they were not read) (false: failed or aborted).
   bool DrawGeometry(vtkMultiBlockDataSet* input, double tmax);
