@@ -140,5 +140,46 @@ for name, points in clouds().items():
                   label + ": the drawn cells give another topology")
         print("%s: %d rows, Betti numbers %s at t_r 2" % (label, len(rows), exact))
 check(checked > 100, "only %d profile points checked" % checked)
+
+
+def corrupted_bars(points, mutate):
+    """The reconstruction of the simplification's output whose ReconstructionBars
+    were changed by `mutate` (a vtkDoubleArray, in place), with t_p 1.1."""
+    from vtkmodules.vtkCommonCore import vtkDoubleArray
+    from vtkmodules.vtkCommonDataModel import vtkMultiBlockDataSet
+    _, simplification = pipeline(points, 1.1, 5.0)
+    simplification.Update()
+    data = vtkMultiBlockDataSet()
+    data.ShallowCopy(simplification.GetOutput())
+    bars = vtkDoubleArray()
+    bars.DeepCopy(data.GetFieldData().GetArray("ReconstructionBars"))
+    mutate(bars)
+    data.GetFieldData().RemoveArray("ReconstructionBars")
+    data.GetFieldData().AddArray(bars)
+    r = vtkFlowReconstruction()
+    r.SetInputData(data)
+    r.SetMaximumThreshold(TMAX)
+    r.AutomaticReconstructionThresholdOff()
+    r.SetReconstructionThreshold(TR)
+    r.SetMaximumTopologyCells(-1)
+    r.GlobalWarningDisplayOff()  # the warning is expected
+    r.Update()
+    return r
+
+
+# Bars that do not fit the complex are not trusted: the filter falls back to the
+# drawn cells and gives the same topology as with sound bars.
+points = clouds()["torus"]
+sound, _ = pipeline(points, 1.1, 5.0)
+sound.Update()
+for what, mutate in (
+        ("a node id beyond the complex", lambda a: a.SetComponent(0, 3, 1e12)),
+        ("a death before its birth", lambda a: a.SetComponent(0, 2, a.GetComponent(0, 1) - 1)),
+        ("a dimension 3", lambda a: a.SetComponent(0, 0, 3)),
+        ("four components", lambda a: a.SetNumberOfComponents(4))):
+    r = corrupted_bars(points, mutate)
+    check(profile(r) == profile(sound) and betti_field(r) == betti_field(sound),
+          "bars with %s: the topology %s, not the drawn cells' %s"
+          % (what, betti_field(r), betti_field(sound)))
 print("%d profile points equal GUDHI's" % checked)
 finish()
