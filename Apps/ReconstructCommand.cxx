@@ -519,6 +519,10 @@ int RunReconstruct(const Arguments& args)
   {
     CompactFromStored(complex, args.Input, r); // its nodes are the simplified ones'
     clock("compact output");
+    if (r.Automatic)
+    {
+      CheckShallow(r.Choice, r.Compact.Tetrahedra); // as on a cloud (not measured with --exact)
+    }
   }
   const bool tpChosen = settings.AutomaticPersistence && r.Tps.size() > 1;
   const std::vector<std::string> choiceWarnings = r.Automatic

@@ -177,6 +177,7 @@ public:
   void SetThresholds();  ///< t_r and t_p used; what is written and drawn
   void Draw();           ///< [0.7, 0.9]: the cells of the nodes below the drawn threshold
   void DrawCompact();    ///< [0.9, 0.95]: the compact complex at t_r (settings.Compact)
+  std::vector<Id> Selected() const; ///< the chosen run's nodes with cells at t_r
   void WriteOutputs();   ///< [0.95, 1]: the grid, the profile, the topology and warnings
 
   CloudReconstructionReport Result;
@@ -357,6 +358,21 @@ void CloudRun::Draw()
         Run(eager, this->Chosen.Tp, true, this->Settings, regions, this->Report.Range(0.4, 0.7));
     }
   }
+  if (this->Automatic && this->Result.Choice.NeedsDepth())
+  {
+    // The exact output has no tetrahedra on the samples: the compact ones of
+    // the same reconstruction, for this measure only.
+    try
+    {
+      CheckShallow(this->Result.Choice, this->Settings.Compact
+          ? this->Result.Compact.Tetrahedra
+          : CompactReconstruction(*r.Triangulation, r.Complex.Nodes, this->Selected()).Tetrahedra);
+    }
+    catch (const Degenerate&)
+    {
+      // A walk met a tie: the depth stays unmeasured (Depth -1), not warned.
+    }
+  }
   this->Result.Work = WorkReport(r, linesDeferred, linesFollowed, this->Chosen) +
     (this->TopologyTimes.empty() ? "" : "\nBetti numbers from the Hasse diagram (s): " + this->TopologyTimes);
   r.Triangulation.reset();
@@ -369,19 +385,29 @@ void CloudRun::Draw()
   }
 }
 
-void CloudRun::DrawCompact()
+std::vector<Id> CloudRun::Selected() const
 {
   const CappedReconstruction& r = this->Chosen.R;
   std::vector<Id> selected;
-  this->Result.NodeThreshold.assign(r.Complex.Nodes.size(), std::nan(""));
   for (std::size_t i = 0; i < r.Complex.Nodes.size(); ++i)
   {
     const Id carrier = r.Carriers[i];
     if (carrier >= 0 && r.Run.Contains(carrier, this->Tr))
     {
       selected.push_back(static_cast<Id>(i));
-      this->Result.NodeThreshold[i] = r.Run.Nodes[carrier].Threshold;
     }
+  }
+  return selected;
+}
+
+void CloudRun::DrawCompact()
+{
+  const CappedReconstruction& r = this->Chosen.R;
+  const std::vector<Id> selected = this->Selected();
+  this->Result.NodeThreshold.assign(r.Complex.Nodes.size(), std::nan(""));
+  for (const Id i : selected)
+  {
+    this->Result.NodeThreshold[i] = r.Run.Nodes[r.Carriers[i]].Threshold;
   }
   this->Result.Compact =
     CompactReconstruction(*r.Triangulation, r.Complex.Nodes, selected, this->Report.Range(0.9, 0.95));

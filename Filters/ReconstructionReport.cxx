@@ -155,6 +155,13 @@ std::vector<std::string> ReconstructionChoiceWarnings(const ThresholdChoice& cho
       " samples): a closed surface sampled too sparsely or too noisily for its thickness "
       "may have been filled in");
   }
+  if (choice.Shallow)
+  {
+    lines.push_back("the reconstruction is solid but shallow: every sample is within " +
+      std::to_string(choice.Depth) + " Delaunay edge" + (choice.Depth == 1 ? "" : "s") +
+      " of its boundary, so a closed surface with noise of about its sample spacing "
+      "may have been filled in (a solid sampled through its volume is deeper)");
+  }
   if (choice.Longest.Length() > choice.Window.Length() && choice.Longest.Betti != choice.Window.Betti)
   {
     lines.push_back("the Betti numbers " + Betti(choice.Longest) + " hold longer, for t_r in " +

@@ -484,6 +484,22 @@ void vtkFlowReconstruction::FillOutputs(vtkMultiBlockDataSet* input, double tmax
     grid->Initialize(); // the compact cells go in below, after the field data
   }
   flowrecon::ReleaseFreedMemory(); // the previous output's arrays, replaced just now
+  // The compact cells at t, written below once the field data is; their
+  // tetrahedra tell whether a solid answer is shallow (as the command line's).
+  flowrecon::CompactComplex compact;
+  std::vector<double> thresholds;
+  const bool withCompact = this->Geometry == GEOMETRY_COMPACT && c.Compact;
+  if (withCompact)
+  {
+    compact = c.Compact->At(t, thresholds);
+  }
+  flowrecon::ThresholdChoice measured;
+  if (choice && withCompact)
+  {
+    measured = *choice;
+    flowrecon::CheckShallow(measured, compact.Tetrahedra);
+    choice = &measured;
+  }
   std::string why; // no Betti numbers
   if (!this->ComputeTopology)
   {
@@ -518,10 +534,8 @@ void vtkFlowReconstruction::FillOutputs(vtkMultiBlockDataSet* input, double tmax
     flowrecon::TopologyLine(grid, topology, undersampling, t, tmax, why), grid, text);
   // The compact cells in place of the exact ones, once the field data is
   // written (its counts go after the arrays the states' spreadsheets show).
-  if (this->Geometry == GEOMETRY_COMPACT && c.Compact)
+  if (withCompact)
   {
-    std::vector<double> thresholds;
-    const flowrecon::CompactComplex compact = c.Compact->At(t, thresholds);
     flowrecon::CompactCellsToVTK(compact,
       std::vector<flowrecon::Point3>(fc.Points.begin(), fc.Points.begin() + fc.NumberOfInputPoints),
       fc.Nodes, thresholds, grid, c.CompactPoints);

@@ -2,12 +2,16 @@
 // known answers: the windows of constant Betti numbers, the stable window
 // with the most voids, t_r just above its start, the flags behind the
 // warnings, and the choice of t_p for a given t_r. The local flatness of
-// clouds of known dimension, and the filled-surface check built on it.
+// clouds of known dimension, and the filled-surface check built on it. The
+// depth of a solid in edges on lattices whose answer is known, and the
+// shallow-solid check built on it.
 #include "AutomaticThresholds.h"
 #include "Check.h"
 #include "Clouds.h"
 #include "LocalFlatness.h"
+#include "SolidDepth.h"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -15,6 +19,34 @@ using namespace flowrecon;
 
 namespace
 {
+
+/// The n x n x n unit cubes from `corner` cut into 6 tetrahedra each along
+/// their main diagonal (Kuhn's subdivision), vertices numbered in the
+/// (m + 1)^3 lattice: every edge moves each coordinate by 0 or 1, so the
+/// depth of lattice point x is min over axes of min(x_c, n - x_c) edges, and the
+/// solid's depth floor(n / 2).
+void KuhnCubes(int n, std::array<int, 3> corner, int m, std::vector<std::array<Id, 4>>& tets)
+{
+  const auto id = [m](int x, int y, int z) { return static_cast<Id>(x + (m + 1) * (y + (m + 1) * z)); };
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+      for (int k = 0; k < n; ++k)
+      {
+        std::array<int, 3> axes{ { 0, 1, 2 } };
+        do
+        {
+          std::array<int, 3> p{ { corner[0] + i, corner[1] + j, corner[2] + k } };
+          std::array<Id, 4> t;
+          t[0] = id(p[0], p[1], p[2]);
+          for (int s = 0; s < 3; ++s)
+          {
+            ++p[axes[s]];
+            t[s + 1] = id(p[0], p[1], p[2]);
+          }
+          tets.push_back(t);
+        } while (std::next_permutation(axes.begin(), axes.end()));
+      }
+}
 
 std::vector<TopologyStep> Profile(const std::vector<std::pair<double, std::array<Id, 3>>>& rows)
 {
@@ -177,6 +209,57 @@ int main()
     CHECK(c.Filled);
     CheckFilled(c, volume, 5000);
     CHECK(!c.Filled && c.Flatness > 0.8);
+  }
+  // Solid depth: known answers on cube lattices, the search's limit, and two
+  // solids apart (the deeper counts).
+  {
+    CHECK(SolidDepth({}, 2) == -1);
+    CHECK(SolidDepth({ { { 4, 1, 7, 9 } } }, 2) == 0); // one tetrahedron: all boundary
+    for (int n = 1; n <= 7; ++n)
+    {
+      std::vector<std::array<Id, 4>> tets;
+      KuhnCubes(n, { { 0, 0, 0 } }, n, tets);
+      CHECK(SolidDepth(tets, 10) == n / 2);
+      CHECK(SolidDepth(tets, 1) == std::min(n / 2, 2)); // stops past the limit
+    }
+    std::vector<std::array<Id, 4>> two;
+    KuhnCubes(2, { { 0, 0, 0 } }, 12, two);
+    KuhnCubes(6, { { 5, 5, 5 } }, 12, two); // apart: depth 1 and 3
+    CHECK(SolidDepth(two, 10) == 3);
+    bool threw = false;
+    try
+    {
+      SolidDepth({ { { 1, 2, 2, 3 } } }, 2);
+    }
+    catch (const InputError&)
+    {
+      threw = true;
+    }
+    CHECK(threw);
+    // The shallow check: only a solid answer (no void, enough maxima) that is
+    // not already Filled is measured, and it is shallow at depth <= 2.
+    std::vector<std::array<Id, 4>> shallow, deep;
+    KuhnCubes(4, { { 0, 0, 0 } }, 4, shallow); // depth 2
+    KuhnCubes(6, { { 0, 0, 0 } }, 6, deep);    // depth 3
+    ThresholdChoice c = ChooseThresholds({ Torus }, 6);
+    c.Window.Betti = { { 1, 0, 0 } };
+    c.Samples = 1000;
+    c.Maxima = 500;
+    CheckShallow(c, shallow);
+    CHECK(c.Shallow && c.Depth == 2);
+    CheckShallow(c, deep);
+    CHECK(!c.Shallow && c.Depth == 3);
+    c.Maxima = 100; // a few slivers: not a solid
+    CheckShallow(c, shallow);
+    CHECK(!c.Shallow && c.Depth == -1);
+    c.Maxima = 500;
+    c.Filled = true; // warned already
+    CheckShallow(c, shallow);
+    CHECK(!c.Shallow && c.Depth == -1);
+    c.Filled = false;
+    c.Window.Betti = { { 1, 0, 1 } }; // a void: a surface
+    CheckShallow(c, shallow);
+    CHECK(!c.Shallow && c.Depth == -1);
   }
   return check::Finish("TestAutomaticThresholds");
 }

@@ -12,6 +12,9 @@ Flow Reconstruction, every property at its default, in pvpython.
   panel shows); the Topology Profile's chart marks the chosen t_r;
   the chosen t_r lies in the stable window, and the Betti numbers of the
   profile there are the ones reported.
+- On 1000 points of a torus with Gaussian noise of twice their spacing (which
+  closes only as a solid, and no more than 2 edges deep), both warn that the
+  solid is shallow.
 - Turning Automatic t_r off shows the Reconstruction Threshold (2) instead,
   and its Betti numbers are the profile's at 2.
 Usage: pvpython test_automatic_pipeline.py PLUGIN FLOWRECON WORKDIR
@@ -21,8 +24,10 @@ import os
 import re
 import subprocess
 import sys
+import zlib
 
 import generate_clouds as gc
+from flowrecon_testing.clouds import noisy_surface
 from paraview import servermanager
 from paraview.simple import Delete, LoadPlugin, OpenDataFile
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
@@ -119,7 +124,7 @@ def check(name, path, truth):
     xs, marks = values(tfd, "Threshold"), values(tfd, "t_r")
     at = [x for x, m in zip(xs, marks) if not math.isnan(m)]
     expect(len(at) == 2 and all(x == tr for x in at), "%s: the chart marks t_r at %s" % (name, at))
-    return tr
+    return c
 
 
 def main():
@@ -131,6 +136,12 @@ def main():
         f.write(gc.to_xyz_text(gc.make("latlong_sphere")))
     check("torus 10^5 i.i.d.", torus, gc.betti("torus"))
     check("latitude-longitude sphere", lattice, None)
+    noisy = os.path.join(WORK, "torus_pd_noise2_n1000.xyz")
+    with open(noisy, "w") as f:
+        f.write(gc.to_xyz_text(noisy_surface("torus_pd", 1000, 2, zlib.crc32(b"torus_pd_noise2_n1000"))))
+    c = check("noisy torus", noisy, None)
+    expect(any("solid but shallow" in w for w in c["warnings"]),
+           "noisy torus: no shallow-solid warning in %s" % c["warnings"])
     grid, table = pipeline(torus, automatic=False)
     fd = grid.GetFieldData()
     fixed = tuple(int(v) for v in values(fd, "BettiNumbers"))

@@ -1,6 +1,7 @@
 #include "AutomaticThresholds.h"
 
 #include "LocalFlatness.h"
+#include "SolidDepth.h"
 
 #include "Progress.h"
 
@@ -179,6 +180,25 @@ void CheckFilled(ThresholdChoice& choice, const std::vector<Point3>& samples, Id
   }
   choice.Flatness = RelativeFlatness(samples);
   choice.Filled = choice.Flatness < choice.Rule.SurfaceFlatness;
+}
+
+bool ThresholdChoice::NeedsDepth() const
+{
+  return this->Window.Length() > 0 && this->Window.Betti[2] == 0 && !this->Filled &&
+    this->Samples > 0 &&
+    static_cast<double>(this->Maxima) >= this->Rule.SolidShare * static_cast<double>(this->Samples);
+}
+
+void CheckShallow(ThresholdChoice& choice, const std::vector<std::array<Id, 4>>& tetrahedra)
+{
+  choice.Shallow = false;
+  choice.Depth = -1;
+  if (!choice.NeedsDepth())
+  {
+    return;
+  }
+  choice.Depth = SolidDepth(tetrahedra, choice.Rule.ShallowDepth);
+  choice.Shallow = choice.Depth >= 0 && choice.Depth <= choice.Rule.ShallowDepth;
 }
 
 Id MaximaBelow(const std::vector<Node>& nodes, const std::vector<Id>& carriers,

@@ -55,6 +55,11 @@ struct ThresholdRule
   /// A reconstruction is solid when it holds this many maxima per sample or
   /// more (an open surface's has a few slivers: under 0.1 per sample).
   double SolidShare = 0.125;
+  /// A solid whose samples are all within this many Delaunay edges of its
+  /// boundary (SolidDepth) is shallow: a ball of 10^3 volume samples is 3-4
+  /// deep, a closed surface with noise of 1-2 times its spacing 1-2 at any
+  /// size (Data/EXPERIMENTS.md).
+  Id ShallowDepth = 2;
 };
 
 struct ThresholdChoice
@@ -84,6 +89,13 @@ struct ThresholdChoice
   double Flatness = 1;   ///< RelativeFlatness of the samples (1: not measured)
   Id Maxima = 0;         ///< maxima in the reconstruction at t_r
   Id Samples = 0;
+  /// A solid answer not Filled whose samples are all near its boundary
+  /// (CheckShallow): a noisy closed surface may have been filled (warned).
+  bool Shallow = false;
+  Id Depth = -1; ///< SolidDepth of the answer's tetrahedra, up to ShallowDepth + 1 (-1: not measured)
+  /// Whether CheckShallow has something to measure: a solid answer (no void,
+  /// SolidShare maxima a sample, after CheckFilled) that is not Filled.
+  bool NeedsDepth() const;
   ThresholdRule Rule;
 };
 
@@ -109,6 +121,13 @@ ThresholdChoice ChoosePersistence(
 /// sparsely or too noisily for its thickness closes only as a solid, which
 /// no topology profile tells from a volume sample.
 void CheckFilled(ThresholdChoice& choice, const std::vector<Point3>& samples, Id maxima);
+
+/// After CheckFilled, with the tetrahedra of the compact output at t_r:
+/// measures their depth when NeedsDepth() and sets Shallow when it is at most
+/// Rule.ShallowDepth. At that depth a solid sampled through its volume and a
+/// closed surface whose noise is about its spacing give the same samples, so
+/// the answer is doubtful either way; deeper solids are volume samples.
+void CheckShallow(ThresholdChoice& choice, const std::vector<std::array<Id, 4>>& tetrahedra);
 
 /// The maxima whose cells are in the reconstruction at t_r = t (their carrier,
 /// CellCarriers, has Threshold < t in `run`).

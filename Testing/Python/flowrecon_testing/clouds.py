@@ -104,3 +104,14 @@ def random_cloud(kind, n, seed, cube=(0.0, 1.0)):
     if kind == "grid":
         return gc.grid(int(round(n ** (1.0 / 3.0))), 1e-3, rng)
     raise ValueError(kind)
+
+
+def noisy_surface(shape, n, times, seed):
+    """generate_clouds' `shape` with n points plus Gaussian noise of standard
+    deviation `times` its mean nearest-neighbour spacing per coordinate: the
+    topology study's noisy class (its seed is the study's cloud name's CRC32)."""
+    from scipy.spatial import cKDTree
+    points = gc.make(shape, n)
+    d, _ = cKDTree(points).query(points, k=2)
+    rng = np.random.default_rng(seed)
+    return points + rng.normal(0.0, times * float(np.mean(d[:, 1])), points.shape)
