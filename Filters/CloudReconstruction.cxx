@@ -358,19 +358,20 @@ void CloudRun::Draw()
         Run(eager, this->Chosen.Tp, true, this->Settings, regions, this->Report.Range(0.4, 0.7));
     }
   }
-  if (this->Automatic && this->Result.Choice.NeedsDepth())
+  // The shallow-solid check reads tetrahedra on the samples: the exact output
+  // has none, so the compact ones of the same reconstruction stand in.
+  const bool depth = this->Automatic && this->Result.Choice.NeedsDepth();
+  std::vector<std::array<Id, 4>> tetrahedra;
+  bool measurable = depth;
+  if (depth && !this->Settings.Compact)
   {
-    // The exact output has no tetrahedra on the samples: the compact ones of
-    // the same reconstruction, for this measure only.
     try
     {
-      CheckShallow(this->Result.Choice, this->Settings.Compact
-          ? this->Result.Compact.Tetrahedra
-          : CompactReconstruction(*r.Triangulation, r.Complex.Nodes, this->Selected()).Tetrahedra);
+      tetrahedra = CompactReconstruction(*r.Triangulation, r.Complex.Nodes, this->Selected()).Tetrahedra;
     }
     catch (const Degenerate&)
     {
-      // A walk met a tie: the depth stays unmeasured (Depth -1), not warned.
+      measurable = false; // a walk met a tie: unmeasured (Depth -1), not warned
     }
   }
   this->Result.Work = WorkReport(r, linesDeferred, linesFollowed, this->Chosen) +
@@ -379,6 +380,12 @@ void CloudRun::Draw()
   // The triangulation is the largest block until here (~0.7 KB per point, in
   // tbbmalloc's pools): the VTK arrays below need that memory back.
   ReleaseFreedMemory();
+  if (measurable)
+  {
+    // After the triangulation is gone: on a large solid the search's faces
+    // are a few hundred MB.
+    CheckShallow(this->Result.Choice, this->Settings.Compact ? this->Result.Compact.Tetrahedra : tetrahedra);
+  }
   if (!this->Settings.Compact)
   {
     this->PhaseDone("drawing");

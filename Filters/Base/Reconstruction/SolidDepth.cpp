@@ -17,9 +17,9 @@ Id SolidDepth(const std::vector<std::array<Id, 4>>& tetrahedra, Id limit)
   {
     return -1;
   }
-  // Samples renumbered 0..m-1, so that the faces and the search use 32 bits.
-  std::vector<Id> samples;
-  samples.reserve(4 * tetrahedra.size());
+  // Samples renumbered 0..m-1 in id order, so that the faces and the search
+  // use 32 bits.
+  Id largest = -1;
   for (const std::array<Id, 4>& t : tetrahedra)
   {
     std::array<Id, 4> s = t;
@@ -28,13 +28,25 @@ Id SolidDepth(const std::vector<std::array<Id, 4>>& tetrahedra, Id limit)
     {
       throw InputError("solid depth: a tetrahedron with a negative or repeated sample id");
     }
-    samples.insert(samples.end(), s.begin(), s.end());
+    largest = std::max(largest, s[3]);
   }
-  tbb::parallel_sort(samples.begin(), samples.end());
-  samples.erase(std::unique(samples.begin(), samples.end()), samples.end());
-  const auto local = [&samples](Id v) {
-    return static_cast<std::int32_t>(std::lower_bound(samples.begin(), samples.end(), v) - samples.begin());
-  };
+  std::vector<std::int32_t> number(static_cast<std::size_t>(largest) + 1, -1);
+  for (const std::array<Id, 4>& t : tetrahedra)
+  {
+    for (const Id v : t)
+    {
+      number[v] = 0;
+    }
+  }
+  std::size_t m = 0;
+  for (std::int32_t& k : number)
+  {
+    if (k == 0)
+    {
+      k = static_cast<std::int32_t>(m++);
+    }
+  }
+  const auto local = [&number](Id v) { return number[v]; };
   std::vector<std::array<std::int32_t, 4>> cells(tetrahedra.size());
   std::vector<std::array<std::int32_t, 3>> faces;
   faces.reserve(4 * tetrahedra.size());
@@ -52,8 +64,8 @@ Id SolidDepth(const std::vector<std::array<Id, 4>>& tetrahedra, Id limit)
     faces.push_back({ { c[0], c[1], c[2] } });
   }
   tbb::parallel_sort(faces.begin(), faces.end());
+  number = std::vector<std::int32_t>();
   // The boundary's samples start the search at depth 0.
-  const std::size_t m = samples.size();
   std::vector<std::int32_t> depth(m, -1);
   std::vector<std::int32_t> front;
   for (std::size_t i = 0; i < faces.size();)
