@@ -20,8 +20,8 @@ namespace flowrecon
 /// triangle that is a face of exactly one of them): 0 when every sample is on
 /// the boundary, -1 without tetrahedra. The search stops past `limit` edges
 /// (then returns limit + 1): a caller that only asks whether the solid is at
-/// most that deep does not walk a large volume. Time O(t log t) for t
-/// tetrahedra. Throws InputError on a tetrahedron with a negative or repeated id.
+/// most that deep does not walk a large volume. Time O(t log d) for t
+/// tetrahedra of at most d around a sample. Throws InputError on a tetrahedron with a negative or repeated id.
 Id SolidDepth(const std::vector<std::array<Id, 4>>& tetrahedra, Id limit);
 
 } // namespace flowrecon
