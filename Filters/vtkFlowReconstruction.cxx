@@ -256,7 +256,11 @@ int vtkFlowReconstruction::RequestData(
     flowrecon::EmptyOutputs(outputVector);
     return 0;
   }
-  if (this->Geometry == GEOMETRY_COMPACT && !this->PrepareCompact(tmax))
+  // The exact geometry of a solid answer needs the compact tetrahedra too:
+  // the shallow-solid check reads them, as the command line's --exact does.
+  if ((this->Geometry == GEOMETRY_COMPACT ||
+        (selection.Chosen && selection.Choice.NeedsDepth())) &&
+    !this->PrepareCompact(tmax))
   {
     flowrecon::EmptyOutputs(outputVector);
     return this->GetAbortExecute() ? 1 : 0;
@@ -489,12 +493,13 @@ void vtkFlowReconstruction::FillOutputs(vtkMultiBlockDataSet* input, double tmax
   flowrecon::CompactComplex compact;
   std::vector<double> thresholds;
   const bool withCompact = this->Geometry == GEOMETRY_COMPACT && c.Compact;
-  if (withCompact)
+  const bool measure = choice && c.Compact && choice->NeedsDepth();
+  if (withCompact || measure)
   {
     compact = c.Compact->At(t, thresholds);
   }
   flowrecon::ThresholdChoice measured;
-  if (choice && withCompact)
+  if (measure)
   {
     measured = *choice;
     flowrecon::CheckShallow(measured, compact.Tetrahedra);

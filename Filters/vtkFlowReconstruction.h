@@ -198,7 +198,9 @@ public:
    * data NodeId, Index, Threshold and Claims only; the walks they come from are
    * made once per input and MaximumThreshold, so that a new t_r only selects.
    * The Betti numbers, profiles and warnings are the same in both; with the
-   * Betti numbers from the Hasse diagram the exact cells are never drawn.
+   * Betti numbers from the Hasse diagram the exact cells are never drawn. A
+   * solid answer at the automatic t_r also makes the compact walks with the
+   * exact geometry: the shallow-solid warning measures their tetrahedra.
    */
   vtkSetClampMacro(Geometry, int, GEOMETRY_EXACT, GEOMETRY_COMPACT);
   vtkGetMacro(Geometry, int);

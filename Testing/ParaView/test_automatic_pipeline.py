@@ -14,7 +14,7 @@ Flow Reconstruction, every property at its default, in pvpython.
   profile there are the ones reported.
 - On 1000 points of a torus with Gaussian noise of twice their spacing (which
   closes only as a solid, and no more than 2 edges deep), both warn that the
-  solid is shallow.
+  solid is shallow, with the compact geometry and with the exact one.
 - Turning Automatic t_r off shows the Reconstruction Threshold (2) instead,
   and its Betti numbers are the profile's at 2.
 Usage: pvpython test_automatic_pipeline.py PLUGIN FLOWRECON WORKDIR
@@ -72,13 +72,15 @@ def cli(path):
             "window": (float(m.group(6)), float(m.group(7))), "warnings": warnings}
 
 
-def pipeline(path, automatic=True):
+def pipeline(path, automatic=True, exact=False):
     reader = OpenDataFile(path)
     fc = FlowComplex(Input=reader)  # noqa: F821 (defined by LoadPlugin)
     simplified = FlowComplexSimplification(Input=fc)  # noqa: F821
     recon = FlowReconstruction(Input=simplified)  # noqa: F821
     if not automatic:
         recon.AutomaticReconstructionThreshold = 0
+    if exact:
+        recon.Geometry = "Exact stable manifolds"
     recon.UpdatePipeline()
     grid = servermanager.Fetch(recon, idx=0)
     table = servermanager.Fetch(recon, idx=3)
@@ -142,6 +144,10 @@ def main():
     c = check("noisy torus", noisy, None)
     expect(any("solid but shallow" in w for w in c["warnings"]),
            "noisy torus: no shallow-solid warning in %s" % c["warnings"])
+    grid, _ = pipeline(noisy, exact=True)
+    expect(values(grid.GetFieldData(), "ThresholdWarnings") == c["warnings"],
+           "noisy torus, exact geometry: warnings %s, the command line's %s"
+           % (values(grid.GetFieldData(), "ThresholdWarnings"), c["warnings"]))
     grid, table = pipeline(torus, automatic=False)
     fd = grid.GetFieldData()
     fixed = tuple(int(v) for v in values(fd, "BettiNumbers"))
