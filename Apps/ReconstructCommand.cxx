@@ -521,8 +521,18 @@ int RunReconstruct(const Arguments& args)
     clock("compact output");
     if (r.Automatic)
     {
-      CheckShallow(r.Choice, r.Compact.Tetrahedra); // as on a cloud (not measured with --exact)
+      CheckShallow(r.Choice, r.Compact.Tetrahedra); // as on a cloud
     }
+  }
+  else if (complex && r.Automatic && r.Choice.NeedsDepth())
+  {
+    // --exact of a solid answer: the compact tetrahedra of the same cells,
+    // made for this measure only (as on a cloud).
+    Reconstruction probe;
+    probe.Grid = r.Grid;
+    probe.Tr = r.Tr;
+    CompactFromStored(complex, args.Input, probe);
+    CheckShallow(r.Choice, probe.Compact.Tetrahedra);
   }
   const bool tpChosen = settings.AutomaticPersistence && r.Tps.size() > 1;
   const std::vector<std::string> choiceWarnings = r.Automatic
