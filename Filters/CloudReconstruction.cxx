@@ -382,8 +382,8 @@ void CloudRun::Draw()
   ReleaseFreedMemory();
   if (measurable)
   {
-    // After the triangulation is gone: on a large solid the search's faces
-    // are a few hundred MB.
+    // After the triangulation is gone: on a large solid the samples' stars
+    // are ~100 MB (10^6 cube points).
     CheckShallow(this->Result.Choice, this->Settings.Compact ? this->Result.Compact.Tetrahedra : tetrahedra);
   }
   if (!this->Settings.Compact)
