@@ -531,8 +531,26 @@ int RunReconstruct(const Arguments& args)
     Reconstruction probe;
     probe.Grid = r.Grid;
     probe.Tr = r.Tr;
-    CompactFromStored(complex, args.Input, probe);
-    CheckShallow(r.Choice, probe.Compact.Tetrahedra);
+    try
+    {
+      CompactFromStored(complex, args.Input, probe);
+      CheckShallow(r.Choice, probe.Compact.Tetrahedra);
+    }
+    catch (const Error& e)
+    {
+      if (e.ExitCode == ExitInterrupted)
+      {
+        throw; // Ctrl-C stops the command, as anywhere else
+      }
+      std::cerr << "warning: the solid's depth is not measured (no shallow-solid warning): "
+                << e.what() << "\n";
+    }
+    catch (const std::exception& e)
+    {
+      // Only a warning needed them: the exact output is still written.
+      std::cerr << "warning: the solid's depth is not measured (no shallow-solid warning): "
+                << e.what() << "\n";
+    }
   }
   const bool tpChosen = settings.AutomaticPersistence && r.Tps.size() > 1;
   const std::vector<std::string> choiceWarnings = r.Automatic

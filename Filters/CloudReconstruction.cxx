@@ -369,9 +369,11 @@ void CloudRun::Draw()
     {
       tetrahedra = CompactReconstruction(*r.Triangulation, r.Complex.Nodes, this->Selected()).Tetrahedra;
     }
-    catch (const Degenerate&)
+    catch (const std::exception&)
     {
-      measurable = false; // a walk met a tie: unmeasured (Depth -1), not warned
+      // A walk met a tie, or memory ran short: only a warning needed these
+      // cells, so the exact output goes on, unmeasured (Depth -1).
+      measurable = false;
     }
   }
   this->Result.Work = WorkReport(r, linesDeferred, linesFollowed, this->Chosen) +

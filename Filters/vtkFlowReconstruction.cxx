@@ -258,9 +258,11 @@ int vtkFlowReconstruction::RequestData(
   }
   // The exact geometry of a solid answer needs the compact tetrahedra too:
   // the shallow-solid check reads them, as the command line's --exact does.
-  if ((this->Geometry == GEOMETRY_COMPACT ||
-        (selection.Chosen && selection.Choice.NeedsDepth())) &&
-    !this->PrepareCompact(tmax))
+  // There only a warning depends on them: when they cannot be made, the exact
+  // output is still given, unmeasured.
+  const bool compactGeometry = this->Geometry == GEOMETRY_COMPACT;
+  if ((compactGeometry || (selection.Chosen && selection.Choice.NeedsDepth())) &&
+    !this->PrepareCompact(tmax, !compactGeometry))
   {
     flowrecon::EmptyOutputs(outputVector);
     return this->GetAbortExecute() ? 1 : 0;
@@ -629,7 +631,7 @@ bool vtkFlowReconstruction::DrawGeometry(vtkMultiBlockDataSet* input, double tma
 }
 
 //------------------------------------------------------------------------------
-bool vtkFlowReconstruction::PrepareCompact(double tmax)
+bool vtkFlowReconstruction::PrepareCompact(double tmax, bool forWarning)
 {
   Cache& c = *this->Cached;
   if (c.Compact && c.Compact->MaximumThreshold() == tmax)
@@ -643,21 +645,41 @@ bool vtkFlowReconstruction::PrepareCompact(double tmax)
     this->UpdateProgress(0.3 + 0.6 * f);
   };
   bool finished = false;
-  flowrecon::CallCore(
-    this, "compact geometry",
-    [&]() {
-      // The queue's triangulation when the drawing did not free it.
-      c.Compact = std::make_unique<flowrecon::CompactFamily>(c.FC, c.Carrier, c.Run, tmax,
-        std::move(c.Re), progress, "lower MaximumThreshold, or choose the exact Geometry");
-      if (!c.CompactPoints)
-      {
-        c.CompactPoints = flowrecon::MakePoints(std::vector<flowrecon::Point3>(
-          c.FC.Points.begin(), c.FC.Points.begin() + c.FC.NumberOfInputPoints));
-      }
-      finished = true;
-    },
-    []() {});
-  return finished;
+  const auto make = [&]() {
+    // The queue's triangulation when the drawing did not free it.
+    c.Compact = std::make_unique<flowrecon::CompactFamily>(c.FC, c.Carrier, c.Run, tmax,
+      std::move(c.Re), progress, "lower MaximumThreshold, or choose the exact Geometry");
+    if (!c.CompactPoints)
+    {
+      c.CompactPoints = flowrecon::MakePoints(std::vector<flowrecon::Point3>(
+        c.FC.Points.begin(), c.FC.Points.begin() + c.FC.NumberOfInputPoints));
+    }
+    finished = true;
+  };
+  if (!forWarning)
+  {
+    flowrecon::CallCore(this, "compact geometry", make, []() {});
+    return finished;
+  }
+  try
+  {
+    make();
+  }
+  catch (const flowrecon::Aborted&)
+  {
+    vtkWarningMacro(<< "compact walks aborted: the output is empty (AbortExecute stays set "
+                       "until cleared)");
+    return false;
+  }
+  catch (const std::exception& e)
+  {
+    // Only the shallow-solid warning needed them: the exact output goes on.
+    c.Compact.reset();
+    flowrecon::ReleaseFreedMemory();
+    vtkWarningMacro(<< "the solid's depth is not measured (no shallow-solid warning): "
+                    << e.what());
+  }
+  return true;
 }
 
 //------------------------------------------------------------------------------

@@ -281,8 +281,10 @@ private:
   /// kept as its TopologyError: the reconstruction is still shown).
   void ComputeBettiNumbers(double tmax);
   /// The compact family below `tmax` into the cache, unless it is there
-  /// (false: failed or aborted).
-  bool PrepareCompact(double tmax);
+  /// (false: failed or aborted). `forWarning`: with the exact geometry only the
+  /// shallow-solid warning needs it, so a failure warns and returns true with
+  /// no family (an abort still returns false).
+  bool PrepareCompact(double tmax, bool forWarning = false);
   /// The t_r shown below `tmax`, chosen automatically or given (false: it
   /// cannot be chosen, an error reported).
   bool SelectThreshold(double tmax, Selection& selection);
