@@ -543,8 +543,11 @@ void vtkFlowReconstruction::FillOutputs(vtkMultiBlockDataSet* input, double tmax
   // written (its counts go after the arrays the states' spreadsheets show).
   if (withCompact)
   {
+    // The family's points are shared, not copied (nor the samples).
     flowrecon::CompactCellsToVTK(compact,
-      std::vector<flowrecon::Point3>(fc.Points.begin(), fc.Points.begin() + fc.NumberOfInputPoints),
+      c.CompactPoints ? std::vector<flowrecon::Point3>()
+                      : std::vector<flowrecon::Point3>(
+                          fc.Points.begin(), fc.Points.begin() + fc.NumberOfInputPoints),
       fc.Nodes, thresholds, grid, c.CompactPoints);
   }
   // What ParaView colours by in a render view: the reconstruction by Index (the

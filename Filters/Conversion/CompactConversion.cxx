@@ -23,10 +23,12 @@ void CompactCellsToVTK(const CompactComplex& compact, const std::vector<Point3>&
   vtkUnstructuredGrid* grid, vtkPoints* points)
 {
   const vtkIdType cells = static_cast<vtkIdType>(compact.NumberOfCells());
-  vtkNew<vtkCellArray> cellArray;
-  cellArray->AllocateExact(cells,
-    static_cast<vtkIdType>(compact.Vertices.size() + 2 * compact.Edges.size() +
-      3 * compact.Triangles.size() + 4 * compact.Tetrahedra.size()));
+  // Filled through raw pointers: a t_r change in ParaView writes millions of
+  // cells, and InsertNextCell and SetValue per cell took most of that.
+  vtkNew<vtkIdTypeArray> offsets, connectivity;
+  offsets->SetNumberOfValues(cells + 1);
+  connectivity->SetNumberOfValues(static_cast<vtkIdType>(compact.Vertices.size() +
+    2 * compact.Edges.size() + 3 * compact.Triangles.size() + 4 * compact.Tetrahedra.size()));
   vtkNew<vtkUnsignedCharArray> types;
   types->SetNumberOfValues(cells);
   auto nodeId = NamedArray<vtkIntArray>(names::NodeId);
@@ -37,19 +39,25 @@ void CompactCellsToVTK(const CompactComplex& compact, const std::vector<Point3>&
   {
     a->SetNumberOfTuples(cells);
   }
-  vtkIdType c = 0;
-  auto add = [&](const Id* v, int n, Id node, unsigned char type, int claimed) {
-    vtkIdType ids[4];
+  vtkIdType* offset = offsets->GetPointer(0);
+  vtkIdType* point = connectivity->GetPointer(0);
+  unsigned char* type = types->GetPointer(0);
+  int* node = nodeId->GetPointer(0);
+  int* nodeIndex = index->GetPointer(0);
+  double* nodeThresholds = threshold->GetPointer(0);
+  int* claimed = claims->GetPointer(0);
+  vtkIdType c = 0, at = 0;
+  auto add = [&](const Id* v, int n, Id id, unsigned char cellType, int count) {
+    offset[c] = at;
     for (int k = 0; k < n; ++k)
     {
-      ids[k] = static_cast<vtkIdType>(v[k]);
+      point[at++] = static_cast<vtkIdType>(v[k]);
     }
-    cellArray->InsertNextCell(n, ids);
-    types->SetValue(c, type);
-    nodeId->SetValue(c, static_cast<int>(node));
-    index->SetValue(c, nodes[node].Index);
-    threshold->SetValue(c, nodeThreshold[node]);
-    claims->SetValue(c, claimed);
+    type[c] = cellType;
+    node[c] = static_cast<int>(id);
+    nodeIndex[c] = nodes[id].Index;
+    nodeThresholds[c] = nodeThreshold[id];
+    claimed[c] = count;
     ++c;
   };
   for (std::size_t k = 0; k < compact.Vertices.size(); ++k)
@@ -69,6 +77,9 @@ void CompactCellsToVTK(const CompactComplex& compact, const std::vector<Point3>&
   {
     add(compact.Tetrahedra[k].data(), 4, compact.TetrahedronNode[k], VTK_TETRA, 1);
   }
+  offset[c] = at;
+  vtkNew<vtkCellArray> cellArray;
+  cellArray->SetData(offsets, connectivity);
   vtkNew<vtkFieldData> kept;
   kept->ShallowCopy(grid->GetFieldData());
   grid->Initialize();

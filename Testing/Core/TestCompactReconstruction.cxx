@@ -12,6 +12,7 @@
 #include "ReconFixtures.h"
 
 #include "CellHomology.h"
+#include "CompactFamily.h"
 #include "CompactReconstruction.h"
 #include "FlowComplexBuilder.h"
 #include "Progress.h"
@@ -300,11 +301,80 @@ bool SameComplex(const CompactComplex& a, const CompactComplex& b)
     a.Voids == b.Voids && a.Betti == b.Betti && a.ExactFallbacks == b.ExactFallbacks;
 }
 
+/// The family a filter keeps (CompactFamily, its void ranges from one sweep)
+/// gives, at every threshold where the reconstruction changes and between
+/// them (every one for `tries` 0, else about `tries`), the complex computed from scratch for
+/// the nodes in there, and the thresholds of those nodes only. Returns the
+/// voids it filled.
+Id FamilyAgrees(const Built& b, double tmax, std::size_t tries)
+{
+  const FlowComplex& fc = b.Complex;
+  const std::vector<bool> all(fc.Nodes.size(), true);
+  const std::vector<Id> init =
+    InitializationEdges(fc.Nodes, NearestNeighboursFromDiagram(fc.Nodes, fc.Arcs));
+  const ReconstructionResult run = Reconstruct(fc.Nodes, fc.Arcs, all, init, HUGE_VAL, Progress());
+  const std::vector<Id> carriers = CellCarriers(run, nullptr);
+  const CompactFamily family(fc, carriers, run, tmax, nullptr, Progress(), "");
+  // The thresholds themselves (a node enters just above its own), and midpoints.
+  std::vector<double> steps;
+  for (std::size_t i = 0; i < fc.Nodes.size(); ++i)
+  {
+    if (carriers[i] >= 0 && run.Contains(carriers[i], tmax))
+    {
+      steps.push_back(run.Nodes[carriers[i]].Threshold);
+    }
+  }
+  std::sort(steps.begin(), steps.end());
+  steps.erase(std::unique(steps.begin(), steps.end()), steps.end());
+  std::vector<double> ts;
+  const std::size_t stride = tries == 0 ? 1 : std::max<std::size_t>(1, steps.size() / tries);
+  for (std::size_t k = 0; k < steps.size(); k += stride)
+  {
+    ts.push_back(steps[k]);
+    ts.push_back(k + 1 < steps.size() ? 0.5 * (steps[k] + steps[k + 1]) : tmax);
+  }
+  Id filled = 0;
+  int same = 0;
+  for (const double t : ts)
+  {
+    std::vector<Id> selected;
+    for (std::size_t i = 0; i < fc.Nodes.size(); ++i)
+    {
+      if (carriers[i] >= 0 && run.Contains(carriers[i], t))
+      {
+        selected.push_back(static_cast<Id>(i));
+      }
+    }
+    const CompactComplex fresh = CompactReconstruction(*b.Re, fc.Nodes, selected);
+    std::vector<double> thresholds;
+    CompactComplex kept = family.At(t, thresholds);
+    CHECK(kept.Voids == 0);
+    kept.Voids = fresh.Voids;
+    kept.Betti = fresh.Betti;
+    same += SameComplex(fresh, kept) ? 1 : 0;
+    filled += kept.FilledVoids;
+    std::set<Id> asked(selected.begin(), selected.end());
+    Id shown = 0;
+    for (std::size_t i = 0; i < thresholds.size(); ++i)
+    {
+      shown += std::isnan(thresholds[i]) ? 0 : 1;
+      CHECK(std::isnan(thresholds[i]) ||
+        (asked.count(static_cast<Id>(i)) == 1 && thresholds[i] < t));
+    }
+    CHECK(shown == static_cast<Id>(asked.size() - (asked.count(fc.Nodes.size() - 1) ? 1 : 0)) ||
+      shown == static_cast<Id>(asked.size()));
+  }
+  std::cout << "   the family: " << same << " of " << ts.size()
+            << " thresholds give the complex computed anew; " << filled << " voids filled\n";
+  CHECK(same == static_cast<int>(ts.size()));
+  return filled;
+}
+
 /// The pieces of the reconstruction at T (what a filter keeps) give, for every
 /// t_r <= T, the complex computed from scratch for the nodes at t_r, and
 /// nothing but the nodes asked for, read from the triangulation or from the
 /// table of its cells (CellsOf).
-void SelectedFromPieces(const std::string& name, const std::vector<Point3>& p, double tmax)
+Id SelectedFromPieces(const std::string& name, const std::vector<Point3>& p, double tmax)
 {
   const Built b = Build(p);
   const CompactPieces pieces =
@@ -339,6 +409,7 @@ void SelectedFromPieces(const std::string& name, const std::vector<Point3>& p, d
             << " selections equal to the complex computed anew; " << cells << " cells at T\n";
   CHECK(same == tried);
   CHECK(cells > 0);
+  return FamilyAgrees(b, tmax, 40);
 }
 
 } // namespace
@@ -354,7 +425,14 @@ int main()
   Everything("torus, 3000 i.i.d. points", clouds::Torus(3000, 7));
   PatchByPatch("cube, 1500 i.i.d. points", clouds::Cube(1500, 8));
   PatchByPatch("torus, 1500 i.i.d. points", clouds::Torus(1500, 9));
-  SelectedFromPieces("torus, 3000 i.i.d. points", clouds::Torus(3000, 10), 4);
-  SelectedFromPieces("cube, 2000 i.i.d. points", clouds::Cube(2000, 11), 4);
+  // The family's void ranges must be met: some of these fill voids.
+  Id filled = SelectedFromPieces("torus, 3000 i.i.d. points", clouds::Torus(3000, 10), 4);
+  filled += SelectedFromPieces("cube, 2000 i.i.d. points", clouds::Cube(2000, 11), 4);
+  CHECK(filled > 0);
+  // Every threshold where a small cube's reconstruction changes: a void's
+  // range starts and ends at one of them.
+  std::cout << "-- cube, 600 i.i.d. points, and torus, 800, every threshold:\n";
+  CHECK(FamilyAgrees(Build(clouds::Cube(600, 15)), 4, 0) +
+      FamilyAgrees(Build(clouds::Torus(800, 15)), 4, 0) > 0);
   return check::Finish("TestCompactReconstruction");
 }

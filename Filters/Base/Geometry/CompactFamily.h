@@ -1,8 +1,10 @@
 // The compact complexes of a reconstruction's whole family t_r <= T_max, for a
 // stage that shows one t_r after another (Flow Reconstruction in ParaView):
-// the walks and flow lines are made once (PrepareCompact), each t_r only
-// selects (SelectCompact), so a new t_r costs time linear in the
-// triangulation rather than a walk of every patch.
+// the walks and flow lines are made once, and so is the threshold above which
+// each piece enters (a node, a triangle, a solid cell, an edge or a sample
+// held by another cell, a cell of a void to fill: VoidSweep). A new t_r then
+// compares thresholds, in time linear in the pieces it keeps, and gives the
+// complex SelectCompact gives for the same nodes.
 #ifndef flowrecon_CompactFamily_h
 #define flowrecon_CompactFamily_h
 
@@ -10,7 +12,10 @@
 #include "FlowComplex.h"
 #include "Progress.h"
 #include "Reconstruction.h"
+#include "VoidSweep.h"
 
+#include <array>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -26,7 +31,8 @@ public:
   /// The family of the run `run` of `fc` (with `carriers`, CellCarriers) below
   /// `tmax`. `re` is the triangulation of fc's samples when the caller has it
   /// (else it is computed again; `advice` says what to do when it does not
-  /// fit). Throws InputError, Aborted on request.
+  /// fit); it is freed once the pieces are made. Throws InputError, Aborted
+  /// on request.
   CompactFamily(const FlowComplex& fc, const std::vector<Id>& carriers,
     const ReconstructionResult& run, double tmax, std::unique_ptr<Retriangulation> re,
     const Progress& progress, const std::string& advice);
@@ -39,19 +45,28 @@ public:
 
   /// The compact complex of the reconstruction at `tr` <= MaximumThreshold();
   /// `nodeThreshold` (per node) receives the Threshold of each node's carrier,
-  /// NaN for the nodes outside. Its Betti are left zero: they are the
-  /// reconstruction's, which a caller showing it computes anyway.
+  /// NaN for the nodes outside. Its Voids and Betti are left zero: the Betti
+  /// numbers are the reconstruction's, which a caller showing it has anyway.
   CompactComplex At(double tr, std::vector<double>& nodeThreshold) const;
 
 private:
   const FlowComplex& FC;
-  const std::vector<Id>& Carriers;
-  const ReconstructionResult& Run;
   double Tmax;
-  CompactPieces Pieces;
-  /// The cells the selection reads: the triangulation itself is freed once
-  /// the pieces are prepared.
-  CompactCells Cells;
+  CompactPieces Pieces; // without Neighbours: the void cells keep theirs
+  std::vector<std::array<std::int32_t, 4>> CellVertices; ///< input ids, sorted
+  /// Per node, the threshold above which it is in (HUGE_VAL: never below T_max).
+  std::vector<double> NodeEntry;
+  /// The nodes in at T_max, sorted; and per such node the threshold above
+  /// which a triangle or solid cell holds it (edges) or any written cell
+  /// uses it (samples), HUGE_VAL otherwise.
+  std::vector<Id> Candidates;
+  std::vector<double> HeldAbove;
+  /// The claims of one triangle: Pieces.Claims[GroupStart[g], GroupStart[g+1]),
+  /// written above GroupEntry[g].
+  std::vector<std::size_t> GroupStart;
+  std::vector<double> GroupEntry;
+  std::vector<std::int32_t> SolidCells; ///< the cells that flow to a candidate maximum
+  std::vector<VoidCell> Voids;
 };
 
 } // namespace flowrecon

@@ -445,14 +445,15 @@ bool SearchRegion(const std::vector<std::int32_t>& cellNode, const Walls& walls,
 }
 
 /// The node of largest value among the walls and complex cells around the
-/// bounded region `component` (in SearchRegion's order; the first on ties).
+/// bounded region `component` (the least id on ties: no order matters).
 Id WallNode(const std::vector<Node>& nodes, const std::vector<std::int32_t>& cellNode, Walls& walls,
   const Neighbourhood& neighbours, const std::vector<Id>& component)
 {
   walls.SortSides();
   Id wall = -1;
   auto meet = [&](Id node) {
-    if (wall < 0 || nodes[node].Value > nodes[wall].Value)
+    if (wall < 0 || nodes[node].Value > nodes[wall].Value ||
+      (nodes[node].Value == nodes[wall].Value && node < wall))
     {
       wall = node;
     }
@@ -516,6 +517,9 @@ void FillVoidsWithoutMaximum(const CellView& cells, const std::vector<Node>& nod
   std::vector<std::int32_t> mark(static_cast<std::size_t>(cells.Count()), 0);
   std::vector<Id> component, stack;
   std::int32_t search = 0;
+  // Filled in a canonical order (regions by their least cell, cells sorted),
+  // which CompactFamily, finding them another way, gives too.
+  std::vector<std::pair<std::vector<Id>, Id>> fills;
   for (const Id start : starts)
   {
     if (mark[start] != 0)
@@ -537,10 +541,16 @@ void FillVoidsWithoutMaximum(const CellView& cells, const std::vector<Node>& nod
     }
     ++out.FilledVoids;
     const Id wall = WallNode(nodes, cellNode, walls, neighbours, component);
-    for (const Id c : component)
+    std::sort(component.begin(), component.end());
+    fills.emplace_back(component, wall);
+  }
+  std::sort(fills.begin(), fills.end());
+  for (const auto& fill : fills)
+  {
+    for (const Id c : fill.first)
     {
       out.Tetrahedra.push_back(cells.Tetrahedron(c));
-      out.TetrahedronNode.push_back(wall);
+      out.TetrahedronNode.push_back(fill.second);
       filled.push_back(c);
     }
   }
