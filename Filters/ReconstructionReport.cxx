@@ -61,9 +61,10 @@ std::vector<TopologyStep> TopologyRows(vtkTable* topology)
   return rows;
 }
 
-bool BettiNumbersAt(vtkTable* topology, double t, std::array<long long, 3>& betti)
+namespace
 {
-  const std::vector<TopologyStep> rows = TopologyRows(topology);
+bool BettiNumbersAt(const std::vector<TopologyStep>& rows, double t, std::array<long long, 3>& betti)
+{
   if (rows.empty())
   {
     return false;
@@ -78,6 +79,12 @@ bool BettiNumbersAt(vtkTable* topology, double t, std::array<long long, 3>& bett
     betti[k] = static_cast<long long>(rows[row].Betti[k]);
   }
   return true;
+}
+} // namespace
+
+bool BettiNumbersAt(vtkTable* topology, double t, std::array<long long, 3>& betti)
+{
+  return BettiNumbersAt(TopologyRows(topology), t, betti);
 }
 
 namespace
@@ -206,12 +213,15 @@ std::vector<std::string> ChoiceWarnings(const ThresholdChoice& choice,
 }
 
 std::string TopologyLine(vtkUnstructuredGrid* grid, vtkTable* topology,
-  vtkPolyData* undersampling, double t, double limit, const std::string& why)
+  vtkPolyData* undersampling, double t, double limit, const std::string& why,
+  const std::vector<TopologyStep>* profile)
 {
+  const std::vector<TopologyStep> read = profile ? std::vector<TopologyStep>() : TopologyRows(topology);
+  const std::vector<TopologyStep>& rows = profile ? *profile : read;
   vtkFieldData* field = grid->GetFieldData();
   // At t from the profile (a file's cells may go above t_r), else the grid's.
   std::array<long long, 3> betti;
-  if (!BettiNumbersAt(topology, t, betti))
+  if (!BettiNumbersAt(rows, t, betti))
   {
     vtkDataArray* b = field->GetArray(names::BettiNumbers);
     if (!b || b->GetNumberOfTuples() < 3)
@@ -251,7 +261,7 @@ std::string TopologyLine(vtkUnstructuredGrid* grid, vtkTable* topology,
   }
   if (around.Length() == 0)
   {
-    for (const StableWindow& w : StableWindows(TopologyRows(topology), 1, limit))
+    for (const StableWindow& w : StableWindows(rows, 1, limit))
     {
       if (w.From < t && t <= w.To)
       {

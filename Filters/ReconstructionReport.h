@@ -58,8 +58,10 @@ std::vector<std::string> PersistenceChoiceWarnings(
 /// line prints them, the lines of ThresholdWarnings and one per place of
 /// `undersampling`. Without Betti numbers: "t_r 2.000: no Betti numbers"
 /// followed by `why`.
+/// `profile`, when given, is the table's rows (TopologyRows), not read again.
 std::string TopologyLine(vtkUnstructuredGrid* grid, vtkTable* topology,
-  vtkPolyData* undersampling, double t, double limit, const std::string& why);
+  vtkPolyData* undersampling, double t, double limit, const std::string& why,
+  const std::vector<TopologyStep>* profile = nullptr);
 
 /// The number of steps of `profile` (ReconstructionToVTK's table) with
 /// Threshold < t: the steps of the reconstruction at t_r = t.

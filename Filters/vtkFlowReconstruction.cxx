@@ -156,6 +156,29 @@ struct vtkFlowReconstruction::Cache
   /// statistics of a new points array at each update).
   std::unique_ptr<flowrecon::CompactFamily> Compact;
   vtkSmartPointer<vtkPoints> CompactPoints;
+  /// What every t_r shows alike, made once: the topology profile below
+  /// StepsThreshold (NaN: none yet), and the profile's largest jumps (field
+  /// arrays of Jumps, for JumpCount of them).
+  std::vector<flowrecon::TopologyStep> Steps;
+  double StepsThreshold = std::nan("");
+  bool StepsFromHasse = false;
+  vtkSmartPointer<vtkTable> Jumps;
+  int JumpCount = -1;
+  /// The compact cells shown and their nodes' thresholds, kept so that each
+  /// t_r refills them instead of faulting in new memory.
+  std::vector<double> NodeThresholds;
+  flowrecon::CompactComplex Shown;
+
+  const std::vector<flowrecon::TopologyStep>& StepsBelow(double tmax)
+  {
+    if (!(this->StepsThreshold == tmax) || this->StepsFromHasse != this->HasHasse(tmax))
+    {
+      this->Steps = flowrecon::TopologyProfile(this->BarsBelow(tmax), 1, tmax);
+      this->StepsThreshold = tmax;
+      this->StepsFromHasse = this->HasHasse(tmax);
+    }
+    return this->Steps;
+  }
 };
 
 /// The t_r shown, and the automatic choice that gave it (when Chosen).
@@ -409,7 +432,7 @@ bool vtkFlowReconstruction::HasseTopology(Cache& cache, bool& aborted)
 //------------------------------------------------------------------------------
 bool vtkFlowReconstruction::SelectThreshold(double tmax, Selection& selection)
 {
-  const Cache& c = *this->Cached;
+  Cache& c = *this->Cached;
   const flowrecon::FlowComplex& fc = c.FC;
   double& t = selection.Threshold;
   flowrecon::ThresholdChoice& choice = selection.Choice;
@@ -425,8 +448,7 @@ bool vtkFlowReconstruction::SelectThreshold(double tmax, Selection& selection)
     }
     if (c.ErrorBelow(tmax).empty() && tmax > choice.Rule.Lowest)
     {
-      choice = flowrecon::ChooseThresholds(
-        { flowrecon::TopologyProfile(c.BarsBelow(tmax), 1, tmax) }, tmax);
+      choice = flowrecon::ChooseThresholds({ c.StepsBelow(tmax) }, tmax);
       t = choice.ReconstructionThreshold;
       selection.Chosen = true;
       flowrecon::CheckFilled(choice,
@@ -467,7 +489,7 @@ void vtkFlowReconstruction::FillOutputs(vtkMultiBlockDataSet* input, double tmax
   const auto [grid, profile, topology, undersampling] = flowrecon::ReconstructionPorts(outputVector);
   auto* arrows = vtkPolyData::GetData(outputVector, SPONSOR_ARROWS);
   auto* text = vtkTable::GetData(outputVector, TOPOLOGY_TEXT);
-  const Cache& c = *this->Cached;
+  Cache& c = *this->Cached;
   const flowrecon::FlowComplex& fc = c.FC;
   if (this->SponsorArrows)
   {
@@ -480,7 +502,17 @@ void vtkFlowReconstruction::FillOutputs(vtkMultiBlockDataSet* input, double tmax
   }
   profile->ShallowCopy(c.Profile);
   flowrecon::MarkProfile(profile, t);
-  flowrecon::ProfileJumpsToVTK(fc, c.Run, static_cast<std::size_t>(this->NumberOfJumps), profile);
+  if (!c.Jumps || c.JumpCount != this->NumberOfJumps)
+  {
+    c.Jumps = vtkSmartPointer<vtkTable>::New();
+    flowrecon::ProfileJumpsToVTK(fc, c.Run, static_cast<std::size_t>(this->NumberOfJumps), c.Jumps);
+    c.JumpCount = this->NumberOfJumps;
+  }
+  vtkFieldData* jumps = c.Jumps->GetFieldData();
+  for (int k = 0; k < jumps->GetNumberOfArrays(); ++k)
+  {
+    profile->GetFieldData()->AddArray(jumps->GetAbstractArray(k));
+  }
   if (this->Geometry == GEOMETRY_EXACT)
   {
     flowrecon::GridBelow(c.Full, t, flowrecon::EdgeMultiplicities(fc.Nodes, fc.Arcs, c.Run, t), grid);
@@ -492,13 +524,13 @@ void vtkFlowReconstruction::FillOutputs(vtkMultiBlockDataSet* input, double tmax
   flowrecon::ReleaseFreedMemory(); // the previous output's arrays, replaced just now
   // The compact cells at t, written below once the field data is; their
   // tetrahedra tell whether a solid answer is shallow (as the command line's).
-  flowrecon::CompactComplex compact;
-  std::vector<double> thresholds;
+  flowrecon::CompactComplex& compact = c.Shown;
+  std::vector<double>& thresholds = c.NodeThresholds;
   const bool withCompact = this->Geometry == GEOMETRY_COMPACT && c.Compact;
   const bool measure = choice && c.Compact && choice->NeedsDepth();
   if (withCompact || measure)
   {
-    compact = c.Compact->At(t, thresholds);
+    c.Compact->At(t, thresholds, compact);
   }
   flowrecon::ThresholdChoice measured;
   if (measure)
@@ -517,7 +549,7 @@ void vtkFlowReconstruction::FillOutputs(vtkMultiBlockDataSet* input, double tmax
   else if (c.ErrorBelow(tmax).empty())
   {
     const std::vector<flowrecon::Bar>& bars = c.BarsBelow(tmax);
-    flowrecon::TopologyToVTK(bars, t, tmax, grid, topology);
+    flowrecon::TopologyToVTK(bars, c.StepsBelow(tmax), t, tmax, grid, topology);
     // Changes beyond T_max are not known: the window stops there. A short
     // stable window: its end is where the topology changes next.
     double window = std::min(this->UnderSamplingWindow, tmax / t);
@@ -538,7 +570,9 @@ void vtkFlowReconstruction::FillOutputs(vtkMultiBlockDataSet* input, double tmax
     why = ": " + c.ErrorBelow(tmax);
   }
   flowrecon::TopologyTextToVTK(
-    flowrecon::TopologyLine(grid, topology, undersampling, t, tmax, why), grid, text);
+    flowrecon::TopologyLine(grid, topology, undersampling, t, tmax, why,
+      c.ErrorBelow(tmax).empty() && this->ComputeTopology ? &c.StepsBelow(tmax) : nullptr),
+    grid, text);
   // The compact cells in place of the exact ones, once the field data is
   // written (its counts go after the arrays the states' spreadsheets show).
   if (withCompact)
@@ -629,6 +663,7 @@ bool vtkFlowReconstruction::DrawGeometry(vtkMultiBlockDataSet* input, double tma
   }
   cache.HasTopology = false; // of the family drawn before
   cache.Bars.clear();
+  cache.StepsThreshold = std::nan(""); // the profile of the old bars
   cache.GeometryThreshold = tmax;
   return true;
 }
@@ -691,6 +726,7 @@ void vtkFlowReconstruction::ComputeBettiNumbers(double tmax)
   // The Betti numbers of every t_r <= T_max at once: one barcode of the family.
   Cache& cache = *this->Cached;
   cache.Bars.clear();
+  cache.StepsThreshold = std::nan(""); // the profile of the old bars
   cache.TopologyError.clear();
   cache.HasTopology = true;
   cache.TopologyLimit = this->MaximumTopologyCells;

@@ -47,6 +47,8 @@ void CompactCellsToVTK(const CompactComplex& compact, const std::vector<Point3>&
   double* nodeThresholds = threshold->GetPointer(0);
   int* claimed = claims->GetPointer(0);
   vtkIdType c = 0, at = 0;
+  // A sample, an edge and a triangle stand for nodes of index 0, 1 and 2; a
+  // tetrahedron for a maximum or a filled void's wall (read from the node).
   auto add = [&](const Id* v, int n, Id id, unsigned char cellType, int count) {
     offset[c] = at;
     for (int k = 0; k < n; ++k)
@@ -55,7 +57,7 @@ void CompactCellsToVTK(const CompactComplex& compact, const std::vector<Point3>&
     }
     type[c] = cellType;
     node[c] = static_cast<int>(id);
-    nodeIndex[c] = nodes[id].Index;
+    nodeIndex[c] = n < 4 ? n - 1 : nodes[id].Index;
     nodeThresholds[c] = nodeThreshold[id];
     claimed[c] = count;
     ++c;

@@ -160,6 +160,12 @@ void UnderSamplingToVTK(const std::vector<TopologyChange>& changes,
 void TopologyToVTK(const std::vector<Bar>& bars, double t, double limit,
   vtkUnstructuredGrid* grid, vtkTable* table)
 {
+  TopologyToVTK(bars, TopologyProfile(bars, 1, limit), t, limit, grid, table);
+}
+
+void TopologyToVTK(const std::vector<Bar>& bars, const std::vector<TopologyStep>& profile,
+  double t, double limit, vtkUnstructuredGrid* grid, vtkTable* table)
+{
   const std::array<Id, 4> betti = BettiNumbersBelow(bars, t);
   auto field = NamedArray<vtkIdTypeArray>(flowrecon::names::BettiNumbers);
   for (int d = 0; d < 3; ++d)
@@ -172,7 +178,6 @@ void TopologyToVTK(const std::vector<Bar>& bars, double t, double limit,
   auto threshold = NamedArray<vtkDoubleArray>(flowrecon::names::Threshold);
   vtkSmartPointer<vtkIdTypeArray> b[3] = { NamedArray<vtkIdTypeArray>("b0"),
     NamedArray<vtkIdTypeArray>("b1"), NamedArray<vtkIdTypeArray>("b2") };
-  const std::vector<TopologyStep> profile = TopologyProfile(bars, 1, limit);
   for (const TopologyStep& step : profile)
   {
     threshold->InsertNextValue(step.Threshold);

@@ -46,6 +46,10 @@ void UnderSamplingToVTK(const std::vector<TopologyChange>& changes,
 /// the chart's height is that of the Betti numbers around t.
 void TopologyToVTK(const std::vector<Bar>& bars, double t, double limit,
   vtkUnstructuredGrid* grid, vtkTable* table);
+/// The same with TopologyProfile(bars, 1, limit) given (a filter keeps it
+/// for every t_r).
+void TopologyToVTK(const std::vector<Bar>& bars, const std::vector<TopologyStep>& profile,
+  double t, double limit, vtkUnstructuredGrid* grid, vtkTable* table);
 
 /// The thresholds used, in the field data of `grid` (beside BettiNumbers; not
 /// in the topology table's, whose field-data arrays are a chart's series):

@@ -108,33 +108,34 @@ CompactFamily::CompactFamily(const FlowComplex& fc, const std::vector<Id>& carri
   // written cell or selected edge uses each candidate sample. Edges are found
   // from their first vertex (counting sort), as AddEdgesAndSamples does.
   const std::size_t points = static_cast<std::size_t>(fc.NumberOfInputPoints);
-  this->HeldAbove.assign(this->Candidates.size(), HUGE_VAL);
-  std::vector<double> usedAbove(points, HUGE_VAL);
-  std::vector<std::size_t> row(points + 1, 0);
   for (const Id node : this->Candidates)
   {
-    if (nodes[node].Index == 1)
+    const Node& n = nodes[node];
+    if (n.Index <= 1)
     {
-      ++row[nodes[node].Simplex[0] + 1];
+      (n.Index == 1 ? this->Edges : this->Samples)
+        .push_back({ node, { { n.Simplex[0], n.Index == 1 ? n.Simplex[1] : -1 } },
+          this->NodeEntry[node], HUGE_VAL });
     }
+  }
+  std::vector<double> usedAbove(points, HUGE_VAL);
+  std::vector<std::size_t> row(points + 1, 0);
+  for (const Lone& e : this->Edges)
+  {
+    ++row[e.Simplex[0] + 1];
+    usedAbove[e.Simplex[0]] = std::min(usedAbove[e.Simplex[0]], e.Entry);
+    usedAbove[e.Simplex[1]] = std::min(usedAbove[e.Simplex[1]], e.Entry);
   }
   for (std::size_t v = 1; v < row.size(); ++v)
   {
     row[v] += row[v - 1];
   }
-  std::vector<std::pair<std::int32_t, std::size_t>> second(row.back()); // (vertex, candidate)
+  std::vector<std::pair<std::int32_t, std::size_t>> second(row.back()); // (vertex, edge)
   {
     std::vector<std::size_t> next(row.begin(), row.end() - 1);
-    for (std::size_t k = 0; k < this->Candidates.size(); ++k)
+    for (std::size_t k = 0; k < this->Edges.size(); ++k)
     {
-      const Node& n = nodes[this->Candidates[k]];
-      if (n.Index == 1)
-      {
-        second[next[n.Simplex[0]]++] = { n.Simplex[1], k };
-        const double entry = this->NodeEntry[this->Candidates[k]];
-        usedAbove[n.Simplex[0]] = std::min(usedAbove[n.Simplex[0]], entry);
-        usedAbove[n.Simplex[1]] = std::min(usedAbove[n.Simplex[1]], entry);
-      }
+      second[next[this->Edges[k].Simplex[0]]++] = { this->Edges[k].Simplex[1], k };
     }
   }
   const auto touch = [&](const auto& v, int count, double key) {
@@ -147,7 +148,7 @@ CompactFamily::CompactFamily(const FlowComplex& fc, const std::vector<Id>& carri
         {
           if (second[j].first == v[b])
           {
-            double& held = this->HeldAbove[second[j].second];
+            double& held = this->Edges[second[j].second].HeldAbove;
             held = std::min(held, key);
           }
         }
@@ -162,13 +163,9 @@ CompactFamily::CompactFamily(const FlowComplex& fc, const std::vector<Id>& carri
   {
     touch(this->CellVertices[c], 4, this->NodeEntry[cellMaximum[c]]);
   }
-  for (std::size_t k = 0; k < this->Candidates.size(); ++k)
+  for (Lone& s : this->Samples)
   {
-    const Node& n = nodes[this->Candidates[k]];
-    if (n.Index == 0)
-    {
-      this->HeldAbove[k] = usedAbove[n.Simplex[0]];
-    }
+    s.HeldAbove = usedAbove[s.Simplex[0]];
   }
   progress(1.0, "compact pieces");
 }
@@ -176,6 +173,13 @@ CompactFamily::CompactFamily(const FlowComplex& fc, const std::vector<Id>& carri
 CompactFamily::~CompactFamily() = default;
 
 CompactComplex CompactFamily::At(double tr, std::vector<double>& nodeThreshold) const
+{
+  CompactComplex out;
+  this->At(tr, nodeThreshold, out);
+  return out;
+}
+
+void CompactFamily::At(double tr, std::vector<double>& nodeThreshold, CompactComplex& out) const
 {
   const double t = std::min(tr, this->Tmax);
   const std::vector<Node>& nodes = this->FC.Nodes;
@@ -193,7 +197,19 @@ CompactComplex CompactFamily::At(double tr, std::vector<double>& nodeThreshold) 
   {
     nodeThreshold[node] = in(node) ? this->NodeEntry[node] : nodeThreshold[node];
   }
-  CompactComplex out;
+  // Emptied, not freed.
+  for (auto* v : { &out.Vertices, &out.VertexNode, &out.EdgeNode, &out.TriangleNode,
+         &out.TetrahedronNode })
+  {
+    v->clear();
+  }
+  out.Edges.clear();
+  out.Triangles.clear();
+  out.TriangleClaims.clear();
+  out.Tetrahedra.clear();
+  out.SharedTriangles = out.RevisitedTriangles = out.FilledVoids = out.Voids = 0;
+  out.Betti = { { 0, 0, 0, 0 } };
+  out.ExactFallbacks = 0;
   for (const auto& f : this->Pieces.ExactFallbacks)
   {
     out.ExactFallbacks += in(f.first) ? f.second : 0;
@@ -218,7 +234,8 @@ CompactComplex CompactFamily::At(double tr, std::vector<double>& nodeThreshold) 
   out.TriangleClaims.reserve(triangles);
   out.Tetrahedra.reserve(tetrahedra);
   out.TetrahedronNode.reserve(tetrahedra);
-  std::vector<std::size_t> written; // the group of each triangle
+  std::vector<std::size_t>& written = this->Written; // the group of each triangle
+  written.clear();
   written.reserve(triangles);
   for (std::size_t g = 0; g < groups; ++g)
   {
@@ -383,30 +400,25 @@ CompactComplex CompactFamily::At(double tr, std::vector<double>& nodeThreshold) 
   }
   std::sort(filledEdges.begin(), filledEdges.end());
   std::sort(filledPoints.begin(), filledPoints.end());
-  for (std::size_t k = 0; k < this->Candidates.size(); ++k)
+  for (const Lone& e : this->Edges)
   {
-    const Id node = this->Candidates[k];
-    if (!in(node))
-    {
-      continue;
-    }
-    const Node& n = nodes[node];
-    const bool held = this->HeldAbove[k] < t;
-    if (n.Index == 1 && !held &&
+    if (e.Entry < t && !(e.HeldAbove < t) &&
       !std::binary_search(filledEdges.begin(), filledEdges.end(),
-        std::make_pair(n.Simplex[0], n.Simplex[1])))
+        std::make_pair(e.Simplex[0], e.Simplex[1])))
     {
-      out.Edges.push_back({ { n.Simplex[0], n.Simplex[1] } });
-      out.EdgeNode.push_back(node);
-    }
-    else if (n.Index == 0 && !held &&
-      !std::binary_search(filledPoints.begin(), filledPoints.end(), n.Simplex[0]))
-    {
-      out.Vertices.push_back(n.Simplex[0]);
-      out.VertexNode.push_back(node);
+      out.Edges.push_back({ { e.Simplex[0], e.Simplex[1] } });
+      out.EdgeNode.push_back(e.Node);
     }
   }
-  return out;
+  for (const Lone& s : this->Samples)
+  {
+    if (s.Entry < t && !(s.HeldAbove < t) &&
+      !std::binary_search(filledPoints.begin(), filledPoints.end(), s.Simplex[0]))
+    {
+      out.Vertices.push_back(s.Simplex[0]);
+      out.VertexNode.push_back(s.Node);
+    }
+  }
 }
 
 } // namespace flowrecon

@@ -48,6 +48,9 @@ public:
   /// NaN for the nodes outside. Its Voids and Betti are left zero: the Betti
   /// numbers are the reconstruction's, which a caller showing it has anyway.
   CompactComplex At(double tr, std::vector<double>& nodeThreshold) const;
+  /// The same into `out`, whose memory is reused: a caller that shows one t_r
+  /// after another keeps it (new memory is faulted in page by page).
+  void At(double tr, std::vector<double>& nodeThreshold, CompactComplex& out) const;
 
 private:
   const FlowComplex& FC;
@@ -56,17 +59,27 @@ private:
   std::vector<std::array<std::int32_t, 4>> CellVertices; ///< input ids, sorted
   /// Per node, the threshold above which it is in (HUGE_VAL: never below T_max).
   std::vector<double> NodeEntry;
-  /// The nodes in at T_max, sorted; and per such node the threshold above
-  /// which a triangle or solid cell holds it (edges) or any written cell
-  /// uses it (samples), HUGE_VAL otherwise.
+  /// The nodes in at T_max, sorted.
   std::vector<Id> Candidates;
-  std::vector<double> HeldAbove;
+  /// The candidate edges and samples (by node id), with the threshold above
+  /// which a triangle or solid cell holds the edge, or any written cell or
+  /// selected edge uses the sample.
+  struct Lone
+  {
+    Id Node;
+    std::array<std::int32_t, 2> Simplex; ///< input ids (one for a sample)
+    double Entry, HeldAbove;
+  };
+  std::vector<Lone> Edges, Samples;
   /// The claims of one triangle: Pieces.Claims[GroupStart[g], GroupStart[g+1]),
   /// written above GroupEntry[g].
   std::vector<std::size_t> GroupStart;
   std::vector<double> GroupEntry;
   std::vector<std::int32_t> SolidCells; ///< the cells that flow to a candidate maximum
   std::vector<VoidCell> Voids;
+  /// At's list of the written triangles' groups, kept like `out` (At is not
+  /// to be called from two threads at once).
+  mutable std::vector<std::size_t> Written;
 };
 
 } // namespace flowrecon
