@@ -261,13 +261,7 @@ std::string TopologyLine(vtkUnstructuredGrid* grid, vtkTable* topology,
   }
   if (around.Length() == 0)
   {
-    for (const StableWindow& w : StableWindows(rows, 1, limit))
-    {
-      if (w.From < t && t <= w.To)
-      {
-        around = w;
-      }
-    }
+    around = StableWindowAt(rows, 1, limit, t);
   }
   if (around.Length() > 0)
   {

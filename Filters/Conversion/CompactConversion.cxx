@@ -12,23 +12,80 @@
 #include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkPoints.h"
+#include "vtkSmartPointer.h"
+#include "vtkTypeInt32Array.h"
+#include "vtkTypeInt64Array.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
+#include <algorithm>
+#include <cstdint>
+
 namespace flowrecon
 {
+
+namespace
+{
+
+/// The cells' offsets and point ids in `Ids` (32-bit ids when they fit:
+/// half the memory that a t_r change writes and faults in).
+template <class Ids>
+vtkSmartPointer<vtkCellArray> CellArray(const CompactComplex& compact)
+{
+  const vtkIdType cells = static_cast<vtkIdType>(compact.NumberOfCells());
+  vtkNew<Ids> offsets, connectivity;
+  offsets->SetNumberOfValues(cells + 1);
+  connectivity->SetNumberOfValues(static_cast<vtkIdType>(compact.Vertices.size() +
+    2 * compact.Edges.size() + 3 * compact.Triangles.size() + 4 * compact.Tetrahedra.size()));
+  auto* offset = offsets->GetPointer(0);
+  auto* point = connectivity->GetPointer(0);
+  using Value = typename Ids::ValueType;
+  vtkIdType c = 0, at = 0;
+  const auto add = [&](const Id* v, int n) {
+    offset[c++] = static_cast<Value>(at);
+    for (int k = 0; k < n; ++k)
+    {
+      point[at++] = static_cast<Value>(v[k]);
+    }
+  };
+  for (const Id& v : compact.Vertices)
+  {
+    add(&v, 1);
+  }
+  for (const auto& e : compact.Edges)
+  {
+    add(e.data(), 2);
+  }
+  for (const auto& t : compact.Triangles)
+  {
+    add(t.data(), 3);
+  }
+  for (const auto& t : compact.Tetrahedra)
+  {
+    add(t.data(), 4);
+  }
+  offset[c] = static_cast<Value>(at);
+  auto cellArray = vtkSmartPointer<vtkCellArray>::New();
+  cellArray->SetData(offsets, connectivity);
+  return cellArray;
+}
+
+} // namespace
 
 void CompactCellsToVTK(const CompactComplex& compact, const std::vector<Point3>& samples,
   const std::vector<Node>& nodes, const std::vector<double>& nodeThreshold,
   vtkUnstructuredGrid* grid, vtkPoints* points)
 {
   const vtkIdType cells = static_cast<vtkIdType>(compact.NumberOfCells());
+  const vtkIdType corners = static_cast<vtkIdType>(compact.Vertices.size() +
+    2 * compact.Edges.size() + 3 * compact.Triangles.size() + 4 * compact.Tetrahedra.size());
+  const vtkIdType pointCount = points ? points->GetNumberOfPoints() : static_cast<vtkIdType>(samples.size());
   // Filled through raw pointers: a t_r change in ParaView writes millions of
   // cells, and InsertNextCell and SetValue per cell took most of that.
-  vtkNew<vtkIdTypeArray> offsets, connectivity;
-  offsets->SetNumberOfValues(cells + 1);
-  connectivity->SetNumberOfValues(static_cast<vtkIdType>(compact.Vertices.size() +
-    2 * compact.Edges.size() + 3 * compact.Triangles.size() + 4 * compact.Tetrahedra.size()));
+  const vtkSmartPointer<vtkCellArray> cellArray =
+    std::max(corners, pointCount) < static_cast<vtkIdType>(INT32_MAX)
+    ? CellArray<vtkTypeInt32Array>(compact)
+    : CellArray<vtkTypeInt64Array>(compact);
   vtkNew<vtkUnsignedCharArray> types;
   types->SetNumberOfValues(cells);
   auto nodeId = NamedArray<vtkIntArray>(names::NodeId);
@@ -39,22 +96,15 @@ void CompactCellsToVTK(const CompactComplex& compact, const std::vector<Point3>&
   {
     a->SetNumberOfTuples(cells);
   }
-  vtkIdType* offset = offsets->GetPointer(0);
-  vtkIdType* point = connectivity->GetPointer(0);
   unsigned char* type = types->GetPointer(0);
   int* node = nodeId->GetPointer(0);
   int* nodeIndex = index->GetPointer(0);
   double* nodeThresholds = threshold->GetPointer(0);
   int* claimed = claims->GetPointer(0);
-  vtkIdType c = 0, at = 0;
+  vtkIdType c = 0;
   // A sample, an edge and a triangle stand for nodes of index 0, 1 and 2; a
   // tetrahedron for a maximum or a filled void's wall (read from the node).
-  auto add = [&](const Id* v, int n, Id id, unsigned char cellType, int count) {
-    offset[c] = at;
-    for (int k = 0; k < n; ++k)
-    {
-      point[at++] = static_cast<vtkIdType>(v[k]);
-    }
+  const auto add = [&](int n, Id id, unsigned char cellType, int count) {
     type[c] = cellType;
     node[c] = static_cast<int>(id);
     nodeIndex[c] = n < 4 ? n - 1 : nodes[id].Index;
@@ -62,26 +112,22 @@ void CompactCellsToVTK(const CompactComplex& compact, const std::vector<Point3>&
     claimed[c] = count;
     ++c;
   };
-  for (std::size_t k = 0; k < compact.Vertices.size(); ++k)
+  for (const Id id : compact.VertexNode)
   {
-    add(&compact.Vertices[k], 1, compact.VertexNode[k], VTK_VERTEX, 1);
+    add(1, id, VTK_VERTEX, 1);
   }
-  for (std::size_t k = 0; k < compact.Edges.size(); ++k)
+  for (const Id id : compact.EdgeNode)
   {
-    add(compact.Edges[k].data(), 2, compact.EdgeNode[k], VTK_LINE, 1);
+    add(2, id, VTK_LINE, 1);
   }
   for (std::size_t k = 0; k < compact.Triangles.size(); ++k)
   {
-    add(compact.Triangles[k].data(), 3, compact.TriangleNode[k], VTK_TRIANGLE,
-      compact.TriangleClaims[k]);
+    add(3, compact.TriangleNode[k], VTK_TRIANGLE, compact.TriangleClaims[k]);
   }
-  for (std::size_t k = 0; k < compact.Tetrahedra.size(); ++k)
+  for (const Id id : compact.TetrahedronNode)
   {
-    add(compact.Tetrahedra[k].data(), 4, compact.TetrahedronNode[k], VTK_TETRA, 1);
+    add(4, id, VTK_TETRA, 1);
   }
-  offset[c] = at;
-  vtkNew<vtkCellArray> cellArray;
-  cellArray->SetData(offsets, connectivity);
   vtkNew<vtkFieldData> kept;
   kept->ShallowCopy(grid->GetFieldData());
   grid->Initialize();

@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 using namespace flowrecon;
@@ -84,6 +85,49 @@ int main()
     CHECK(w[0].From == 1.5 && w[0].To == 3.0 && w[0].Betti[0] == 1 && w[0].Betti[1] == 0);
     CHECK(w[1].From == 3.0 && w[1].To == 6.0 && w[1].Betti[1] == 1);
     CHECK_NEAR(w[1].Length(), std::log(2.0), 1e-15);
+  }
+  // The window around t equals the one StableWindows lists: random profiles
+  // with repeated rows, at the rows' thresholds, between them and outside.
+  {
+    std::uint64_t state = 7;
+    const auto next = [&]() {
+      state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+      return static_cast<int>(state >> 60);
+    };
+    int compared = 0, found = 0;
+    for (int trial = 0; trial < 300; ++trial)
+    {
+      std::vector<TopologyStep> p;
+      double at = 0.8 + 0.1 * next();
+      for (int k = 0, n = 1 + next(); k < n; ++k)
+      {
+        TopologyStep s;
+        s.Threshold = at;
+        s.Betti = { { 1, next() % 3, next() % 2, 0 } };
+        p.push_back(s);
+        at += 0.05 * (1 + next());
+      }
+      const double lo = 1 + 0.1 * (next() % 4), hi = lo + 0.2 * (1 + next());
+      std::vector<double> ts{ lo, hi, 0.5, hi + 1 };
+      for (const TopologyStep& s : p)
+      {
+        ts.push_back(s.Threshold);
+        ts.push_back(s.Threshold + 0.01);
+      }
+      for (const double t : ts)
+      {
+        StableWindow listed;
+        for (const StableWindow& w : StableWindows(p, lo, hi))
+        {
+          listed = w.From < t && t <= w.To ? w : listed;
+        }
+        const StableWindow w = StableWindowAt(p, lo, hi, t);
+        ++compared;
+        found += w.Length() > 0 ? 1 : 0;
+        CHECK(w.From == listed.From && w.To == listed.To && w.Betti == listed.Betti);
+      }
+    }
+    CHECK(compared > 1000 && found > compared / 4);
   }
   // The sphere: its last window, t_r 10 % above 2.1.
   {

@@ -47,6 +47,38 @@ std::vector<StableWindow> StableWindows(const std::vector<TopologyStep>& profile
   return clipped;
 }
 
+StableWindow StableWindowAt(const std::vector<TopologyStep>& profile, double lo, double hi, double t)
+{
+  // Row k holds for (Threshold_k, Threshold_k+1]: the last row below t.
+  const auto above = std::lower_bound(profile.begin(), profile.end(), t,
+    [](const TopologyStep& s, double x) { return s.Threshold < x; });
+  StableWindow w;
+  if (above == profile.begin())
+  {
+    return w;
+  }
+  std::size_t first = static_cast<std::size_t>(above - profile.begin()) - 1, last = first;
+  const auto betti = [&](std::size_t k) {
+    return std::array<Id, 3>{ { profile[k].Betti[0], profile[k].Betti[1], profile[k].Betti[2] } };
+  };
+  while (first > 0 && betti(first - 1) == betti(first))
+  {
+    --first;
+  }
+  while (last + 1 < profile.size() && betti(last + 1) == betti(last))
+  {
+    ++last;
+  }
+  w.From = std::max(profile[first].Threshold, lo);
+  w.To = std::min(last + 1 < profile.size() ? profile[last + 1].Threshold : hi, hi);
+  w.Betti = betti(first);
+  if (!(w.To > w.From && w.From < t && t <= w.To))
+  {
+    return StableWindow();
+  }
+  return w;
+}
+
 bool ThresholdChoice::CandidatesDisagree() const
 {
   for (const StableWindow& w : this->Best)

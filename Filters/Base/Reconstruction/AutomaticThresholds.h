@@ -38,6 +38,11 @@ struct StableWindow
 /// out.
 std::vector<StableWindow> StableWindows(const std::vector<TopologyStep>& profile, double lo, double hi);
 
+/// The window of StableWindows(profile, lo, hi) with From < t <= To, found
+/// around t's row (a profile of 10^6 steps is read at every t_r change); of
+/// length 0 when none holds t.
+StableWindow StableWindowAt(const std::vector<TopologyStep>& profile, double lo, double hi, double t);
+
 /// The rule's constants (Data/EXPERIMENTS.md).
 struct ThresholdRule
 {
