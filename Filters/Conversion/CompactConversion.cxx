@@ -102,13 +102,14 @@ void CompactCellsToVTK(const CompactComplex& compact, const std::vector<Point3>&
   double* nodeThresholds = threshold->GetPointer(0);
   int* claimed = claims->GetPointer(0);
   vtkIdType c = 0;
+  const bool ordered = compact.TriangleThreshold.size() == compact.Triangles.size();
   // A sample, an edge and a triangle stand for nodes of index 0, 1 and 2; a
   // tetrahedron for a maximum or a filled void's wall (read from the node).
   const auto add = [&](int n, Id id, unsigned char cellType, int count) {
     type[c] = cellType;
     node[c] = static_cast<int>(id);
     nodeIndex[c] = n < 4 ? n - 1 : nodes[id].Index;
-    nodeThresholds[c] = nodeThreshold[id];
+    nodeThresholds[c] = n == 3 && ordered ? 0.0 : nodeThreshold[id];
     claimed[c] = count;
     ++c;
   };
@@ -123,6 +124,7 @@ void CompactCellsToVTK(const CompactComplex& compact, const std::vector<Point3>&
   for (std::size_t k = 0; k < compact.Triangles.size(); ++k)
   {
     add(3, compact.TriangleNode[k], VTK_TRIANGLE, compact.TriangleClaims[k]);
+    nodeThresholds[c - 1] = ordered ? compact.TriangleThreshold[k] : nodeThresholds[c - 1];
   }
   for (const Id id : compact.TetrahedronNode)
   {

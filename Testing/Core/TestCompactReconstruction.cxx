@@ -349,6 +349,12 @@ Id FamilyAgrees(const Built& b, double tmax, std::size_t tries)
     std::vector<double> thresholds;
     CompactComplex kept = family.At(t, thresholds);
     CHECK(kept.Voids == 0);
+    // The thresholds it hands the VTK conversion in the triangles' order.
+    CHECK(kept.TriangleThreshold.size() == kept.Triangles.size());
+    for (std::size_t k = 0; k < kept.Triangles.size(); ++k)
+    {
+      CHECK(kept.TriangleThreshold[k] == thresholds[kept.TriangleNode[k]]);
+    }
     kept.Voids = fresh.Voids;
     kept.Betti = fresh.Betti;
     same += SameComplex(fresh, kept) ? 1 : 0;

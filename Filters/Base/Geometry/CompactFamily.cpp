@@ -84,6 +84,16 @@ CompactFamily::CompactFamily(const FlowComplex& fc, const std::vector<Id>& carri
   }
   this->GroupStart.push_back(claims.size());
   const std::vector<std::int32_t>& cellMaximum = this->Pieces.CellMaximum;
+  const auto solidAbove = [&](std::int32_t c) {
+    return c < 0 || cellMaximum.empty() || cellMaximum[c] < 0 ? HUGE_VAL
+                                                              : this->NodeEntry[cellMaximum[c]];
+  };
+  this->GroupCover.resize(this->GroupEntry.size());
+  for (std::size_t g = 0; g < this->GroupEntry.size(); ++g)
+  {
+    const std::array<std::int32_t, 2>& sides = claims[this->GroupStart[g]].Cells;
+    this->GroupCover[g] = std::min(solidAbove(sides[0]), solidAbove(sides[1]));
+  }
   for (std::size_t c = 0; c < cellMaximum.size(); ++c)
   {
     if (cellMaximum[c] >= 0)
@@ -206,6 +216,7 @@ void CompactFamily::At(double tr, std::vector<double>& nodeThreshold, CompactCom
   out.Edges.clear();
   out.Triangles.clear();
   out.TriangleClaims.clear();
+  out.TriangleThreshold.clear();
   out.Tetrahedra.clear();
   out.SharedTriangles = out.RevisitedTriangles = out.FilledVoids = out.Voids = 0;
   out.Betti = { { 0, 0, 0, 0 } };
@@ -232,6 +243,7 @@ void CompactFamily::At(double tr, std::vector<double>& nodeThreshold, CompactCom
   out.Triangles.reserve(triangles);
   out.TriangleNode.reserve(triangles);
   out.TriangleClaims.reserve(triangles);
+  out.TriangleThreshold.reserve(triangles);
   out.Tetrahedra.reserve(tetrahedra);
   out.TetrahedronNode.reserve(tetrahedra);
   std::vector<std::size_t>& written = this->Written; // the group of each triangle
@@ -249,6 +261,7 @@ void CompactFamily::At(double tr, std::vector<double>& nodeThreshold, CompactCom
     out.Triangles.push_back(claims[b].Triangle);
     out.TriangleNode.push_back(c.First);
     out.TriangleClaims.push_back(c.Count);
+    out.TriangleThreshold.push_back(e - b == 1 ? this->GroupEntry[g] : this->NodeEntry[c.First]);
     written.push_back(g);
   }
   for (const std::int32_t c : this->SolidCells)
@@ -355,13 +368,14 @@ void CompactFamily::At(double tr, std::vector<double>& nodeThreshold, CompactCom
     for (std::size_t k = 0; k < written.size(); ++k)
     {
       const std::array<std::int32_t, 2>& sides = claims[this->GroupStart[written[k]]].Cells;
-      const bool covered =
-        solid(sides[0]) || solid(sides[1]) || isFilled(sides[0]) || isFilled(sides[1]);
+      const bool covered = this->GroupCover[written[k]] < t ||
+        (!filled.empty() && (isFilled(sides[0]) || isFilled(sides[1])));
       if (!covered)
       {
         out.Triangles[kept] = out.Triangles[k];
         out.TriangleNode[kept] = out.TriangleNode[k];
         out.TriangleClaims[kept] = out.TriangleClaims[k];
+        out.TriangleThreshold[kept] = out.TriangleThreshold[k];
         written[kept] = written[k];
         ++kept;
       }
@@ -370,6 +384,7 @@ void CompactFamily::At(double tr, std::vector<double>& nodeThreshold, CompactCom
     out.Triangles.resize(kept);
     out.TriangleNode.resize(kept);
     out.TriangleClaims.resize(kept);
+    out.TriangleThreshold.resize(kept);
   }
   for (std::size_t k = 0; k < written.size(); ++k)
   {

@@ -75,6 +75,9 @@ private:
   /// written above GroupEntry[g].
   std::vector<std::size_t> GroupStart;
   std::vector<double> GroupEntry;
+  /// Per group, the threshold above which a cell on either side of its
+  /// triangle is solid (the triangle is then left out).
+  std::vector<double> GroupCover;
   std::vector<std::int32_t> SolidCells; ///< the cells that flow to a candidate maximum
   std::vector<VoidCell> Voids;
   /// At's list of the written triangles' groups, kept like `out` (At is not
