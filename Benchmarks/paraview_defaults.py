@@ -1,10 +1,11 @@
 """pvbatch benchmark: the three FlowRecon filters at their defaults on a cloud
-(t_p and t_r chosen from the data), as a ParaView user runs them, then a t_r
-set by hand below T_max (Automatic Reconstruction Threshold off, t_r 3).
+(t_p and t_r chosen from the data), as a ParaView user runs them, then t_r
+set by hand below T_max (Automatic Reconstruction Threshold off; t_r 3, or each
+T_R given in turn).
 
-  /usr/bin/time -v pvbatch Benchmarks/paraview_defaults.py PLUGIN CLOUD.xyz
+  /usr/bin/time -v pvbatch Benchmarks/paraview_defaults.py PLUGIN CLOUD.xyz [T_R ...]
 
-Prints the seconds of the first update of each filter, of the t_r change,
+Prints the seconds of the first update of each filter, of each t_r change,
 the process's resident and peak memory after each (so the stage that sets the
 peak is named), and the number of cells shown; the whole process's peak is
 /usr/bin/time's.
@@ -58,14 +59,16 @@ def values(name, count):
 tr = values("ReconstructionThreshold", 1)
 tp = values("PersistenceThreshold", 1)
 betti = values("BettiNumbers", 3)
-t0 = time.time()
 recon.AutomaticReconstructionThreshold = 0
-recon.ReconstructionThreshold = 3.0
-recon.UpdatePipeline()
-done("t_r -> 3", t0)
+typed = [float(a) for a in sys.argv[3:]] or [3.0]
+for value in typed:
+    t0 = time.time()
+    recon.ReconstructionThreshold = value
+    recon.UpdatePipeline()
+    done("t_r -> %g" % value, t0)
 cells3 = recon.GetDataInformation().GetNumberOfCells()
 for stage in stages:
     print("%s: %.2f s, resident %.2f GB, peak so far %.2f GB" % stage)
-print("automatic: t_r %s, t_p %s, Betti numbers %s, %d cells; at t_r 3: %d cells"
+print("automatic: t_r %s, t_p %s, Betti numbers %s, %d cells; at t_r %g: %d cells"
       % ("%.3f" % tr[0] if tr else "none", "%g" % tp[0] if tp else "none",
-         " ".join("%d" % b for b in betti) if betti else "none", cells, cells3))
+         " ".join("%d" % b for b in betti) if betti else "none", cells, typed[-1], cells3))
