@@ -117,7 +117,9 @@ CompactFamily::CompactFamily(const FlowComplex& fc, const std::vector<Id>& carri
   // When a triangle or a solid cell holds each candidate edge, and when any
   // written cell or selected edge uses each candidate sample. Edges are found
   // from their first vertex (counting sort), as AddEdgesAndSamples does.
-  const std::size_t points = static_cast<std::size_t>(fc.NumberOfInputPoints);
+  // Every input id read below is under `points` (a stored complex is trusted
+  // no further than its largest id).
+  std::size_t points = static_cast<std::size_t>(std::max<Id>(fc.NumberOfInputPoints, 0));
   for (const Id node : this->Candidates)
   {
     const Node& n = nodes[node];
@@ -126,7 +128,16 @@ CompactFamily::CompactFamily(const FlowComplex& fc, const std::vector<Id>& carri
       (n.Index == 1 ? this->Edges : this->Samples)
         .push_back({ node, { { n.Simplex[0], n.Index == 1 ? n.Simplex[1] : -1 } },
           this->NodeEntry[node], HUGE_VAL });
+      points = std::max(points, static_cast<std::size_t>(n.Simplex[n.Index]) + 1);
     }
+  }
+  for (const CompactClaim& c : claims)
+  {
+    points = std::max(points, static_cast<std::size_t>(c.Triangle[2]) + 1);
+  }
+  for (const std::int32_t c : this->SolidCells)
+  {
+    points = std::max(points, static_cast<std::size_t>(this->CellVertices[c][3]) + 1);
   }
   std::vector<double> usedAbove(points, HUGE_VAL);
   std::vector<std::size_t> row(points + 1, 0);
@@ -364,27 +375,15 @@ void CompactFamily::At(double tr, std::vector<double>& nodeThreshold, CompactCom
   // Triangles that are facets of a written tetrahedron are left out.
   if (!out.Tetrahedra.empty())
   {
-    std::size_t kept = 0;
+    std::vector<char>& drop = this->Drop;
+    drop.assign(written.size(), 0);
     for (std::size_t k = 0; k < written.size(); ++k)
     {
       const std::array<std::int32_t, 2>& sides = claims[this->GroupStart[written[k]]].Cells;
-      const bool covered = this->GroupCover[written[k]] < t ||
+      drop[k] = this->GroupCover[written[k]] < t ||
         (!filled.empty() && (isFilled(sides[0]) || isFilled(sides[1])));
-      if (!covered)
-      {
-        out.Triangles[kept] = out.Triangles[k];
-        out.TriangleNode[kept] = out.TriangleNode[k];
-        out.TriangleClaims[kept] = out.TriangleClaims[k];
-        out.TriangleThreshold[kept] = out.TriangleThreshold[k];
-        written[kept] = written[k];
-        ++kept;
-      }
     }
-    written.resize(kept);
-    out.Triangles.resize(kept);
-    out.TriangleNode.resize(kept);
-    out.TriangleClaims.resize(kept);
-    out.TriangleThreshold.resize(kept);
+    out.DropTriangles(drop, written);
   }
   for (std::size_t k = 0; k < written.size(); ++k)
   {

@@ -83,6 +83,7 @@ private:
   /// At's list of the written triangles' groups, kept like `out` (At is not
   /// to be called from two threads at once).
   mutable std::vector<std::size_t> Written;
+  mutable std::vector<char> Drop;
 };
 
 } // namespace flowrecon

@@ -577,25 +577,14 @@ void DropCoveredTriangles(Id cellCount, const std::vector<std::int32_t>& cellNod
   {
     solid[c] = 1;
   }
-  std::size_t kept = 0;
+  std::vector<char> covered(out.Triangles.size(), 0);
   for (std::size_t k = 0; k < out.Triangles.size(); ++k)
   {
     const Claim& claim = *written[k];
-    const bool covered = (claim.Cells[0] >= 0 && solid[claim.Cells[0]]) ||
+    covered[k] = (claim.Cells[0] >= 0 && solid[claim.Cells[0]]) ||
       (claim.Cells[1] >= 0 && solid[claim.Cells[1]]);
-    if (!covered)
-    {
-      out.Triangles[kept] = out.Triangles[k];
-      out.TriangleNode[kept] = out.TriangleNode[k];
-      out.TriangleClaims[kept] = out.TriangleClaims[k];
-      written[kept] = written[k];
-      ++kept;
-    }
   }
-  written.resize(kept);
-  out.Triangles.resize(kept);
-  out.TriangleNode.resize(kept);
-  out.TriangleClaims.resize(kept);
+  out.DropTriangles(covered, written);
 }
 
 /// Index-1 and index-0 nodes whose edge or sample no triangle or tetrahedron

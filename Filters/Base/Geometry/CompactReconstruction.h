@@ -62,6 +62,36 @@ struct CompactComplex
   /// Walks redone in exact arithmetic.
   Id ExactFallbacks = 0;
 
+  /// Removes the triangles flagged in `drop`, keeping the order, with their
+  /// node, claims and threshold; `alongside` (one entry a triangle) alike.
+  template <class T>
+  void DropTriangles(const std::vector<char>& drop, std::vector<T>& alongside)
+  {
+    const bool thresholds = this->TriangleThreshold.size() == this->Triangles.size();
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < this->Triangles.size(); ++k)
+    {
+      if (drop[k])
+      {
+        continue;
+      }
+      this->Triangles[kept] = this->Triangles[k];
+      this->TriangleNode[kept] = this->TriangleNode[k];
+      this->TriangleClaims[kept] = this->TriangleClaims[k];
+      if (thresholds)
+      {
+        this->TriangleThreshold[kept] = this->TriangleThreshold[k];
+      }
+      alongside[kept] = alongside[k];
+      ++kept;
+    }
+    this->Triangles.resize(kept);
+    this->TriangleNode.resize(kept);
+    this->TriangleClaims.resize(kept);
+    this->TriangleThreshold.resize(thresholds ? kept : 0);
+    alongside.resize(kept);
+  }
+
   Id NumberOfCells() const
   {
     return static_cast<Id>(this->Vertices.size() + this->Edges.size() + this->Triangles.size() +
