@@ -43,6 +43,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <exception>
 #include <string>
 #include <utility>
 
@@ -530,7 +531,19 @@ void vtkFlowReconstruction::FillOutputs(vtkMultiBlockDataSet* input, double tmax
   const bool measure = choice && c.Compact && choice->NeedsDepth();
   if (withCompact || measure)
   {
-    c.Compact->At(t, thresholds, compact);
+    try
+    {
+      c.Compact->At(t, thresholds, compact);
+    }
+    catch (const std::exception& e)
+    {
+      // Not expected (the family agrees with the selection of one t_r at every
+      // tested threshold), but an error message beats an exception through
+      // the pipeline: the cells are left out, the rest is shown.
+      vtkErrorMacro(<< "compact cells at t_r " << t << ": " << e.what());
+      compact = flowrecon::CompactComplex();
+      thresholds.assign(fc.Nodes.size(), std::nan(""));
+    }
   }
   flowrecon::ThresholdChoice measured;
   if (measure)
