@@ -360,15 +360,14 @@ Id FamilyAgrees(const Built& b, double tmax, std::size_t tries)
     same += SameComplex(fresh, kept) ? 1 : 0;
     filled += kept.FilledVoids;
     std::set<Id> asked(selected.begin(), selected.end());
-    Id shown = 0;
+    // Exactly the nodes in at t (but the maximum at infinity, which has no
+    // cell), each with its carrier's threshold.
+    CHECK(thresholds.size() == fc.Nodes.size());
     for (std::size_t i = 0; i < thresholds.size(); ++i)
     {
-      shown += std::isnan(thresholds[i]) ? 0 : 1;
-      CHECK(std::isnan(thresholds[i]) ||
-        (asked.count(static_cast<Id>(i)) == 1 && thresholds[i] < t));
+      const bool in = asked.count(static_cast<Id>(i)) == 1 && !fc.Nodes[i].IsInfinity();
+      CHECK(in ? thresholds[i] == run.Nodes[carriers[i]].Threshold : std::isnan(thresholds[i]));
     }
-    CHECK(shown == static_cast<Id>(asked.size() - (asked.count(fc.Nodes.size() - 1) ? 1 : 0)) ||
-      shown == static_cast<Id>(asked.size()));
   }
   std::cout << "   the family: " << same << " of " << ts.size()
             << " thresholds give the complex computed anew; " << filled << " voids filled\n";
