@@ -27,8 +27,11 @@ FLOWRECON, WORK = sys.argv[1], sys.argv[2]
 os.makedirs(WORK, exist_ok=True)
 failures = []
 
-with open("/sys/kernel/mm/transparent_hugepage/enabled") as f:
-    MADVISE = "[madvise]" in f.read()
+try:
+    with open("/sys/kernel/mm/transparent_hugepage/enabled") as f:
+        MADVISE = "[madvise]" in f.read()
+except OSError:  # no transparent huge pages: flowrecon does not restart
+    MADVISE = False
 
 
 def huge_share_while_running(args, tunables):
