@@ -137,6 +137,33 @@ void CompactFromStored(vtkMultiBlockDataSet* complex, const std::string& input, 
   }
 }
 
+// CheckFilled on a stored complex's reconstruction up to the cap (`grid`: its
+// cells, below t_r those of the reconstruction at `tr`); returns Filled.
+bool CheckFilledOnGrid(vtkUnstructuredGrid* grid, vtkMultiBlockDataSet* complex, double tr,
+  ThresholdChoice& choice)
+{
+  FlowComplex stored;
+  std::string error;
+  if (!grid || choice.Window.Betti[2] != 0 || !FromMultiBlock(complex, stored, error, true) ||
+    !ReadSamples(complex, stored, error))
+  {
+    return false;
+  }
+  std::set<long long> maxima;
+  vtkDataArray* index = grid->GetCellData()->GetArray(names::Index);
+  vtkDataArray* node = grid->GetCellData()->GetArray(names::NodeId);
+  vtkDataArray* threshold = grid->GetCellData()->GetArray(names::Threshold);
+  for (vtkIdType c = 0; index && node && threshold && c < grid->GetNumberOfCells(); ++c)
+  {
+    if (index->GetComponent(c, 0) == 3 && threshold->GetComponent(c, 0) < tr)
+    {
+      maxima.insert(static_cast<long long>(node->GetComponent(c, 0)));
+    }
+  }
+  CheckFilled(choice, stored.Points, static_cast<Id>(maxima.size()));
+  return choice.Filled;
+}
+
 // A stored flow complex, through the filters: one simplification per t_p
 // candidate (none when the file is already simplified), the reconstruction
 // of each up to the cap, and the choice made on their topology profiles.
@@ -203,6 +230,14 @@ Reconstruction FromComplex(const Arguments& args, vtkMultiBlockDataSet* complex,
     if (settings.AutomaticReconstruction)
     {
       tr = r.Choice.ReconstructionThreshold;
+      // As on a cloud: a surface filled in, and then a window with a void.
+      vtkUnstructuredGrid* grid = vtkUnstructuredGrid::SafeDownCast(runs[pick]->GetOutputDataObject(0));
+      if (CheckFilledOnGrid(grid, simplified[pick], tr, r.Choice) &&
+        PreferSurface(r.Choice, profiles, settings.Cap))
+      {
+        pick = r.Choice.Candidate;
+        tr = r.Choice.ReconstructionThreshold;
+      }
     }
   }
   r.Tps = tps;
@@ -241,25 +276,8 @@ Reconstruction FromComplex(const Arguments& args, vtkMultiBlockDataSet* complex,
   }
   std::string error;
   FlowComplex stored;
-  const bool filledCheck = settings.AutomaticReconstruction && r.Choice.Window.Betti[2] == 0;
-  if ((nodes || filledCheck) && FromMultiBlock(simplified[pick], stored, error, true))
+  if (nodes && FromMultiBlock(simplified[pick], stored, error, true))
   {
-    if (filledCheck && ReadSamples(simplified[pick], stored, error))
-    {
-      // The maxima of the written cells below t_r, as on a cloud.
-      std::set<long long> maxima;
-      vtkDataArray* index = r.Grid->GetCellData()->GetArray(names::Index);
-      vtkDataArray* node = r.Grid->GetCellData()->GetArray(names::NodeId);
-      vtkDataArray* threshold = r.Grid->GetCellData()->GetArray(names::Threshold);
-      for (vtkIdType c = 0; index && node && threshold && c < r.Grid->GetNumberOfCells(); ++c)
-      {
-        if (index->GetComponent(c, 0) == 3 && threshold->GetComponent(c, 0) < tr)
-        {
-          maxima.insert(static_cast<long long>(node->GetComponent(c, 0)));
-        }
-      }
-      CheckFilled(r.Choice, stored.Points, static_cast<Id>(maxima.size()));
-    }
     r.Nodes = std::move(stored.Nodes);
   }
   return r;

@@ -39,6 +39,14 @@ struct Candidate
   Id LinesToRegions = 0; ///< ended by the topology at a region of {d > r*} (TopologyInput.h)
   Id Regions = 0;        ///< of {d > r*}
   std::int64_t CellsAbove = 0;
+  /// The Threshold of the carrier of each maximum with cells, sorted: how
+  /// many are in the reconstruction at any t_r once the run is gone (CheckFilled).
+  std::vector<double> MaximumThresholds;
+  Id MaximaBelow(double t) const
+  {
+    return static_cast<Id>(std::lower_bound(this->MaximumThresholds.begin(), this->MaximumThresholds.end(), t) -
+      this->MaximumThresholds.begin());
+  }
 };
 
 /// Keeps only the arcs the output reads after a run, those of index-1 nodes
@@ -61,6 +69,7 @@ Candidate Run(CappedBuild& build, double tp, bool take, const CloudReconstructio
   c.Tp = tp;
   c.R = ReconstructBuilt(build, tp, take, progress);
   c.LinesDeferred = c.R.Lines ? c.R.Lines->LinesDeferred() : 0;
+  c.MaximumThresholds = MaximumThresholds(c.R.Complex.Nodes, c.R.Carriers, c.R.Run);
   // Nothing after the run reads the simplification (carriers and lines hold
   // what they need): it would only add to the topology's peak.
   c.R.Simplification = SimplificationResult();
@@ -97,9 +106,10 @@ Candidate Run(CappedBuild& build, double tp, bool take, const CloudReconstructio
 }
 
 /// t_r and t_p from the profiles (a given t_r: the candidate whose window
-/// around it is the longest).
+/// around it is the longest), and whether the answer is a surface filled in:
+/// then, with t_r chosen, a window with a void is preferred (PreferSurface).
 ThresholdChoice Choose(const std::vector<Candidate>& candidates,
-  const CloudReconstructionSettings& settings)
+  const CloudReconstructionSettings& settings, const std::vector<Point3>& samples)
 {
   std::vector<std::vector<TopologyStep>> profiles;
   for (const Candidate& c : candidates)
@@ -107,9 +117,15 @@ ThresholdChoice Choose(const std::vector<Candidate>& candidates,
     profiles.push_back(c.TopologyError.empty() ? TopologyProfile(c.Bars, 1, settings.Cap)
                                                : std::vector<TopologyStep>());
   }
-  return settings.AutomaticReconstruction
+  ThresholdChoice choice = settings.AutomaticReconstruction
     ? ChooseThresholds(profiles, settings.Cap)
     : ChoosePersistence(profiles, settings.ReconstructionThreshold, settings.Cap);
+  CheckFilled(choice, samples, candidates[choice.Candidate].MaximaBelow(choice.ReconstructionThreshold));
+  if (settings.AutomaticReconstruction)
+  {
+    PreferSurface(choice, profiles, settings.Cap);
+  }
+  return choice;
 }
 
 std::string WorkReport(const CappedReconstruction& r, Id linesDeferred, Id linesFollowed,
@@ -248,7 +264,7 @@ void CloudRun::BuildAndRun(bool defer)
   std::size_t pick = 0;
   if (this->Automatic)
   {
-    this->Result.Choice = Choose(candidates, settings);
+    this->Result.Choice = Choose(candidates, settings, this->Samples);
     this->Result.Automatic = true;
     pick = this->Result.Choice.Candidate;
     this->Tr = this->Result.Choice.ReconstructionThreshold;
@@ -266,11 +282,6 @@ void CloudRun::BuildAndRun(bool defer)
   this->PhaseDone(this->Tps.size() > 1
       ? "simplification, reconstruction queue, Betti numbers (each t_p)"
       : "simplification, reconstruction queue, Betti numbers");
-  if (this->Automatic)
-  {
-    const CappedReconstruction& p = candidates[pick].R;
-    CheckFilled(this->Result.Choice, this->Samples, MaximaBelow(p.Complex.Nodes, p.Carriers, p.Run, this->Tr));
-  }
   this->Chosen = std::move(candidates[pick]);
   candidates.clear();
 }

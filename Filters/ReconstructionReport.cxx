@@ -135,7 +135,11 @@ std::string DescribeChoice(const ThresholdChoice& choice, const std::vector<doub
 std::vector<std::string> ReconstructionChoiceWarnings(const ThresholdChoice& choice)
 {
   std::vector<std::string> lines;
-  if (choice.Unstable())
+  if (choice.Resurfaced)
+  {
+    // Its own line (below) gives the window taken and the one left.
+  }
+  else if (choice.Unstable())
   {
     lines.push_back("no stable topology: the Betti numbers hold over no range of t_r of " +
       Number(100 * (choice.Rule.Stable - 1), 0) + " % or more" +
@@ -154,7 +158,15 @@ std::vector<std::string> ReconstructionChoiceWarnings(const ThresholdChoice& cho
       " classes change at once: a cavity may have been filled together with its walls "
       "(a surface sampled with holes)");
   }
-  if (choice.Filled)
+  if (choice.Resurfaced)
+  {
+    lines.push_back("the samples lie on a surface (local flatness " +
+      Number(choice.Flatness, 2) + "), yet the most stable topology is a solid without a void: "
+      "a closed surface sampled too sparsely or too noisily for its thickness may have been "
+      "filled in; the closed surface " + Betti(choice.Window) + ", which holds only for t_r in " +
+      Window(choice.Window) + ", is taken instead");
+  }
+  else if (choice.Filled)
   {
     lines.push_back("the samples lie on a surface (local flatness " +
       Number(choice.Flatness, 2) + "), yet the reconstruction is solid, without a void (" +
@@ -169,7 +181,9 @@ std::vector<std::string> ReconstructionChoiceWarnings(const ThresholdChoice& cho
       " of its boundary, so a closed surface with noise of about its sample spacing "
       "may have been filled in (a solid sampled through its volume is deeper)");
   }
-  if (choice.Longest.Length() > choice.Window.Length() && choice.Longest.Betti != choice.Window.Betti)
+  // A resurfaced answer has said which solid lasts longer.
+  if (choice.Longest.Length() > choice.Window.Length() && choice.Longest.Betti != choice.Window.Betti &&
+    !(choice.Resurfaced && choice.Longest.Betti == choice.Solid.Betti))
   {
     lines.push_back("the Betti numbers " + Betti(choice.Longest) + " hold longer, for t_r in " +
       Window(choice.Longest) + ": a coarser shape (filled or joined) may be meant");

@@ -72,8 +72,8 @@ struct PersistenceChoice
 
 /// The automatic t_p: the candidate whose reconstructions up to `cap` have
 /// the most stable topology, and what the choice warns about.
-PersistenceChoice ChoosePersistenceThreshold(
-  const flowrecon::FlowComplex& fc, double cap, const flowrecon::Progress& progress)
+PersistenceChoice ChoosePersistenceThreshold(const flowrecon::FlowComplex& fc,
+  const std::vector<flowrecon::Point3>& samples, double cap, const flowrecon::Progress& progress)
 {
   PersistenceChoice c;
   const std::unique_ptr<flowrecon::Retriangulation> re =
@@ -95,7 +95,14 @@ PersistenceChoice ChoosePersistenceThreshold(
     }
     profiles.push_back(t.Profile);
   }
-  const flowrecon::ThresholdChoice choice = flowrecon::ChooseThresholds(profiles, cap);
+  flowrecon::ThresholdChoice choice = flowrecon::ChooseThresholds(profiles, cap);
+  // As on a cloud: a surface filled in, and then a window with a void
+  // (samples: empty when the input lacks them, which leaves the choice).
+  const std::vector<double>& maxima = topologies[choice.Candidate].MaximumThresholds;
+  flowrecon::CheckFilled(choice, samples,
+    static_cast<flowrecon::Id>(std::lower_bound(maxima.begin(), maxima.end(), choice.ReconstructionThreshold) -
+      maxima.begin()));
+  flowrecon::PreferSurface(choice, profiles, cap);
   c.Chosen = c.Candidates[choice.Candidate];
   flowrecon::StoredTopology& chosen = topologies[choice.Candidate];
   c.HasBars = chosen.Error.empty();
@@ -191,7 +198,8 @@ int vtkFlowComplexSimplification::RequestData(
   const bool automatic = this->AutomaticPersistenceThreshold;
   // The topology of a given t_p needs one more queue (the choice has it).
   const bool topology = automatic || this->ComputeTopology;
-  if (topology && deferred && !flowrecon::ReadSamples(input, fc, error))
+  // The automatic choice reads the samples too (CheckFilled's flatness).
+  if (topology && (deferred || automatic) && !flowrecon::ReadSamples(input, fc, error))
   {
     vtkErrorMacro(<< error);
     return 0;
@@ -220,7 +228,10 @@ int vtkFlowComplexSimplification::RequestData(
       if (automatic)
       {
         this->SetProgressText("choosing t_p");
-        choice = ChoosePersistenceThreshold(fc, this->MaximumThreshold, progress.Range(0, 0.7));
+        const std::size_t n = std::min(fc.Points.size(), static_cast<std::size_t>(fc.NumberOfInputPoints));
+        choice = ChoosePersistenceThreshold(fc,
+          std::vector<flowrecon::Point3>(fc.Points.begin(), fc.Points.begin() + static_cast<std::ptrdiff_t>(n)),
+          this->MaximumThreshold, progress.Range(0, 0.7));
       }
       else if (topology)
       {

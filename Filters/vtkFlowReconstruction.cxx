@@ -449,12 +449,17 @@ bool vtkFlowReconstruction::SelectThreshold(double tmax, Selection& selection)
     }
     if (c.ErrorBelow(tmax).empty() && tmax > choice.Rule.Lowest)
     {
-      choice = flowrecon::ChooseThresholds({ c.StepsBelow(tmax) }, tmax);
+      const std::vector<std::vector<flowrecon::TopologyStep>> profiles{ c.StepsBelow(tmax) };
+      choice = flowrecon::ChooseThresholds(profiles, tmax);
       t = choice.ReconstructionThreshold;
       selection.Chosen = true;
       flowrecon::CheckFilled(choice,
         std::vector<flowrecon::Point3>(fc.Points.begin(), fc.Points.begin() + fc.NumberOfInputPoints),
         flowrecon::MaximaBelow(fc.Nodes, c.Carrier, c.Run, t));
+      if (flowrecon::PreferSurface(choice, profiles, tmax))
+      {
+        t = choice.ReconstructionThreshold;
+      }
     }
     else
     {

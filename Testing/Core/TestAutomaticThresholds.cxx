@@ -4,7 +4,8 @@
 // warnings, and the choice of t_p for a given t_r. The local flatness of
 // clouds of known dimension, and the filled-surface check built on it. The
 // depth of a solid in edges on lattices whose answer is known, and the
-// shallow-solid check built on it.
+// shallow-solid check built on it. The preference for a surface when a
+// solid answer is filled in.
 #include "AutomaticThresholds.h"
 #include "Check.h"
 #include "Clouds.h"
@@ -225,6 +226,47 @@ int main()
     CHECK(c.Flatness <= flatSphere / FlatnessScales()[1].Volume);
     CheckFilled(c, cube, 1000);       // a volume sample's solid is no surface filled
     CHECK(!c.Filled);
+  }
+  // Preferring a surface: a surface sample whose stable answer is a solid
+  // torus (1 1 0) over (1.8, 5] takes the torus (1 2 1) that closes briefly
+  // before it, on whichever candidate has it; unstable windows only when no
+  // stable one has a void; the most voids first; nothing without Filled or
+  // without a void anywhere.
+  {
+    const std::vector<Point3> sphere = clouds::Sphere(3000, 3);
+    const auto solid = Profile({ { 1.0, { 4, 9, 0 } }, { 1.75, { 1, 2, 1 } }, { 1.8, { 1, 1, 0 } } });
+    const auto solidOnly = Profile({ { 1.0, { 4, 9, 0 } }, { 1.8, { 1, 1, 0 } } });
+    ThresholdChoice c = ChooseThresholds({ solidOnly, solid }, 5);
+    CHECK(c.Window.Betti == (std::array<Id, 3>{ { 1, 1, 0 } }));
+    CHECK(!PreferSurface(c, { solidOnly, solid }, 5)); // not Filled: kept
+    CheckFilled(c, sphere, 1000);
+    CHECK(c.Filled);
+    CHECK(PreferSurface(c, { solidOnly, solid }, 5));
+    CHECK(c.Resurfaced && c.Candidate == 1 && c.Window.Betti == (std::array<Id, 3>{ { 1, 2, 1 } }));
+    CHECK(c.Window.From == 1.75 && c.Window.To == 1.8 && c.Solid.From == 1.8 && c.Solid.To == 5);
+    CHECK(c.ReconstructionThreshold > 1.75 && c.ReconstructionThreshold <= 1.8);
+    CHECK(!c.NeedsDepth());
+    CHECK(!PreferSurface(c, { solidOnly, solid }, 5)); // once
+    // No window with a void: kept, still Filled.
+    ThresholdChoice d = ChooseThresholds({ solidOnly }, 5);
+    CheckFilled(d, sphere, 1000);
+    CHECK(d.Filled && !PreferSurface(d, { solidOnly }, 5) && !d.Resurfaced &&
+      d.Window.Betti == (std::array<Id, 3>{ { 1, 1, 0 } }));
+    // A stable window with a void beats a shorter unstable one with more
+    // (ChooseThresholds would not leave it: a choice made by hand).
+    const auto two = Profile({ { 1.0, { 4, 9, 0 } }, { 1.55, { 1, 0, 2 } }, { 1.56, { 1, 0, 1 } },
+      { 1.9, { 1, 0, 0 } } });
+    ThresholdChoice e;
+    e.Filled = true;
+    e.Window = StableWindows(two, 1.5, 5).back();
+    CHECK(e.Window.Betti == (std::array<Id, 3>{ { 1, 0, 0 } }));
+    CHECK(PreferSurface(e, { two }, 5) && e.Window.Betti == (std::array<Id, 3>{ { 1, 0, 1 } }));
+    // Among unstable windows, the most voids.
+    const auto brief = Profile({ { 1.0, { 4, 9, 0 } }, { 1.6, { 1, 0, 1 } }, { 1.61, { 1, 0, 2 } },
+      { 1.62, { 1, 0, 0 } } });
+    ThresholdChoice f = ChooseThresholds({ brief }, 5);
+    CheckFilled(f, sphere, 1000);
+    CHECK(PreferSurface(f, { brief }, 5) && f.Window.Betti == (std::array<Id, 3>{ { 1, 0, 2 } }));
   }
   // Several scales: the two walls of a thin tube (0.1 apart, 10^4 points, about
   // 0.05 apart on each wall) are flat within 10 samples and look like a volume

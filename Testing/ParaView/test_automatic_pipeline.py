@@ -15,6 +15,9 @@ Flow Reconstruction, every property at its default, in pvpython.
 - On 1000 points of a torus with Gaussian noise of twice their spacing (which
   closes only as a solid, and no more than 2 edges deep), both warn that the
   solid is shallow, with the compact geometry and with the exact one.
+- On 1000 points of a torus with noise of half their spacing, whose most
+  stable topology is a solid while the samples lie on a surface, both take
+  the torus that closes briefly before it, and say so.
 - Turning Automatic t_r off shows the Reconstruction Threshold (2) instead,
   and its Betti numbers are the profile's at 2.
 Usage: pvpython test_automatic_pipeline.py PLUGIN FLOWRECON WORKDIR
@@ -148,6 +151,15 @@ def main():
     expect(values(grid.GetFieldData(), "ThresholdWarnings") == c["warnings"],
            "noisy torus, exact geometry: warnings %s, the command line's %s"
            % (values(grid.GetFieldData(), "ThresholdWarnings"), c["warnings"]))
+    # A noisy torus whose most stable topology is a solid: the surface that
+    # closes briefly before it is taken, the same t_p upstream as on the
+    # command line (the simplification's choice sees the filled solid too).
+    brief = os.path.join(WORK, "torus_pd_noise0.5_n1000.xyz")
+    with open(brief, "w") as f:
+        f.write(gc.to_xyz_text(noisy_surface("torus_pd", 1000, 0.5, zlib.crc32(b"torus_pd_noise0.5_n1000"))))
+    c = check("torus, noise half its spacing", brief, gc.betti("torus_pd"))
+    expect(any("is taken instead" in w for w in c["warnings"]),
+           "torus, noise half its spacing: no warning that the surface was taken in %s" % c["warnings"])
     grid, table = pipeline(torus, automatic=False)
     fd = grid.GetFieldData()
     fixed = tuple(int(v) for v in values(fd, "BettiNumbers"))

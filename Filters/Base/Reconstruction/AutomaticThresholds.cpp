@@ -214,6 +214,50 @@ void CheckFilled(ThresholdChoice& choice, const std::vector<Point3>& samples, Id
   choice.Filled = choice.Flatness < choice.Rule.SurfaceFlatness;
 }
 
+bool PreferSurface(ThresholdChoice& choice, const std::vector<std::vector<TopologyStep>>& profiles, double cap)
+{
+  if (!choice.Filled || choice.Resurfaced)
+  {
+    return false;
+  }
+  const ThresholdRule& rule = choice.Rule;
+  StableWindow best;
+  std::size_t candidate = 0;
+  bool bestStable = false;
+  for (std::size_t c = 0; c < profiles.size(); ++c)
+  {
+    for (const StableWindow& w : StableWindows(profiles[c], rule.Lowest, cap))
+    {
+      if (w.Betti[2] == 0)
+      {
+        continue;
+      }
+      const bool stable = w.To >= w.From * rule.Stable;
+      const bool better = best.Length() == 0 || stable != bestStable
+        ? best.Length() == 0 || stable
+        : w.Betti[2] != best.Betti[2] ? w.Betti[2] > best.Betti[2]
+                                      : w.Length() > best.Length() * rule.Tie + 1e-12;
+      if (better)
+      {
+        best = w;
+        bestStable = stable;
+        candidate = c;
+      }
+    }
+  }
+  if (best.Length() == 0)
+  {
+    return false;
+  }
+  choice.Solid = choice.Window;
+  choice.Resurfaced = true;
+  choice.Candidate = candidate;
+  choice.Window = best;
+  choice.ChangesAtStart = best.From > rule.Lowest ? ChangesAt(profiles[candidate], best.From) : 0;
+  choice.ReconstructionThreshold = std::min(best.From * rule.Margin, std::sqrt(best.From * best.To));
+  return true;
+}
+
 bool ThresholdChoice::NeedsDepth() const
 {
   return this->Window.Length() > 0 && this->Window.Betti[2] == 0 && !this->Filled &&
@@ -231,6 +275,21 @@ void CheckShallow(ThresholdChoice& choice, const std::vector<std::array<Id, 4>>&
   }
   choice.Depth = SolidDepth(tetrahedra, choice.Rule.ShallowDepth);
   choice.Shallow = choice.Depth >= 0 && choice.Depth <= choice.Rule.ShallowDepth;
+}
+
+std::vector<double> MaximumThresholds(
+  const std::vector<Node>& nodes, const std::vector<Id>& carriers, const ReconstructionResult& run)
+{
+  std::vector<double> thresholds;
+  for (std::size_t v = 0; v < nodes.size() && v < carriers.size(); ++v)
+  {
+    if (nodes[v].Index == 3 && !nodes[v].IsInfinity() && carriers[v] >= 0)
+    {
+      thresholds.push_back(run.Nodes[carriers[v]].Threshold);
+    }
+  }
+  std::sort(thresholds.begin(), thresholds.end());
+  return thresholds;
 }
 
 Id MaximaBelow(const std::vector<Node>& nodes, const std::vector<Id>& carriers,

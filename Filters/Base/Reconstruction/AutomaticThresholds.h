@@ -91,6 +91,10 @@ struct ThresholdChoice
   /// A closed surface filled in (CheckFilled): no void in the answer, a
   /// solid reconstruction, and samples that lie on a surface (warned).
   bool Filled = false;
+  /// Filled, and PreferSurface then took a window with a void instead:
+  /// Solid is the window first chosen.
+  bool Resurfaced = false;
+  StableWindow Solid;
   double Flatness = 1;   ///< RelativeFlatness of the samples (1: not measured)
   Id Maxima = 0;         ///< maxima in the reconstruction at t_r
   Id Samples = 0;
@@ -127,12 +131,27 @@ ThresholdChoice ChoosePersistence(
 /// no topology profile tells from a volume sample.
 void CheckFilled(ThresholdChoice& choice, const std::vector<Point3>& samples, Id maxima);
 
+/// After CheckFilled: when the answer is Filled, the window of `profiles`
+/// (those ChooseThresholds chose from, up to `cap`) with the most voids, the
+/// stable ones first, the longest on ties (the earlier candidate within
+/// Rule.Tie), replaces it, and t_r is set in it as ChooseThresholds does.
+/// Samples that lie on a surface and a solid answer disagree; a surface
+/// closes with its void, so a window that has one is that surface, even when
+/// it is shorter than Rule.Stable (Data/EXPERIMENTS.md). Returns whether it
+/// changed the choice (Resurfaced); without such a window it keeps it.
+bool PreferSurface(ThresholdChoice& choice, const std::vector<std::vector<TopologyStep>>& profiles, double cap);
+
 /// After CheckFilled, with the tetrahedra of the compact output at t_r:
 /// measures their depth when NeedsDepth() and sets Shallow when it is at most
 /// Rule.ShallowDepth. At that depth a solid sampled through its volume and a
 /// closed surface whose noise is about its spacing give the same samples, so
 /// the answer is doubtful either way; deeper solids are volume samples.
 void CheckShallow(ThresholdChoice& choice, const std::vector<std::array<Id, 4>>& tetrahedra);
+
+/// The Threshold of the carrier of every maximum with cells in `run`, sorted:
+/// MaximaBelow at any t (the count below t) once the run is gone.
+std::vector<double> MaximumThresholds(
+  const std::vector<Node>& nodes, const std::vector<Id>& carriers, const ReconstructionResult& run);
 
 /// The maxima whose cells are in the reconstruction at t_r = t (their carrier,
 /// CellCarriers, has Threshold < t in `run`).

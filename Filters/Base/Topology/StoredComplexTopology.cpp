@@ -1,5 +1,6 @@
 #include "StoredComplexTopology.h"
 
+#include "AutomaticThresholds.h"
 #include "DeferredPatches.h"
 #include "DeferredReconstruction.h"
 #include "HasseTopology.h"
@@ -56,6 +57,7 @@ StoredTopology TopologyOfStoredComplex(const FlowComplex& fc, double tp, double 
     run = std::move(late.Run);
     carriers = std::move(late.Carriers);
   }
+  t.MaximumThresholds = MaximumThresholds(fc.Nodes, carriers, run);
   try
   {
     t.Bars = BarsOfStoredRun(fc, carriers, run, re, progress.Range(0.7, 1));

@@ -24,6 +24,7 @@ struct StoredTopology
   std::vector<Bar> Bars;             ///< HasseBarcode (node ids), exact below the cap
   std::vector<TopologyStep> Profile; ///< TopologyProfile from 1 up to the cap
   std::string Error;                 ///< why there is no profile ("" when there is)
+  std::vector<double> MaximumThresholds; ///< of the run (AutomaticThresholds.h)
 };
 
 /// The bars of the raw cells that `run` draws (PresenceTimes, HasseBarcode),
