@@ -11,8 +11,9 @@ numbers within (1.5, C], and calls a window stable when To/From >= Q:
   fixed      t_p 1.1, t_r 2 (the old defaults), flagged by a change in [2, 2.2)
   longest    the longest window
   earliest   the stable window that starts first (the finest stable shape)
-  maxb2      the stable window with the most voids, the longest on ties (the rule
-             flowrecon uses, with Q = 1.1)
+  maxb2      the stable window with the most voids, the longest on ties
+  maxb2even  the same, with an even b1 first among windows with voids (a union of
+             closed surfaces), then the longest: the rule flowrecon uses, with Q = 1.1
 and, without a stable window, the longest. A wrong answer counts as flagged when
 flowrecon would warn (AutomaticThresholds.h, ChoiceWarnings): no stable window, a
 window under 30 %, several changes where it starts, a longer window with other
@@ -69,6 +70,9 @@ def pick(ws, rule, q):
         return max(ws, key=length), rule == "longest" or bool(stable)
     if rule == "earliest":
         return min(stable, key=lambda w: (round(w[0], 2), -length(w))), True
+    if rule == "maxb2even":
+        return max(stable, key=lambda w: (w[2][2], w[2][2] == 0 or w[2][1] % 2 == 0,
+                                          round(length(w), 6))), True
     return max(stable, key=lambda w: (w[2][2], round(length(w), 6))), True
 
 
@@ -127,7 +131,7 @@ def main():
     print("| rule | Q | clouds | right | flagged | silent | right where achievable |")
     print("|---|---|---:|---:|---:|---:|---|")
     for rule, qs in (("fixed", (None,)), ("longest", (None,)), ("earliest", (1.1, 1.2)),
-                     ("maxb2", (1.05, 1.1, 1.2))):
+                     ("maxb2", (1.05, 1.1, 1.2)), ("maxb2even", (1.1,))):
         for q in qs:
             c, a, ra, wrong = evaluate(runs, clouds, rule, q or 1.1)
             n = sum(c.values())

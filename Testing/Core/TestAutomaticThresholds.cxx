@@ -227,6 +227,27 @@ int main()
     CheckFilled(c, cube, 1000);       // a volume sample's solid is no surface filled
     CHECK(!c.Filled);
   }
+  // Among stable windows with as many voids, an even b1 (closed surfaces)
+  // beats a longer odd one: a torus whose hole a membrane spans (1 1 1) over
+  // (2.2, 5] is not taken over the torus (1 2 1) over (1.8, 2.2]; without voids
+  // parity does not matter (the longest); with more voids the odd one wins.
+  {
+    const auto membrane = Profile({ { 1.0, { 3, 20, 0 } }, { 1.8, { 1, 2, 1 } }, { 2.2, { 1, 1, 1 } } });
+    ThresholdChoice c = ChooseThresholds({ membrane }, 5);
+    CHECK(c.Window.Betti == (std::array<Id, 3>{ { 1, 2, 1 } }) && c.Window.From == 1.8 && c.Window.To == 2.2);
+    CHECK(c.Longest.Betti == (std::array<Id, 3>{ { 1, 1, 1 } }));
+    // The same windows on two candidates: the even one wins across them too.
+    const auto odd = Profile({ { 1.0, { 3, 20, 0 } }, { 2.0, { 1, 1, 1 } } });
+    const auto even = Profile({ { 1.0, { 3, 20, 0 } }, { 2.0, { 1, 0, 1 } }, { 3.0, { 1, 0, 0 } } });
+    ThresholdChoice d = ChooseThresholds({ odd, even }, 5);
+    CHECK(d.Candidate == 1 && d.Window.Betti == (std::array<Id, 3>{ { 1, 0, 1 } }));
+    const auto curve = Profile({ { 1.0, { 3, 20, 0 } }, { 1.6, { 1, 2, 0 } }, { 2.0, { 1, 1, 0 } } });
+    ThresholdChoice e = ChooseThresholds({ curve }, 5);
+    CHECK(e.Window.Betti == (std::array<Id, 3>{ { 1, 1, 0 } }));
+    const auto two = Profile({ { 1.0, { 3, 20, 0 } }, { 1.8, { 1, 1, 2 } }, { 2.0, { 1, 0, 1 } } });
+    ThresholdChoice f = ChooseThresholds({ two }, 5);
+    CHECK(f.Window.Betti == (std::array<Id, 3>{ { 1, 1, 2 } }));
+  }
   // Preferring a surface: a surface sample whose stable answer is a solid
   // torus (1 1 0) over (1.8, 5] takes the torus (1 2 1) that closes briefly
   // before it, on whichever candidate has it; unstable windows only when no

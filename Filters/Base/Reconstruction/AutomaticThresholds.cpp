@@ -94,7 +94,18 @@ bool ThresholdChoice::CandidatesDisagree() const
 namespace
 {
 
-/// Whether `w` beats `best` (ties within `tie` go to `best`, the earlier).
+/// Whether Betti numbers with voids can be a union of closed surfaces: each
+/// closed orientable surface of genus g adds 2g to b1, so b1 is even. An odd
+/// b1 beside a void is a closed surface with a loop more (a membrane across a
+/// torus's hole, a tunnel of noise).
+bool ClosedSurfaces(const StableWindow& w)
+{
+  return w.Betti[2] == 0 || w.Betti[1] % 2 == 0;
+}
+
+/// Whether `w` beats `best` (ties within `tie` go to `best`, the earlier):
+/// stable first, then the most voids, then (with voids) an even b1, then the
+/// longest.
 bool Better(const StableWindow& w, const StableWindow& best, double stable, double tie)
 {
   const bool a = w.To >= w.From * stable, b = best.To >= best.From * stable;
@@ -105,6 +116,10 @@ bool Better(const StableWindow& w, const StableWindow& best, double stable, doub
   if (a && w.Betti[2] != best.Betti[2])
   {
     return w.Betti[2] > best.Betti[2];
+  }
+  if (a && ClosedSurfaces(w) != ClosedSurfaces(best))
+  {
+    return ClosedSurfaces(w);
   }
   return w.Length() > best.Length() * tie + 1e-12;
 }
@@ -232,11 +247,12 @@ bool PreferSurface(ThresholdChoice& choice, const std::vector<std::vector<Topolo
       {
         continue;
       }
+      // Unstable ones too, ordered as Better orders stable ones.
       const bool stable = w.To >= w.From * rule.Stable;
-      const bool better = best.Length() == 0 || stable != bestStable
-        ? best.Length() == 0 || stable
-        : w.Betti[2] != best.Betti[2] ? w.Betti[2] > best.Betti[2]
-                                      : w.Length() > best.Length() * rule.Tie + 1e-12;
+      const bool better = best.Length() == 0 || stable != bestStable ? best.Length() == 0 || stable
+        : w.Betti[2] != best.Betti[2]                               ? w.Betti[2] > best.Betti[2]
+        : ClosedSurfaces(w) != ClosedSurfaces(best)                 ? ClosedSurfaces(w)
+                                                                    : w.Length() > best.Length() * rule.Tie + 1e-12;
       if (better)
       {
         best = w;
