@@ -198,11 +198,17 @@ int vtkFlowComplexSimplification::RequestData(
   const bool automatic = this->AutomaticPersistenceThreshold;
   // The topology of a given t_p needs one more queue (the choice has it).
   const bool topology = automatic || this->ComputeTopology;
-  // The automatic choice reads the samples too (CheckFilled's flatness).
-  if (topology && (deferred || automatic) && !flowrecon::ReadSamples(input, fc, error))
+  if (topology && deferred && !flowrecon::ReadSamples(input, fc, error))
   {
     vtkErrorMacro(<< error);
     return 0;
+  }
+  if (automatic && !deferred && !flowrecon::ReadSamples(input, fc, error))
+  {
+    // Only CheckFilled's flatness reads them: without, no solid is taken for
+    // a surface filled in (and none is warned of).
+    fc.Points.clear();
+    error.clear();
   }
   if (automatic && deferred && !(this->MaximumThreshold <= fc.DeferralRatio))
   {
