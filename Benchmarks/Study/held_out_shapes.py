@@ -116,30 +116,38 @@ def verdict(betti, warned, truth):
     return "right" if betti == truth else ("flagged" if warned else "silent")
 
 
+def clouds(sizes=SIZES, noises=NOISE):
+    """Yields (shape, points, noise, cloud as an n x 3 array, true Betti numbers),
+    the same for the same arguments (seeded by shape, size and noise)."""
+    for k, (name, make, truth) in enumerate(SHAPES):
+        for n in sizes:
+            clean = make(np.random.default_rng(1000 * k + n % 997), n)
+            spacing = cKDTree(clean).query(clean, k=2)[0][:, 1].mean()
+            for noise in noises:
+                j = NOISE.index(noise)
+                rng = np.random.default_rng(7919 * (k + 1) + 31 * j + n % 991)
+                p = clean + rng.normal(scale=noise * spacing, size=clean.shape) if noise else clean
+                yield name, n, noise, p, truth
+
+
 def main():
     flowrecon, work = sys.argv[1], sys.argv[2]
     os.makedirs(work, exist_ok=True)
     counts = {"auto": {}, "fixed": {}}
     print("| shape | points | noise | truth | automatic | fixed t_p 1.1, t_r 2 | automatic choice |")
     print("|---|---:|---:|---|---|---|---|")
-    for k, (name, make, truth) in enumerate(SHAPES):
-        for n in SIZES:
-            clean = make(np.random.default_rng(1000 * k + n % 997), n)
-            spacing = cKDTree(clean).query(clean, k=2)[0][:, 1].mean()
-            for j, noise in enumerate(NOISE):
-                rng = np.random.default_rng(7919 * (k + 1) + 31 * j + n % 991)
-                p = clean + rng.normal(scale=noise * spacing, size=clean.shape) if noise else clean
-                cloud = os.path.join(work, "%s_%d_%g.xyz" % (name.replace(" ", "_"), n, noise))
-                np.savetxt(cloud, p, fmt="%.9g")
-                auto = run(flowrecon, cloud, [])
-                fixed = run(flowrecon, cloud, ["--tp", "1.1", "--tr", "2"])
-                cells = []
-                for label, (betti, warned, _) in (("auto", auto), ("fixed", fixed)):
-                    v = verdict(betti, warned, truth)
-                    counts[label][v] = counts[label].get(v, 0) + 1
-                    cells.append("%s %s" % (v, " ".join(map(str, betti)) if betti else "none"))
-                print("| %s | %d | %g | %s | %s | %s | %s |" % (name, n, noise, " ".join(map(str, truth)),
-                                                              cells[0], cells[1], auto[2]))
+    for name, n, noise, p, truth in clouds():
+        cloud = os.path.join(work, "%s_%d_%g.xyz" % (name.replace(" ", "_"), n, noise))
+        np.savetxt(cloud, p, fmt="%.9g")
+        auto = run(flowrecon, cloud, [])
+        fixed = run(flowrecon, cloud, ["--tp", "1.1", "--tr", "2"])
+        cells = []
+        for label, (betti, warned, _) in (("auto", auto), ("fixed", fixed)):
+            v = verdict(betti, warned, truth)
+            counts[label][v] = counts[label].get(v, 0) + 1
+            cells.append("%s %s" % (v, " ".join(map(str, betti)) if betti else "none"))
+        print("| %s | %d | %g | %s | %s | %s | %s |" % (name, n, noise, " ".join(map(str, truth)),
+                                                      cells[0], cells[1], auto[2]))
     for label in ("auto", "fixed"):
         c = counts[label]
         print("%s: %d right, %d flagged, %d silent, %d errors" % (

@@ -62,6 +62,10 @@ flowrecon_add_cli_python_test(py.reconstruction.profile_jumps test_profile_jumps
 # generators (surfaces, lattices, a solid, a non-manifold union, a curve).
 flowrecon_add_cli_python_test(py.reconstruction.automatic_thresholds test_automatic_thresholds.py automatic_thresholds)
 
+# And on shapes outside that study (sharp edges, open boundaries, a flat
+# ellipsoid): right when clean, warned when wrong under noise.
+flowrecon_add_cli_python_test(py.reconstruction.held_out_shapes test_held_out_shapes.py held_out_shapes)
+
 # Critical values of perturbed (degenerate) clouds come from the unperturbed
 # points: exact on grids and cospherical sets, equal to GUDHI's exact alpha
 # persistence within 1e-12 relative, lazy reconstruction equal to eager.
