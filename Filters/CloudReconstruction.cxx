@@ -62,8 +62,9 @@ void KeepEdgeArcs(FlowComplex& fc)
 
 /// The run at `tp` from `build` (taken when `take`, else its nodes are given
 /// back); `regions`: shared by the runs of one build (TopologyOfCappedRun).
+/// Without `topology` the bars are not computed (a run made again: it has them).
 Candidate Run(CappedBuild& build, double tp, bool take, const CloudReconstructionSettings& settings,
-  std::unique_ptr<ExteriorRegions>& regions, const Progress& progress)
+  std::unique_ptr<ExteriorRegions>& regions, const Progress& progress, bool topology = true)
 {
   Candidate c;
   c.Tp = tp;
@@ -78,7 +79,7 @@ Candidate Run(CappedBuild& build, double tp, bool take, const CloudReconstructio
   // The queue's freed memory, handed back: the topology's allocations did not
   // reuse it (about 20 MB at 10^6 points).
   ReleaseFreedMemory();
-  if (settings.Topology)
+  if (settings.Topology && topology)
   {
     const auto start = std::chrono::steady_clock::now();
     // Every reconstruction below the cap, from the diagram alone.
@@ -200,8 +201,7 @@ public:
 
 private:
   void BuildAndRun(bool defer);
-  std::vector<Candidate> RunEach(CappedBuild& build, std::unique_ptr<ExteriorRegions>& regions,
-    std::vector<std::unique_ptr<ExteriorRegions>>& seen);
+  std::vector<Candidate> RunEach(CappedBuild& build, std::unique_ptr<ExteriorRegions>& regions);
   /// The share of the progress of run k.
   Progress RunRange(std::size_t k) const
   {
@@ -258,8 +258,7 @@ void CloudRun::BuildAndRun(bool defer)
   build.Complex.Points = std::vector<Point3>();
   build.Complex.Representative = std::vector<Id>();
   std::unique_ptr<ExteriorRegions> regions;
-  std::vector<std::unique_ptr<ExteriorRegions>> seen(this->Tps.size()); // the regions run k started from
-  std::vector<Candidate> candidates = this->RunEach(build, regions, seen);
+  std::vector<Candidate> candidates = this->RunEach(build, regions);
   this->TopologyTimes = ListTopologyTimes(candidates);
   std::size_t pick = 0;
   if (this->Automatic)
@@ -276,8 +275,19 @@ void CloudRun::BuildAndRun(bool defer)
   }
   else if (!one)
   {
+    // The same run again (deterministic), without its topology: the first
+    // one's bars are those it would compute (about 2 s of a 10^6-point
+    // bunny's run).
     candidates.back().R = CappedReconstruction();
-    candidates[pick] = Run(build, this->Tps[pick], true, settings, seen[pick], this->RunRange(pick));
+    Candidate first = std::move(candidates[pick]);
+    candidates[pick] = Run(build, this->Tps[pick], true, settings, regions, this->RunRange(pick), false);
+    Candidate& again = candidates[pick];
+    again.Bars = std::move(first.Bars);
+    again.TopologyError = first.TopologyError;
+    again.TopologySeconds = first.TopologySeconds;
+    again.LinesToRegions = first.LinesToRegions;
+    again.Regions = first.Regions;
+    again.CellsAbove = first.CellsAbove;
   }
   this->PhaseDone(this->Tps.size() > 1
       ? "simplification, reconstruction queue, Betti numbers (each t_p)"
@@ -289,8 +299,7 @@ void CloudRun::BuildAndRun(bool defer)
 /// With several t_p, two runs (insertions, lines, arcs) held together were
 /// most of the peak: a run before the last keeps only its bars and is run
 /// again if chosen, so the build stays whole until the choice.
-std::vector<Candidate> CloudRun::RunEach(CappedBuild& build,
-  std::unique_ptr<ExteriorRegions>& regions, std::vector<std::unique_ptr<ExteriorRegions>>& seen)
+std::vector<Candidate> CloudRun::RunEach(CappedBuild& build, std::unique_ptr<ExteriorRegions>& regions)
 {
   std::vector<Candidate> candidates;
   candidates.reserve(this->Tps.size());
@@ -298,10 +307,6 @@ std::vector<Candidate> CloudRun::RunEach(CappedBuild& build,
   for (std::size_t k = 0; k < this->Tps.size(); ++k)
   {
     const bool last = k + 1 == this->Tps.size();
-    if (!last && regions)
-    {
-      seen[k] = std::make_unique<ExteriorRegions>(*regions);
-    }
     candidates.push_back(Run(build, this->Tps[k], one, this->Settings, regions, this->RunRange(k)));
     if (!last)
     {
