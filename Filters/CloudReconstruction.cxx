@@ -37,6 +37,7 @@ struct Candidate
   double TopologySeconds = 0; ///< following the lines, the raw arcs and the bars
   Id LinesDeferred = 0, LinesFollowed = 0;
   Id LinesToRegions = 0; ///< ended by the topology at a region of {d > r*} (TopologyInput.h)
+  Id LinesToLowerLevels = 0; ///< of those, at a level below r*
   Id Regions = 0;        ///< of {d > r*}
   std::int64_t CellsAbove = 0;
   /// The Threshold of the carrier of each maximum with cells, sorted: how
@@ -85,6 +86,7 @@ Candidate Run(CappedBuild& build, double tp, bool take, const CloudReconstructio
     // Every reconstruction below the cap, from the diagram alone.
     const TopologyInput input = TopologyOfCappedRun(c.R, &regions);
     c.LinesToRegions = input.LinesToRegions;
+    c.LinesToLowerLevels = input.LinesToLowerLevels;
     c.Regions = input.Regions;
     c.CellsAbove = input.CellsAbove;
     try
@@ -138,8 +140,9 @@ std::string WorkReport(const CappedReconstruction& r, Id linesDeferred, Id lines
        << ", walked late: " << r.WalkedLate << ", owners found by replays: " << r.ReplayedOwners
        << "\nflow lines deferred: " << linesDeferred << " of " << 2 * r.Complex.CountByIndex()[2]
        << ", followed late: " << linesFollowed
-       << ", ended above every reconstruction for the topology: " << chosen.LinesToRegions
-       << " (in " << chosen.Regions << " regions of " << chosen.CellsAbove << " Delaunay cells)"
+       << ", ended in regions of the complement for the topology: " << chosen.LinesToRegions
+       << " (in " << chosen.Regions << " regions of " << chosen.CellsAbove << " Delaunay cells; "
+       << chosen.LinesToLowerLevels << " of them at a lower level, their patch present)"
        << (r.EagerBecause.empty() ? "" : "\nbuilt again without deferral: " + r.EagerBecause)
        << std::fixed << std::setprecision(3) << "\nflow complex (s): Delaunay " << t.Delaunay
        << "; critical points " << t.CriticalPoints << "; stable manifolds " << t.StableManifolds
@@ -286,6 +289,7 @@ void CloudRun::BuildAndRun(bool defer)
     again.TopologyError = first.TopologyError;
     again.TopologySeconds = first.TopologySeconds;
     again.LinesToRegions = first.LinesToRegions;
+    again.LinesToLowerLevels = first.LinesToLowerLevels;
     again.Regions = first.Regions;
     again.CellsAbove = first.CellsAbove;
   }

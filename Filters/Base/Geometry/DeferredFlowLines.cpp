@@ -178,13 +178,14 @@ void DeferredFlowLines::MakeForest()
   }
 }
 
-std::vector<DeferredFlowLines::Ends> DeferredFlowLines::EndsAbove(double levelSq)
+std::vector<DeferredFlowLines::Ends> DeferredFlowLines::EndsAbove(
+  double levelSq, const std::vector<char>* only)
 {
   std::vector<Ends> out;
   std::vector<Id> todo; // line positions
   for (std::size_t k = 0; k < this->Pending.size(); ++k)
   {
-    if (this->Done[k])
+    if (this->Done[k] || (only && !(*only)[static_cast<std::size_t>(this->Pending[k])]))
     {
       continue;
     }
@@ -534,7 +535,7 @@ void DeferredFlowLines::CompleteSimplifiedArcs(std::vector<Arc>& simplifiedArcs)
 }
 
 std::vector<InListChange> DeferredFlowLines::InChangesUpTo(
-  double value, const std::vector<Arc>& simplifiedArcs)
+  double value, const std::vector<Arc>& simplifiedArcs, const std::vector<Insertion>* run)
 {
   std::vector<Id> nodes;
   while (this->NextByBound < this->ByLowerBound.size())
@@ -545,7 +546,7 @@ std::vector<InListChange> DeferredFlowLines::InChangesUpTo(
       break;
     }
     ++this->NextByBound;
-    if (!this->Done[k])
+    if (!this->Done[k] && !(run && (*run)[static_cast<std::size_t>(this->Pending[k])].Step >= 0))
     {
       nodes.push_back(this->Pending[k]);
     }

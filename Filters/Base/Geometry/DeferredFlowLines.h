@@ -77,8 +77,9 @@ public:
   /// until a Voronoi vertex certainly farther than sqrt(levelSq) from the
   /// samples (the stop), or to their maximum when there is none on the way
   /// (their nodes stay pending). For the topology: where a line goes beyond a
-  /// level no reconstruction reaches is said by ExteriorRegions.
-  std::vector<Ends> EndsAbove(double levelSq);
+  /// level no reconstruction reaches is said by ExteriorRegions. With `only`
+  /// (a flag per node), only the flagged nodes.
+  std::vector<Ends> EndsAbove(double levelSq, const std::vector<char>* only = nullptr);
 
   /// `arcs` (grouped by index of the lower node, the 2-3 ones by lower node)
   /// with the 2-3 arcs of the nodes followed so far replaced by their raw arcs.
@@ -109,8 +110,14 @@ public:
   /// Follows the lines not followed yet whose LowerBound is <= value (all
   /// lines of their nodes), and returns how the In lists of maxima change,
   /// against `simplifiedArcs` (sorted by (Lower, Upper)), for the surviving
-  /// nodes followed now: what LateArcs::FlowLinesInto returns.
-  std::vector<InListChange> InChangesUpTo(double value, const std::vector<Arc>& simplifiedArcs);
+  /// nodes followed now: what LateArcs::FlowLinesInto returns. With `run`,
+  /// the nodes it has inserted are passed over for good: a maximum's
+  /// regularization adds nothing through them, and their lines stay pending
+  /// (the topology ends them at the level their presence needs,
+  /// TopologyInput.h). On surface samples at t_p 0 the inner maxima enter
+  /// after nearly every surface patch: their lines were most of the run.
+  std::vector<InListChange> InChangesUpTo(double value, const std::vector<Arc>& simplifiedArcs,
+    const std::vector<Insertion>* run = nullptr);
 
 private:
   struct Line

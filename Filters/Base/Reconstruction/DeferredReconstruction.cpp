@@ -41,8 +41,8 @@ DeferredReconstruction ReconstructDeferred(FlowComplex& fc, SimplificationResult
   };
   if (lines)
   {
-    late.FlowLinesInto = [&](Id maximum) {
-      return lines->InChangesUpTo(fc.Nodes[maximum].Value, fc.Arcs);
+    late.FlowLinesInto = [&](Id maximum, const std::vector<Insertion>& run) {
+      return lines->InChangesUpTo(fc.Nodes[maximum].Value, fc.Arcs, &run);
     };
   }
   r.Run = Reconstruct(fc.Nodes, fc.Arcs, survives, init, cap, progress, late);

@@ -256,7 +256,7 @@ private:
     {
       return in;
     }
-    for (const InListChange& change : this->Late->FlowLinesInto(c))
+    for (const InListChange& change : this->Late->FlowLinesInto(c, this->Result.Nodes))
     {
       if (change.Upper != c && this->Result.Nodes[change.Upper].Step >= 0)
       {

@@ -93,9 +93,11 @@ struct LateArcs
   double Ratio = HUGE_VAL;
   std::function<std::vector<Arc>(const std::vector<Id>&)> Walk;
   /// Optional: deferred flow lines (DeferredFlowLines.h). Called with each
-  /// maximum about to be inserted; returns the changes of the In lists of the
-  /// maxima not inserted yet that the lines it follows make.
-  std::function<std::vector<InListChange>(Id)> FlowLinesInto;
+  /// maximum about to be inserted and the run so far; returns the changes of
+  /// the In lists of the maxima not inserted yet that the lines it follows
+  /// make. Lines of nodes already inserted need not be followed: their
+  /// regularization changes nothing.
+  std::function<std::vector<InListChange>(Id, const std::vector<Insertion>&)> FlowLinesInto;
 };
 
 /// The same run, with the 1-2 arcs of `late.Deferred` nodes asked for when

@@ -6,6 +6,8 @@
 #include "HugePages.h"
 #include "MemoryGuard.h"
 
+#include <tbb/parallel_sort.h>
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -50,15 +52,127 @@ void AppendEdgeEnds(const FlowComplex& fc, std::vector<Arc>& raw)
   }
 }
 
-/// The lines not followed: ended at their regions of {d > r*} (TopologyInput.h);
-/// `regions` is reused when its level is high enough. Throws Degenerate when
-/// the proof's premises fail to be shown.
+/// For each node some reconstruction holds: the largest value of a node
+/// present at its presence or before (ties included): its drawn cells and
+/// those before it lie within that distance of the samples. +inf for the others.
+std::vector<double> ValuesUpTo(const FlowComplex& fc, const std::vector<double>& presence)
+{
+  std::vector<std::pair<double, Id>> order;
+  for (std::size_t v = 0; v < fc.Nodes.size(); ++v)
+  {
+    if (presence[v] < HUGE_VAL)
+    {
+      order.emplace_back(presence[v], static_cast<Id>(v));
+    }
+  }
+  tbb::parallel_sort(order.begin(), order.end());
+  std::vector<double> upTo(fc.Nodes.size(), HUGE_VAL);
+  double running = 0;
+  for (std::size_t i = 0; i < order.size();)
+  {
+    std::size_t j = i;
+    for (; j < order.size() && order[j].first == order[i].first; ++j)
+    {
+      running = std::max(running, fc.Nodes[order[j].second].Value);
+    }
+    for (; i < j; ++i)
+    {
+      upTo[order[i].second] = running;
+    }
+  }
+  return upTo;
+}
+
+/// Ends the lines of the nodes flagged in `only` at the regions of `regions`:
+/// a line's side is its maximum when the walk met it, else the first maximum
+/// of the region where it stopped. With `joined`, every maximum of a region is
+/// joined to its first and none may be present (the top level, r*). Appends
+/// the rows; returns whether a walk ended at a maximum some reconstruction holds.
+bool EndAt(CappedReconstruction& r, TopologyInput& t, const ExteriorRegions& regions,
+  const std::vector<char>& only, bool joined, std::vector<Arc>& rows)
+{
+  const FlowComplex& fc = r.Complex;
+  const Retriangulation& re = *r.Triangulation;
+  const std::vector<DeferredFlowLines::Ends> ends =
+    r.Lines->EndsAbove(std::nextafter(regions.Level(), HUGE_VAL), &only);
+  // Each region's first maximum (infinity for the unbounded one): the others
+  // join it. A bounded region holds the maximum of the distance over it.
+  std::vector<Id> first(static_cast<std::size_t>(regions.Count()), -1);
+  auto absent = [&](Id m) {
+    if (joined && t.Presence[m] < HUGE_VAL)
+    {
+      throw Degenerate("topology: a maximum above every reconstruction is in one");
+    }
+    return m;
+  };
+  if (regions.InfiniteRegion() >= 0)
+  {
+    first[regions.InfiniteRegion()] = absent(fc.InfinityNode);
+  }
+  const CriticalSimplices& cs = re.Critical();
+  for (std::size_t i = 0; i < cs.Cells.size(); ++i)
+  {
+    const std::int32_t region = regions.RegionOf(cs.Cells[i].Cell);
+    if (region < 0)
+    {
+      continue;
+    }
+    const Id m = absent(re.Base3() + static_cast<Id>(i));
+    if (first[region] < 0)
+    {
+      first[region] = m;
+    }
+    else if (joined)
+    {
+      t.Joined.emplace_back(m, first[region]);
+    }
+  }
+  if (std::find(first.begin(), first.end(), -1) != first.end())
+  {
+    throw Degenerate("topology: a region of the complement without a maximum");
+  }
+  bool reachesPresent = false;
+  for (const DeferredFlowLines::Ends& e : ends)
+  {
+    Id to[2];
+    for (int s = 0; s < 2; ++s)
+    {
+      const Id end = e.End[s];
+      if (end == -1 || (end <= -2 && regions.RegionOf(-2 - end) < 0))
+      {
+        throw Degenerate("topology: a pending line without its end");
+      }
+      to[s] = end >= 0 ? end : first[regions.RegionOf(-2 - end)];
+      reachesPresent = reachesPresent || (end >= 0 && t.Presence[end] < HUGE_VAL);
+      t.LinesToRegions += end >= 0 ? 0 : 1;
+      t.LinesToLowerLevels += end >= 0 || joined ? 0 : 1;
+    }
+    if (to[0] == to[1])
+    {
+      rows.emplace_back(e.Node, to[0], 2);
+    }
+    else
+    {
+      rows.emplace_back(e.Node, to[0], 1);
+      rows.emplace_back(e.Node, to[1], 1);
+    }
+  }
+  return reachesPresent;
+}
+
+/// The lines not followed, ended at regions of {d > level} (TopologyInput.h):
+/// those of nodes no reconstruction holds at r*, the top level (`regions`,
+/// reused when its level is high enough); those of a node present at t at
+/// the least of a few lower levels (r* / 2^k) above every value present by t.
+/// Throws Degenerate when the proof's premises fail to be shown.
 void EndInRegions(CappedReconstruction& r, TopologyInput& t, std::size_t cones,
   std::unique_ptr<ExteriorRegions>& regions)
 {
   const FlowComplex& fc = r.Complex;
+  const std::size_t n = fc.Nodes.size();
+  const std::vector<double> upTo = ValuesUpTo(fc, t.Presence);
   double reached = 0; // r*
-  for (std::size_t v = 0; v < fc.Nodes.size(); ++v)
+  for (std::size_t v = 0; v < n; ++v)
   {
     if (t.Presence[v] < HUGE_VAL)
     {
@@ -74,82 +188,98 @@ void EndInRegions(CappedReconstruction& r, TopologyInput& t, std::size_t cones,
   const Retriangulation& re = *r.Triangulation;
   const int e = re.Prepared().ScaleExponent;
   const double reach = 1.8 * std::ldexp(fc.Report.PerturbationMagnitude, -e);
-  const double level = (std::ldexp(reached, -e) + reach) * (1 + 1e-9) + 1e-300;
-  if (!regions || regions->Of() != re.Tri().Serial() || !(regions->Level() >= level * level))
-  {
-    regions.reset();
-    regions = std::make_unique<ExteriorRegions>(re.Tri(), level * level);
-  }
-  const std::vector<DeferredFlowLines::Ends> ends =
-    r.Lines->EndsAbove(std::nextafter(regions->Level(), HUGE_VAL));
-  // Each region's first maximum (infinity for the unbounded one): the others
-  // join it. A bounded region holds the maximum of the distance over it.
-  std::vector<Id> first(static_cast<std::size_t>(regions->Count()), -1);
-  auto absent = [&](Id m) {
-    if (t.Presence[m] < HUGE_VAL)
-    {
-      throw Degenerate("topology: a maximum above every reconstruction is in one");
-    }
-    return m;
+  auto levelSq = [&](double value) {
+    const double level = (std::ldexp(value, -e) + reach) * (1 + 1e-9) + 1e-300;
+    return level * level;
   };
-  if (regions->InfiniteRegion() >= 0)
+  // Levels: a node present at t needs U above the values present by t (the
+  // union-find of HasseBarcode then already joins every maximum of a region
+  // of it: no join is needed, unlike at r*, where the lines of nodes never
+  // present are merged first). A lower level stops the walk sooner: the lines
+  // of a surface sample's patches end near the surface instead of at the
+  // medial axis, once the run has inserted the inner maxima at t_p 0.
+  constexpr int Deepest = 8;
+  constexpr int Passes = 3; // each level below r* costs a pass over the cells
+  std::vector<std::int8_t> level(n, 0); // k: r* / 2^k; 0: r*
+  std::vector<std::size_t> count(Deepest + 1, 0);
+  std::size_t present = 0;
+  for (const Id x : r.Lines->Nodes())
   {
-    first[regions->InfiniteRegion()] = absent(fc.InfinityNode);
+    if (r.Lines->IsPending(x) && t.Presence[x] < HUGE_VAL)
+    {
+      int k = 0;
+      while (k < Deepest && std::ldexp(reached, -(k + 1)) >= upTo[x])
+      {
+        ++k;
+      }
+      level[x] = static_cast<std::int8_t>(k);
+      ++count[k];
+      ++present;
+    }
   }
-  const CriticalSimplices& cs = re.Critical();
-  for (std::size_t i = 0; i < cs.Cells.size(); ++i)
+  // The levels holding an eighth of those nodes or more, the deepest
+  // `Passes`; a node of another level goes up to the next one kept.
+  std::vector<char> kept(Deepest + 1, 0);
+  kept[0] = 1;
+  for (int k = Deepest, passes = 0; k >= 1 && passes < Passes; --k)
   {
-    const std::int32_t region = regions->RegionOf(cs.Cells[i].Cell);
-    if (region < 0)
+    if (count[k] > 0 && 8 * count[k] >= present)
     {
-      continue;
-    }
-    const Id m = absent(re.Base3() + static_cast<Id>(i));
-    if (first[region] < 0)
-    {
-      first[region] = m;
-    }
-    else
-    {
-      t.Joined.emplace_back(m, first[region]);
+      kept[k] = 1;
+      ++passes;
     }
   }
-  if (std::find(first.begin(), first.end(), -1) != first.end())
+  for (const Id x : r.Lines->Nodes())
   {
-    throw Degenerate("topology: a region of the complement without a maximum");
+    while (!kept[level[x]])
+    {
+      --level[x];
+    }
   }
   std::vector<Arc> rows;
-  bool reachesPresent = false; // a walk that ended at a maximum some reconstruction holds
-  for (const DeferredFlowLines::Ends& e : ends)
+  bool reachesPresent = false;
+  std::vector<char> only(n, 0);
+  for (int k = Deepest; k >= 1; --k)
   {
-    Id to[2];
-    for (int s = 0; s < 2; ++s)
+    bool any = false;
+    for (const Id x : r.Lines->Nodes())
     {
-      const Id end = e.End[s];
-      if (end == -1 || (end <= -2 && regions->RegionOf(-2 - end) < 0))
-      {
-        throw Degenerate("topology: a pending line without its end");
-      }
-      to[s] = end >= 0 ? end : first[regions->RegionOf(-2 - end)];
-      reachesPresent = reachesPresent || (end >= 0 && t.Presence[end] < HUGE_VAL);
-      t.LinesToRegions += end >= 0 ? 0 : 1;
+      only[x] = r.Lines->IsPending(x) && t.Presence[x] < HUGE_VAL && level[x] == k;
+      any = any || only[x];
     }
-    if (to[0] == to[1])
+    if (any)
     {
-      rows.emplace_back(e.Node, to[0], 2);
-    }
-    else
-    {
-      rows.emplace_back(e.Node, to[0], 1);
-      rows.emplace_back(e.Node, to[1], 1);
+      const ExteriorRegions lower(re.Tri(), levelSq(std::ldexp(reached, -k)));
+      reachesPresent = EndAt(r, t, lower, only, false, rows) || reachesPresent;
     }
   }
+  for (const Id x : r.Lines->Nodes())
+  {
+    only[x] = r.Lines->IsPending(x) && level[x] == 0;
+  }
+  const double top = levelSq(reached);
+  if (!regions || regions->Of() != re.Tri().Serial() || !(regions->Level() >= top))
+  {
+    regions.reset();
+    regions = std::make_unique<ExteriorRegions>(re.Tri(), top);
+  }
+  reachesPresent = EndAt(r, t, *regions, only, true, rows) || reachesPresent;
+  std::stable_sort(rows.begin(), rows.end(), [](const Arc& a, const Arc& b) { return a.Lower < b.Lower; });
   ReplaceRows(t.Arcs, cones, rows);
   if (reachesPresent)
   {
-    // Its node is drawn with that maximum's cone. The nodes this adds have
-    // values below the maximum's, so r* and the regions stand.
+    // Its node is drawn with that maximum's cone, hence present by then. The
+    // nodes this adds have values below the maximum's, present no later, so
+    // no value present by any t grows: the levels stand (checked).
     t.Presence = PresenceTimes(fc.Nodes, t.Arcs, r.Carriers, r.Run);
+    const std::vector<double> after = ValuesUpTo(fc, t.Presence);
+    for (const Id x : r.Lines->Nodes())
+    {
+      if (level[x] > 0 && after[x] > std::ldexp(reached, -level[x]))
+      {
+        throw Degenerate("topology: a level below r* no longer holds");
+      }
+    }
   }
   t.Regions = regions->Count();
   t.CellsAbove = regions->CellsAbove();
@@ -216,7 +346,7 @@ TopologyInput TopologyOfCappedRun(CappedReconstruction& r, std::unique_ptr<Exter
   {
     // Not shown: every line is followed (a tie there is the caller's Degenerate).
     t.Joined.clear();
-    t.LinesToRegions = t.Regions = t.CellsAbove = 0;
+    t.LinesToRegions = t.LinesToLowerLevels = t.Regions = t.CellsAbove = 0;
     r.Lines->Follow(r.Lines->Nodes());
     ReplaceRows(raw, cones, r.Lines->FollowedRawArcs());
     t.Presence = PresenceTimes(fc.Nodes, raw, r.Carriers, r.Run);

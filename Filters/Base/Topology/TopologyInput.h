@@ -14,6 +14,16 @@
 // and the component's maxima are joined at every threshold. On the surface
 // samples of a sphere this replaces the walk of 10^6 lines through the nearly
 // cospherical Voronoi vertices at its centre by a flood of cheap radius tests.
+//
+// A node present from t on needs less: only the complements of the
+// reconstructions before it, within r(t), the largest value present by t. Its
+// line is walked until {d > L} for a level L above r(t) (a few levels r*/2^k
+// serve all), and given the first maximum of its region there. No join is
+// needed: HasseBarcode's union-find, run from the largest threshold down,
+// holds the components of the complement at t when it reaches the node, and
+// the maxima of one region of {d > L} are in one of them. When the run
+// inserts the inner maxima of a surface sample (t_p 0), nearly every patch is
+// present before them: its lines stop near the surface, not at the medial axis.
 #ifndef flowrecon_TopologyInput_h
 #define flowrecon_TopologyInput_h
 
@@ -37,7 +47,10 @@ struct TopologyInput
   /// Maxima in one component of the complement of every reconstruction.
   std::vector<std::pair<Id, Id>> Joined;
   Id LinesFollowed = 0; ///< lines followed to their maxima for the topology
-  Id LinesToRegions = 0; ///< lines ended at a region of {d > r*}
+  Id LinesToRegions = 0; ///< lines ended at a region of {d > r*} or of a lower level
+  /// Of those, the lines ended below r*: of nodes present at some t, at a
+  /// level above the values present by t.
+  Id LinesToLowerLevels = 0;
   Id Regions = 0;
   std::int64_t CellsAbove = 0; ///< cells whose Voronoi vertex is in {d > r*}
 };

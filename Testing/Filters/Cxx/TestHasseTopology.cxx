@@ -32,9 +32,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <iostream>
 #include <memory>
 #include <random>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -130,6 +132,12 @@ void SameProfiles(const std::string& what, const std::vector<TopologyStep>& hass
   Expect(differ == 0, what + ": the profiles differ at " + std::to_string(differ) + " places");
 }
 
+long& LinesEndedLower()
+{
+  static long count = 0;
+  return count;
+}
+
 long& LinesEndedEarly()
 {
   static long n = 0;
@@ -150,10 +158,20 @@ void Compare(const std::string& name, const std::vector<Point3>& cloud, double t
   const std::string what = name + " t_p " + std::to_string(tp) + " cap " + std::to_string(cap);
   Expect(report.TopologyError.empty(), what + ": " + report.TopologyError);
   // Lines ended in a region of the complement rather than followed (TopologyInput.h).
-  const std::string tag = "ended above every reconstruction for the topology: ";
+  const std::string tag = "ended in regions of the complement for the topology: ";
   const std::size_t at = report.Work.find(tag);
   Expect(at != std::string::npos, what + ": the work report does not count the lines ended early");
   LinesEndedEarly() += at == std::string::npos ? 0 : std::stol(report.Work.substr(at + tag.size()));
+  // Of those, the lines of nodes present before r*: ended at a lower level.
+  const std::string lower = "Delaunay cells; ";
+  const std::size_t low = report.Work.find(lower);
+  Expect(low != std::string::npos, what + ": the work report does not count the lines ended at a lower level");
+  const long below = low == std::string::npos ? 0 : std::stol(report.Work.substr(low + lower.size()));
+  LinesEndedLower() += below;
+  if (below > 0)
+  {
+    std::cout << what << ": " << below << " flow lines ended at a lower level\n";
+  }
   const std::vector<TopologyStep> hasse = Rows(topology);
   const std::vector<TopologyStep> cells = CellProfile(grid, cap);
   if (name == "grid")
@@ -267,6 +285,26 @@ std::vector<Point3> Trefoil(int n, std::uint64_t seed)
   return p;
 }
 
+/// The bundled bunny's samples (x y z per line).
+std::vector<Point3> Bunny()
+{
+  std::ifstream in(FLOWRECON_BUNNY);
+  std::vector<Point3> p;
+  std::string line;
+  while (std::getline(in, line))
+  {
+    std::istringstream fields(line);
+    Point3 q;
+    if (line.empty() || line[0] == '#' || !(fields >> q[0] >> q[1] >> q[2]))
+    {
+      continue;
+    }
+    p.push_back(q);
+  }
+  Expect(p.size() > 1000, std::string("cannot read ") + FLOWRECON_BUNNY);
+  return p;
+}
+
 /// An exact integer grid: cospherical and right-angled everywhere (perturbed).
 std::vector<Point3> Grid(int k)
 {
@@ -293,6 +331,9 @@ int main()
       Compare("trefoil", Trefoil(600, 13), tp, cap);
       Compare("icosahedron", clouds::Icosahedron(1500, 17), tp, cap);
       Compare("grid", Grid(6), tp, cap);
+      // Its inner maxima enter at t_p 0 after most of its patches: the lines
+      // of those end at levels below r* (TopologyInput.h).
+      Compare("bunny", Bunny(), tp, cap);
     }
     for (const double defer : { 0.0, 2.5 })
     {
@@ -304,5 +345,8 @@ int main()
   // The fixtures exercise the regions, not only the lines followed to their maxima.
   std::cout << LinesEndedEarly() << " flow lines ended in a region of the complement\n";
   Expect(LinesEndedEarly() > 1000, "few flow lines ended in a region of the complement");
+  // And the lower levels, where a node present before r* needs less.
+  std::cout << LinesEndedLower() << " of them at a level below r*\n";
+  Expect(LinesEndedLower() > 1000, "few flow lines ended at a level below r*");
   return check::Finish("TestHasseTopology");
 }
