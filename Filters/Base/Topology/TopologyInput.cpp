@@ -6,8 +6,6 @@
 #include "HugePages.h"
 #include "MemoryGuard.h"
 
-#include <tbb/parallel_sort.h>
-
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -52,35 +50,24 @@ void AppendEdgeEnds(const FlowComplex& fc, std::vector<Arc>& raw)
   }
 }
 
-/// For each node some reconstruction holds: the largest value of a node
-/// present at its presence or before (ties included): its drawn cells and
-/// those before it lie within that distance of the samples. +inf for the others.
-std::vector<double> ValuesUpTo(const FlowComplex& fc, const std::vector<double>& presence)
+/// For k = 0..deepest: the least presence of a node whose value exceeds
+/// r* / 2^k (+inf: none). A node present at t < first[k] sees only values up
+/// to r* / 2^k present by t, its own and those before it (ties included).
+std::vector<double> FirstAbove(const FlowComplex& fc, const std::vector<double>& presence,
+  double reached, int deepest)
 {
-  std::vector<std::pair<double, Id>> order;
+  std::vector<double> first(static_cast<std::size_t>(deepest) + 1, HUGE_VAL);
   for (std::size_t v = 0; v < fc.Nodes.size(); ++v)
   {
     if (presence[v] < HUGE_VAL)
     {
-      order.emplace_back(presence[v], static_cast<Id>(v));
+      for (int k = deepest; k >= 0 && fc.Nodes[v].Value > std::ldexp(reached, -k); --k)
+      {
+        first[k] = std::min(first[k], presence[v]);
+      }
     }
   }
-  tbb::parallel_sort(order.begin(), order.end());
-  std::vector<double> upTo(fc.Nodes.size(), HUGE_VAL);
-  double running = 0;
-  for (std::size_t i = 0; i < order.size();)
-  {
-    std::size_t j = i;
-    for (; j < order.size() && order[j].first == order[i].first; ++j)
-    {
-      running = std::max(running, fc.Nodes[order[j].second].Value);
-    }
-    for (; i < j; ++i)
-    {
-      upTo[order[i].second] = running;
-    }
-  }
-  return upTo;
+  return first;
 }
 
 /// Ends the lines of the nodes flagged in `only` at the regions of `regions`:
@@ -170,7 +157,6 @@ void EndInRegions(CappedReconstruction& r, TopologyInput& t, std::size_t cones,
 {
   const FlowComplex& fc = r.Complex;
   const std::size_t n = fc.Nodes.size();
-  const std::vector<double> upTo = ValuesUpTo(fc, t.Presence);
   double reached = 0; // r*
   for (std::size_t v = 0; v < n; ++v)
   {
@@ -200,19 +186,26 @@ void EndInRegions(CappedReconstruction& r, TopologyInput& t, std::size_t cones,
   // medial axis, once the run has inserted the inner maxima at t_p 0.
   constexpr int Deepest = 8;
   constexpr int Passes = 3; // each level below r* costs a pass over the cells
-  std::vector<std::int8_t> level(n, 0); // k: r* / 2^k; 0: r*
+  const std::vector<Id>& nodes = r.Lines->Nodes();
+  std::vector<char> pending(nodes.size());
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+  {
+    pending[i] = r.Lines->IsPending(nodes[i]);
+  }
+  const std::vector<double> first = FirstAbove(fc, t.Presence, reached, Deepest);
+  std::vector<std::int8_t> level(nodes.size(), 0); // k: r* / 2^k; 0: r*
   std::vector<std::size_t> count(Deepest + 1, 0);
   std::size_t present = 0;
-  for (const Id x : r.Lines->Nodes())
+  for (std::size_t i = 0; i < nodes.size(); ++i)
   {
-    if (r.Lines->IsPending(x) && t.Presence[x] < HUGE_VAL)
+    if (pending[i] && t.Presence[nodes[i]] < HUGE_VAL)
     {
       int k = 0;
-      while (k < Deepest && std::ldexp(reached, -(k + 1)) >= upTo[x])
+      while (k < Deepest && t.Presence[nodes[i]] < first[k + 1])
       {
         ++k;
       }
-      level[x] = static_cast<std::int8_t>(k);
+      level[i] = static_cast<std::int8_t>(k);
       ++count[k];
       ++present;
     }
@@ -229,41 +222,40 @@ void EndInRegions(CappedReconstruction& r, TopologyInput& t, std::size_t cones,
       ++passes;
     }
   }
-  for (const Id x : r.Lines->Nodes())
+  for (std::int8_t& k : level)
   {
-    while (!kept[level[x]])
+    while (!kept[k])
     {
-      --level[x];
+      --k;
     }
   }
   std::vector<Arc> rows;
   bool reachesPresent = false;
   std::vector<char> only(n, 0);
-  for (int k = Deepest; k >= 1; --k)
+  for (int k = Deepest; k >= 0; --k)
   {
-    bool any = false;
-    for (const Id x : r.Lines->Nodes())
+    if (!kept[k])
     {
-      only[x] = r.Lines->IsPending(x) && t.Presence[x] < HUGE_VAL && level[x] == k;
-      any = any || only[x];
+      continue;
     }
-    if (any)
+    for (std::size_t i = 0; i < nodes.size(); ++i)
+    {
+      only[nodes[i]] = pending[i] && level[i] == k;
+    }
+    if (k > 0)
     {
       const ExteriorRegions lower(re.Tri(), levelSq(std::ldexp(reached, -k)));
       reachesPresent = EndAt(r, t, lower, only, false, rows) || reachesPresent;
+      continue;
     }
+    const double top = levelSq(reached);
+    if (!regions || regions->Of() != re.Tri().Serial() || !(regions->Level() >= top))
+    {
+      regions.reset();
+      regions = std::make_unique<ExteriorRegions>(re.Tri(), top);
+    }
+    reachesPresent = EndAt(r, t, *regions, only, true, rows) || reachesPresent;
   }
-  for (const Id x : r.Lines->Nodes())
-  {
-    only[x] = r.Lines->IsPending(x) && level[x] == 0;
-  }
-  const double top = levelSq(reached);
-  if (!regions || regions->Of() != re.Tri().Serial() || !(regions->Level() >= top))
-  {
-    regions.reset();
-    regions = std::make_unique<ExteriorRegions>(re.Tri(), top);
-  }
-  reachesPresent = EndAt(r, t, *regions, only, true, rows) || reachesPresent;
   std::stable_sort(rows.begin(), rows.end(), [](const Arc& a, const Arc& b) { return a.Lower < b.Lower; });
   ReplaceRows(t.Arcs, cones, rows);
   if (reachesPresent)
@@ -272,10 +264,10 @@ void EndInRegions(CappedReconstruction& r, TopologyInput& t, std::size_t cones,
     // nodes this adds have values below the maximum's, present no later, so
     // no value present by any t grows: the levels stand (checked).
     t.Presence = PresenceTimes(fc.Nodes, t.Arcs, r.Carriers, r.Run);
-    const std::vector<double> after = ValuesUpTo(fc, t.Presence);
-    for (const Id x : r.Lines->Nodes())
+    const std::vector<double> after = FirstAbove(fc, t.Presence, reached, Deepest);
+    for (std::size_t i = 0; i < nodes.size(); ++i)
     {
-      if (level[x] > 0 && after[x] > std::ldexp(reached, -level[x]))
+      if (level[i] > 0 && !(t.Presence[nodes[i]] < after[level[i]]))
       {
         throw Degenerate("topology: a level below r* no longer holds");
       }
