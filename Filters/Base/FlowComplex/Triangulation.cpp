@@ -115,46 +115,37 @@ bool Triangulation::Link(Id u, Id v, std::vector<Id>& out, std::vector<CellHandl
   {
     return false;
   }
-  const auto add = [&](VertexHandle w, CellHandle c) {
-    if (!this->DT.is_infinite(w))
+  // Consecutive cells around the edge share one link vertex: collect each once.
+  // Around the edge the link vertices form a cycle w0 w1 ... and cell i holds
+  // w_i and w_i+1, so a repeat is one of the last two vertices collected (the
+  // cell's new one may come first) or of the first two; no search of the list.
+  const std::size_t first = out.size();
+  auto start = this->DT.incident_cells(Delaunay::Edge(cell, i, j));
+  auto cc = start;
+  do
+  {
+    for (int k = 0; k < 4; ++k)
     {
-      out.push_back(w->info());
-      if (cells)
+      const VertexHandle w = cc->vertex(k);
+      if (w == vu || w == vv || this->DT.is_infinite(w))
       {
-        cells->push_back(c);
+        continue;
+      }
+      const Id id = w->info();
+      const std::size_t count = out.size() - first;
+      const bool seen = count > 0 &&
+        (out.back() == id || out[first] == id ||
+          (count > 1 && (out[out.size() - 2] == id || out[first + 1] == id)));
+      if (!seen)
+      {
+        out.push_back(id);
+        if (cells)
+        {
+          cells->push_back(cc);
+        }
       }
     }
-  };
-  // Around the edge the link vertices form a cycle w0 w1 ... and consecutive
-  // cells share one of them, so each cell past the first brings exactly one
-  // new vertex, the one opposite the cell it was entered from. Circulating by
-  // hand reads only that vertex (a vertex is a cache miss on large clouds; the
-  // walks ask for links millions of times) and compares the others by handle.
-  int k = 0;
-  while (k == i || k == j)
-  {
-    ++k;
-  }
-  const int l = 6 - i - j - k;
-  const VertexHandle first = cell->vertex(k);
-  VertexHandle keep = cell->vertex(l);
-  add(first, cell);
-  add(keep, cell);
-  VertexHandle drop = first;
-  CellHandle current = cell;
-  while (true)
-  {
-    const CellHandle next = current->neighbor(current->index(drop));
-    const VertexHandle w = next->vertex(next->index(current));
-    if (w == first)
-    {
-      break; // the last cell: the next one is where the circulation began
-    }
-    add(w, next);
-    drop = keep;
-    keep = w;
-    current = next;
-  }
+  } while (++cc != start);
   return true;
 }
 
