@@ -19,6 +19,8 @@
 #include "vtkFlowComplexSimplification.h"
 #include "vtkFlowReconstruction.h"
 #include "vtkMultiBlockDataSet.h"
+#include "vtkPointCloudReader.h"
+#include "vtkPointSet.h"
 #include "vtkPoints.h"
 
 #include "vtkCellArray.h"
@@ -32,11 +34,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <random>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -285,21 +285,19 @@ std::vector<Point3> Trefoil(int n, std::uint64_t seed)
   return p;
 }
 
-/// The bundled bunny's samples (x y z per line).
+/// The bundled bunny's samples, read as the tools read a cloud.
 std::vector<Point3> Bunny()
 {
-  std::ifstream in(FLOWRECON_BUNNY);
+  vtkNew<vtkPointCloudReader> reader;
+  reader->SetFileName(FLOWRECON_BUNNY);
+  reader->Update();
   std::vector<Point3> p;
-  std::string line;
-  while (std::getline(in, line))
+  auto* cloud = vtkPointSet::SafeDownCast(reader->GetOutputDataObject(0));
+  for (vtkIdType i = 0; cloud && i < cloud->GetNumberOfPoints(); ++i)
   {
-    std::istringstream fields(line);
-    Point3 q;
-    if (line.empty() || line[0] == '#' || !(fields >> q[0] >> q[1] >> q[2]))
-    {
-      continue;
-    }
-    p.push_back(q);
+    double x[3];
+    cloud->GetPoint(i, x);
+    p.push_back({ { x[0], x[1], x[2] } });
   }
   Expect(p.size() > 1000, std::string("cannot read ") + FLOWRECON_BUNNY);
   return p;
