@@ -38,33 +38,41 @@ HasseDiagram::HasseDiagram(const std::vector<Node>& nodes, const std::vector<Arc
   {
     throw InputError("Hasse diagram: more than 2^31 nodes");
   }
-  // Reserve the lists (a flow complex has ~3 arcs per node: reallocation shows).
-  std::vector<std::uint32_t> inDegree(nodes.size(), 0), outDegree(nodes.size(), 0);
-  std::size_t sampleArcs = 0;
-  for (const Arc& a : arcs)
-  {
-    if (a.Lower >= 0 && a.Lower < n && a.Upper >= 0 && a.Upper < n)
-    {
-      if (nodes[a.Lower].Index == 0)
-      {
-        ++sampleArcs;
-        continue;
-      }
-      ++outDegree[a.Lower];
-      ++inDegree[a.Upper];
-    }
-  }
+  // The indices by themselves: every arc reads two, and a Node is 56 bytes.
+  std::vector<int> index(nodes.size());
   for (std::size_t i = 0; i < nodes.size(); ++i)
   {
-    this->InLists[i].reserve(inDegree[i]);
-    this->OutLists[i].reserve(outDegree[i]);
+    index[i] = nodes[i].Index;
   }
-  this->SampleArcs.reserve(sampleArcs);
+  const auto valid = [&](const Arc& a) {
+    return a.Lower >= 0 && a.Lower < n && a.Upper >= 0 && a.Upper < n &&
+      index[a.Upper] == index[a.Lower] + 1 && a.Multiplicity >= 0;
+  };
+  // Lists laid out with the capacity of their first arcs (~3 a node).
+  std::vector<std::uint32_t> inDegree(nodes.size(), 0), outDegree(nodes.size(), 0);
+  std::size_t sampleArcs = 0;
   for (std::size_t i = 0; i < arcs.size(); ++i)
   {
     const Arc& a = arcs[i];
-    ValidateArc(nodes, a, i);
-    if (a.Multiplicity > 0 && nodes[a.Lower].Index == 0)
+    if (!valid(a))
+    {
+      ValidateArc(nodes, a, i); // throws, naming what is wrong
+      continue;
+    }
+    if (index[a.Lower] == 0)
+    {
+      ++sampleArcs;
+      continue;
+    }
+    ++outDegree[a.Lower];
+    ++inDegree[a.Upper];
+  }
+  LayOut(this->InLists, inDegree, this->InArena);
+  LayOut(this->OutLists, outDegree, this->OutArena);
+  this->SampleArcs.reserve(sampleArcs);
+  for (const Arc& a : arcs)
+  {
+    if (a.Multiplicity > 0 && index[a.Lower] == 0)
     {
       this->SampleArcs.push_back(a);
     }
@@ -73,9 +81,56 @@ HasseDiagram::HasseDiagram(const std::vector<Node>& nodes, const std::vector<Arc
       this->Insert(a.Lower, a.Upper, a.Multiplicity);
     }
   }
-  std::sort(this->SampleArcs.begin(), this->SampleArcs.end(),
-    [](const Arc& a, const Arc& b) { return std::tie(a.Lower, a.Upper) < std::tie(b.Lower, b.Upper); });
-  this->MergeRepeatedArcs();
+  // Arcs in strictly increasing (Lower, Upper), as the builder and the
+  // simplification write them, have no repeats to merge.
+  const auto before = [](const Arc& a, const Arc& b) {
+    return std::tie(a.Lower, a.Upper) < std::tie(b.Lower, b.Upper);
+  };
+  const bool increasing = std::adjacent_find(arcs.begin(), arcs.end(),
+                            [&](const Arc& a, const Arc& b) { return !before(a, b); }) == arcs.end();
+  if (!increasing)
+  {
+    std::sort(this->SampleArcs.begin(), this->SampleArcs.end(), before);
+    this->MergeRepeatedArcs();
+  }
+}
+
+void HasseDiagram::LayOut(
+  std::vector<List>& lists, const std::vector<std::uint32_t>& degree, ListArena<HalfArc>& arena)
+{
+  std::size_t total = 0;
+  for (const std::uint32_t d : degree)
+  {
+    total += d;
+  }
+  HalfArc* next = arena.Carve(total);
+  for (std::size_t i = 0; i < lists.size(); ++i)
+  {
+    if (degree[i] > 0)
+    {
+      lists[i].Data = next;
+      lists[i].Capacity = degree[i];
+      next += degree[i];
+    }
+  }
+}
+
+void HasseDiagram::Push(List& list, const HalfArc& h, ListArena<HalfArc>& arena)
+{
+  if (list.Size == list.Capacity)
+  {
+    if (list.Size == std::numeric_limits<std::uint32_t>::max())
+    {
+      throw InputError("Hasse diagram: a node with more than 2^32 arcs");
+    }
+    std::uint32_t capacity = 0;
+    HalfArc* moved = arena.Allocate(std::max<std::uint32_t>(4, list.Size + (list.Size >> 1) + 1), capacity);
+    std::copy(list.Data, list.Data + list.Size, moved);
+    arena.Release(list.Data, list.Capacity);
+    list.Data = moved;
+    list.Capacity = capacity;
+  }
+  list.Data[list.Size++] = h;
 }
 
 void HasseDiagram::MergeRepeatedArcs()
@@ -107,7 +162,7 @@ void HasseDiagram::MergeRepeatedArcs()
       }
       keep.Multiplicity += a.Multiplicity;
     }
-    HalfArcs& out = this->OutLists[lower];
+    const HalfArcs out = this->Out(lower);
     if (out.size() < 2)
     {
       continue;
@@ -126,7 +181,7 @@ void HasseDiagram::MergeRepeatedArcs()
         first = j;
         continue;
       }
-      HalfArc& keep = out[row[first].second];
+      HalfArc& keep = this->OutLists[lower].Data[row[first].second];
       const std::int32_t more = out[row[j].second].Multiplicity;
       if (more > std::numeric_limits<std::int32_t>::max() - keep.Multiplicity)
       {
@@ -134,7 +189,7 @@ void HasseDiagram::MergeRepeatedArcs()
           " to node " + std::to_string(keep.Node) + " has too large a multiplicity");
       }
       keep.Multiplicity += more;
-      this->InLists[keep.Node][keep.Twin].Multiplicity = keep.Multiplicity;
+      this->InLists[keep.Node].Data[keep.Twin].Multiplicity = keep.Multiplicity;
       erase.push_back(row[j].second);
     }
     // From the back: swap-and-pop then only moves entries that are kept.
@@ -149,8 +204,8 @@ void HasseDiagram::MergeRepeatedArcs()
 
 std::int64_t HasseDiagram::Find(Id lower, Id upper) const
 {
-  const HalfArcs& out = this->OutLists[lower];
-  const HalfArcs& in = this->InLists[upper];
+  const HalfArcs out = this->Out(lower);
+  const HalfArcs in = this->In(upper);
   if (out.size() <= in.size())
   {
     for (std::size_t k = 0; k < out.size(); ++k)
@@ -175,45 +230,45 @@ std::int64_t HasseDiagram::Find(Id lower, Id upper) const
 int HasseDiagram::Multiplicity(Id lower, Id upper) const
 {
   const std::int64_t k = this->Find(lower, upper);
-  return k < 0 ? 0 : this->OutLists[lower][static_cast<std::size_t>(k)].Multiplicity;
+  return k < 0 ? 0 : this->OutLists[lower].Data[k].Multiplicity;
 }
 
 void HasseDiagram::Insert(Id lower, Id upper, int multiplicity)
 {
-  HalfArcs& out = this->OutLists[lower];
-  HalfArcs& in = this->InLists[upper];
-  out.push_back(HalfArc{ static_cast<std::int32_t>(upper), static_cast<std::int32_t>(multiplicity),
-    static_cast<std::uint32_t>(in.size()) });
-  in.push_back(HalfArc{ static_cast<std::int32_t>(lower), static_cast<std::int32_t>(multiplicity),
-    static_cast<std::uint32_t>(out.size() - 1) });
+  List& out = this->OutLists[lower];
+  List& in = this->InLists[upper];
+  Push(out, HalfArc{ static_cast<std::int32_t>(upper), static_cast<std::int32_t>(multiplicity), in.Size },
+    this->OutArena);
+  Push(in, HalfArc{ static_cast<std::int32_t>(lower), static_cast<std::int32_t>(multiplicity), out.Size - 1 },
+    this->InArena);
 }
 
 void HasseDiagram::EraseOut(Id lower, std::size_t k)
 {
-  HalfArcs& out = this->OutLists[lower];
-  const Id upper = out[k].Node;
-  const std::size_t j = out[k].Twin;
+  List& out = this->OutLists[lower];
+  const Id upper = out.Data[k].Node;
+  const std::size_t j = out.Data[k].Twin;
   // Swap-and-pop in both lists; the moved entries' mirrors learn where they
   // went (a removed node has no mirror left).
-  if (k + 1 != out.size())
+  if (k + 1 != out.Size)
   {
-    out[k] = out.back();
-    if (!this->Removed[out[k].Node])
+    const HalfArc& moved = out.Data[k] = out.Data[out.Size - 1];
+    if (!this->Removed[moved.Node])
     {
-      this->InLists[out[k].Node][out[k].Twin].Twin = static_cast<std::uint32_t>(k);
+      this->InLists[moved.Node].Data[moved.Twin].Twin = static_cast<std::uint32_t>(k);
     }
   }
-  out.pop_back();
-  HalfArcs& in = this->InLists[upper];
-  if (j + 1 != in.size())
+  --out.Size;
+  List& in = this->InLists[upper];
+  if (j + 1 != in.Size)
   {
-    in[j] = in.back();
-    if (!this->Removed[in[j].Node])
+    const HalfArc& moved = in.Data[j] = in.Data[in.Size - 1];
+    if (!this->Removed[moved.Node])
     {
-      this->OutLists[in[j].Node][in[j].Twin].Twin = static_cast<std::uint32_t>(j);
+      this->OutLists[moved.Node].Data[moved.Twin].Twin = static_cast<std::uint32_t>(j);
     }
   }
-  in.pop_back();
+  --in.Size;
 }
 
 int HasseDiagram::FlipParity(Id lower, Id upper)
@@ -224,32 +279,35 @@ int HasseDiagram::FlipParity(Id lower, Id upper)
     this->Insert(lower, upper, 1);
     return 1;
   }
-  HalfArc& out = this->OutLists[lower][static_cast<std::size_t>(k)];
+  HalfArc& out = this->OutLists[lower].Data[k];
   if (out.Multiplicity % 2 == 1)
   {
     this->EraseOut(lower, static_cast<std::size_t>(k));
     return 0;
   }
   out.Multiplicity = 1;
-  this->InLists[upper][out.Twin].Multiplicity = 1;
+  this->InLists[upper].Data[out.Twin].Multiplicity = 1;
   return 1;
 }
 
 void HasseDiagram::Remove(Id node)
 {
   this->Removed[node] = 1;
-  HalfArcs().swap(this->InLists[node]);
-  HalfArcs().swap(this->OutLists[node]);
+  this->InArena.Release(this->InLists[node].Data, this->InLists[node].Capacity);
+  this->OutArena.Release(this->OutLists[node].Data, this->OutLists[node].Capacity);
+  this->InLists[node] = List();
+  this->OutLists[node] = List();
 }
 
 std::vector<Arc> HasseDiagram::TakeArcs()
 {
-  std::vector<HalfArcs>().swap(this->InLists); // the Out lists hold every other arc
+  std::vector<List>().swap(this->InLists); // the Out lists hold every other arc
+  this->InArena.Clear();
   std::vector<Arc> arcs;
   std::size_t count = this->SampleArcs.size();
-  for (const HalfArcs& out : this->OutLists)
+  for (const List& out : this->OutLists)
   {
-    count += out.size(); // an upper bound: entries of removed nodes are skipped
+    count += out.Size; // an upper bound: entries of removed nodes are skipped
   }
   arcs.reserve(count);
   std::size_t next = 0;
@@ -263,18 +321,18 @@ std::vector<Arc> HasseDiagram::TakeArcs()
         arcs.push_back(this->SampleArcs[next]);
       }
     }
-    for (const HalfArc& h : this->OutLists[lower])
+    for (const HalfArc& h : this->Out(static_cast<Id>(lower)))
     {
       if (!this->Removed[h.Node])
       {
         arcs.push_back(Arc{ static_cast<Id>(lower), h.Node, h.Multiplicity });
       }
     }
-    HalfArcs().swap(this->OutLists[lower]);
     std::sort(arcs.begin() + static_cast<std::ptrdiff_t>(first), arcs.end(),
       [](const Arc& a, const Arc& b) { return a.Upper < b.Upper; });
   }
-  std::vector<HalfArcs>().swap(this->OutLists);
+  std::vector<List>().swap(this->OutLists);
+  this->OutArena.Clear();
   std::vector<char>().swap(this->Removed);
   std::vector<Arc>().swap(this->SampleArcs);
   return arcs;

@@ -3,9 +3,9 @@
 #ifndef flowrecon_HasseDiagram_h
 #define flowrecon_HasseDiagram_h
 
+#include "CompressedRows.h" // RowRange
 #include "FlowComplex.h"
-
-#include <tbb/scalable_allocator.h>
+#include "ListArena.h"
 
 #include <cstdint>
 #include <vector>
@@ -39,7 +39,7 @@ public:
     std::int32_t Multiplicity;
     std::uint32_t Twin;          ///< position of the mirror entry in the other end's list
   };
-  using HalfArcs = std::vector<HalfArc, tbb::scalable_allocator<HalfArc>>;
+  using HalfArcs = RowRange<HalfArc>;
 
   /// Validates the arcs against `nodes` (ids in range, index goes up by one,
   /// multiplicity >= 0; duplicate arcs are merged by adding multiplicities) and
@@ -50,8 +50,8 @@ public:
   /// Ancestors / successors of `node` with multiplicities, in no particular
   /// order, but for the arcs out of index-0 nodes. The lists may still hold
   /// entries of removed nodes: skip them (IsRemoved).
-  const HalfArcs& In(Id node) const { return this->InLists[node]; }
-  const HalfArcs& Out(Id node) const { return this->OutLists[node]; }
+  HalfArcs In(Id node) const { return Range(this->InLists[node]); }
+  HalfArcs Out(Id node) const { return Range(this->OutLists[node]); }
   bool IsRemoved(Id node) const { return this->Removed[node] != 0; }
   /// 0 when there is no arc. Both nodes must not be removed.
   int Multiplicity(Id lower, Id upper) const;
@@ -73,6 +73,20 @@ public:
   std::vector<Arc> TakeArcs();
 
 private:
+  /// A list in its arena (ListArena.h): 16 bytes a list, not a vector's 24 and
+  /// a malloc'd block.
+  struct List
+  {
+    HalfArc* Data = nullptr;
+    std::uint32_t Size = 0, Capacity = 0;
+  };
+  static HalfArcs Range(const List& l) { return HalfArcs(l.Data, l.Data + l.Size); }
+  /// Appends `h` to `list`, moving it to a larger block when full.
+  static void Push(List& list, const HalfArc& h, ListArena<HalfArc>& arena);
+  /// Lays each list out back to back with the capacity of its first arcs.
+  static void LayOut(std::vector<List>& lists, const std::vector<std::uint32_t>& degree,
+    ListArena<HalfArc>& arena);
+
   /// Position of `upper` in Out(lower), or -1.
   std::int64_t Find(Id lower, Id upper) const;
   void Insert(Id lower, Id upper, int multiplicity);
@@ -81,7 +95,9 @@ private:
   /// Merges arcs given more than once (adding their multiplicities).
   void MergeRepeatedArcs();
 
-  std::vector<HalfArcs> InLists, OutLists;
+  // Two arenas: the In lists can be freed on their own (TakeArcs).
+  ListArena<HalfArc> InArena, OutArena;
+  std::vector<List> InLists, OutLists;
   std::vector<char> Removed;
   std::vector<Arc> SampleArcs; ///< the arcs out of index-0 nodes, sorted, repeats merged
 };

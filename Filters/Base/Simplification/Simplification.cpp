@@ -82,7 +82,16 @@ public:
     : Nodes(nodes)
     , Diagram(nodes, arcs)
     , Alive(nodes.size(), true)
+    , Value(nodes.size())
   {
+    // What Offer reads of a node, 8 bytes instead of a 56-byte Node: most of
+    // its reads miss the cache. Index-0 nodes never are the lower node of a
+    // candidate (value 0), nor the maximum at infinity the upper (ratio +inf).
+    for (std::size_t i = 0; i < nodes.size(); ++i)
+    {
+      const Node& v = nodes[i];
+      this->Value[i] = v.IsInfinity() ? HUGE_VAL : v.Index == 0 ? 0 : v.Value;
+    }
   }
 
   SimplificationResult Run(
@@ -168,13 +177,12 @@ private:
   /// ratio) and the maximum at infinity is never cancelled.
   void Offer(Id lower, Id upper, int multiplicity, std::vector<Candidate>& out) const
   {
-    const Node& a = this->Nodes[lower];
-    const Node& b = this->Nodes[upper];
-    if (multiplicity % 2 == 0 || a.Index == 0 || b.IsInfinity() || !(a.Value > 0))
+    const double a = this->Value[lower];
+    if (multiplicity % 2 == 0 || !(a > 0))
     {
       return;
     }
-    const double ratio = PersistenceRatio(b.Value, a.Value);
+    const double ratio = PersistenceRatio(this->Value[upper], a);
     // A pair above the threshold is never cancelled (its ratio depends on its
     // two nodes only): keeping it out of the queue keeps the queue small.
     if (std::isfinite(ratio) && ratio <= this->Threshold)
@@ -254,6 +262,7 @@ private:
   const std::vector<Node>& Nodes;
   HasseDiagram Diagram;
   std::vector<bool> Alive;
+  std::vector<double> Value; ///< of each node, 0 for index 0, +inf for infinity
   SimplificationResult* Result = nullptr;
   bool RecordLowers = false, RecordUppers = false;
   double Threshold = 0;
