@@ -182,8 +182,9 @@ CappedReconstruction Continue(CappedBuild& b, double tp, bool take, const Progre
   const bool late = !r.Complex.DeferredPatches.empty() || r.Lines;
   SimplifyRun(r, tp, b.Cap, progress.Range(0, 0.5));
   r.SimplificationSeconds = lap();
-  // The simplification's In/Out lists were tbbmalloc's; the queue allocates
-  // from glibc's heap, which cannot reuse them.
+  // The simplification's lists are freed: their pages go back to the system
+  // (tbbmalloc's pools, which other runs' blocks may still hold, and glibc's
+  // heap cannot reuse each other's memory).
   ReleaseFreedMemory();
   GrowRun(r, b.Cap, late, progress.Range(0.5, 1.0));
   r.QueueSeconds = lap();
