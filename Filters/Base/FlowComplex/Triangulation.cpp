@@ -2,12 +2,17 @@
 
 #include "Progress.h"
 
+#include <CGAL/Spatial_sort_traits_adapter_3.h>
+#include <CGAL/property_map.h>
+#include <CGAL/spatial_sort.h>
+
 #include <tbb/global_control.h>
 #include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <atomic>
 #include <cstdint>
+#include <numeric>
 #include <utility>
 
 namespace flowrecon
@@ -26,54 +31,23 @@ Triangulation::Triangulation(const std::vector<Point3>& points, const Progress& 
   : Coords(points)
   , SerialNumber(NextSerial())
 {
-  // Large clouds go in consecutive runs of their points, so that the phase
-  // reports progress and can be aborted. The builder hands the points in a
-  // spatial order, so a run is a region; inserting the runs one after the other
-  // costs what one range does (interleaved subsamples cost 45 % more: their
-  // cells end up scattered in memory), and the triangulation does not depend on
-  // the order (symbolic perturbation).
-  const std::size_t rounds = points.size() >= (std::size_t(1) << 16) ? 8 : 1;
-  std::vector<std::pair<KPoint, Id>> items;
-  items.reserve(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i)
-  {
-    items.emplace_back(KPoint(points[i][0], points[i][1], points[i][2]), static_cast<Id>(i));
-  }
-  std::vector<std::size_t> roundEnd;
-  for (std::size_t r = 1; r <= rounds; ++r)
-  {
-    roundEnd.push_back(points.size() * r / rounds);
-  }
-  // The range insertion spatially sorts the points first, then inserts them in
-  // parallel; the lock grid serves only while inserting. Without it CGAL
-  // inserts sequentially, which is faster below 4 threads: measured on 2 cores
-  // (10^5 points), the locks cost what the second core gains on a uniform cube
-  // (0.65 s against 0.68 s) and make a sphere's surface sample 2.4 times slower
-  // (3.18 s against 1.35 s: the interior cells of a surface sample span the
-  // whole shape, so concurrent insertions keep meeting on their locks).
   const std::size_t threads = std::min<std::size_t>(
     tbb::this_task_arena::max_concurrency(),
     tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
-  const bool parallel = threads >= 4;
-  CGAL::Bbox_3 box;
-  for (const auto& item : items)
+  // Without a lock grid CGAL inserts sequentially, which is faster below 4
+  // threads: measured on 2 cores (10^5 points), the locks cost what the second
+  // core gains on a uniform cube (0.65 s against 0.68 s) and make a sphere's
+  // surface sample 2.4 times slower (3.18 s against 1.35 s: the interior cells
+  // of a surface sample span the whole shape, so concurrent insertions keep
+  // meeting on their locks).
+  if (threads >= 4)
   {
-    box += item.first.bbox();
+    this->InsertInParallel(points, progress);
   }
-  Delaunay::Lock_data_structure locks(box, 50);
-  this->DT.set_lock_data_structure(parallel ? &locks : nullptr);
-  std::size_t begin = 0;
-  for (std::size_t r = 0; r < rounds; ++r)
+  else
   {
-    progress(static_cast<double>(begin) / static_cast<double>(items.size() + 1),
-      "Delaunay triangulation");
-    this->DT.insert(items.begin() + static_cast<std::ptrdiff_t>(begin),
-      items.begin() + static_cast<std::ptrdiff_t>(roundEnd[r]));
-    begin = roundEnd[r];
+    this->InsertInOrder(points, progress);
   }
-  this->DT.set_lock_data_structure(nullptr);
-  std::vector<std::pair<KPoint, Id>>().swap(items);
-
   this->Vertices.assign(points.size(), VertexHandle());
   for (auto v = this->DT.finite_vertices_begin(); v != this->DT.finite_vertices_end(); ++v)
   {
@@ -99,6 +73,70 @@ Triangulation::Triangulation(const std::vector<Point3>& points, const Progress& 
   {
     throw InputError("the Delaunay triangulation of this many points exceeds 2^31 cells");
   }
+}
+
+void Triangulation::InsertInOrder(const std::vector<Point3>& points, const Progress& progress)
+{
+  // What CGAL's range insertion does sequentially (one spatial sort of the
+  // whole cloud, its randomized rounds included, then each point from the
+  // last vertex), point by point so that the phase reports progress and can
+  // be aborted. Range insertions of consecutive runs of the points cost 1.3-1.5
+  // times that on 10^6 bunny and cube points: most of each run's points fall
+  // outside the triangulation of the runs before, and inserting outside the
+  // hull is slow.
+  std::vector<KPoint> kpoints;
+  kpoints.reserve(points.size());
+  for (const Point3& p : points)
+  {
+    kpoints.emplace_back(p[0], p[1], p[2]);
+  }
+  std::vector<std::size_t> order(points.size());
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  using Map = CGAL::Pointer_property_map<KPoint>::const_type;
+  const Map map = CGAL::make_property_map(static_cast<const std::vector<KPoint>&>(kpoints));
+  CGAL::spatial_sort<CGAL::Parallel_tag>(
+    order.begin(), order.end(), CGAL::Spatial_sort_traits_adapter_3<Kernel, Map>(map));
+  VertexHandle hint;
+  for (std::size_t k = 0; k < order.size(); ++k)
+  {
+    if (k % (std::size_t(1) << 16) == 0)
+    {
+      progress(static_cast<double>(k) / static_cast<double>(order.size() + 1), "Delaunay triangulation");
+    }
+    // The points are distinct (PrepareInput): each one is a new vertex.
+    hint = this->DT.insert(kpoints[order[k]], hint);
+    hint->info() = static_cast<Id>(order[k]);
+  }
+}
+
+void Triangulation::InsertInParallel(const std::vector<Point3>& points, const Progress& progress)
+{
+  // Consecutive runs of the points, one range insertion each (spatially
+  // sorted, then inserted in parallel), so that the phase reports progress and
+  // can be aborted; the builder hands the points in a spatial order, so a run
+  // is a region. The lock grid serves only while inserting.
+  const std::size_t rounds = points.size() >= (std::size_t(1) << 16) ? 8 : 1;
+  std::vector<std::pair<KPoint, Id>> items;
+  items.reserve(points.size());
+  CGAL::Bbox_3 box;
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    items.emplace_back(KPoint(points[i][0], points[i][1], points[i][2]), static_cast<Id>(i));
+    box += items.back().first.bbox();
+  }
+  Delaunay::Lock_data_structure locks(box, 50);
+  this->DT.set_lock_data_structure(&locks);
+  std::size_t begin = 0;
+  for (std::size_t r = 1; r <= rounds; ++r)
+  {
+    progress(static_cast<double>(begin) / static_cast<double>(items.size() + 1),
+      "Delaunay triangulation");
+    const std::size_t end = points.size() * r / rounds;
+    this->DT.insert(items.begin() + static_cast<std::ptrdiff_t>(begin),
+      items.begin() + static_cast<std::ptrdiff_t>(end));
+    begin = end;
+  }
+  this->DT.set_lock_data_structure(nullptr);
 }
 
 bool Triangulation::Link(Id u, Id v, std::vector<Id>& out, std::vector<CellHandle>* cells,

@@ -21,8 +21,8 @@ public:
   /// Builds the triangulation of `points` (inserted with spatial sorting); vertex
   /// info is the index into `points`. Points must be pairwise distinct, and must
   /// outlive the triangulation (they are referenced, not copied).
-  /// `progress` (fractions of this phase) is reported between rounds of
-  /// insertion and may abort (it throws Aborted).
+  /// `progress` (fractions of this phase) is reported during the insertion
+  /// and may abort (it throws Aborted).
   explicit Triangulation(const std::vector<Point3>& points, const Progress& progress = Progress());
 
   const Delaunay& Dt() const { return this->DT; }
@@ -60,6 +60,10 @@ public:
     CellHandle hint = CellHandle()) const;
 
 private:
+  /// One thread at a time (below 4 threads), or with CGAL's lock grid.
+  void InsertInOrder(const std::vector<Point3>& points, const Progress& progress);
+  void InsertInParallel(const std::vector<Point3>& points, const Progress& progress);
+
   const std::vector<Point3>& Coords;
   std::uint64_t SerialNumber;
   Delaunay DT;
