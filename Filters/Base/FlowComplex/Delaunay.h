@@ -3,7 +3,8 @@
 // a dense index (for per-cell memo tables). The triangulation is CGAL's
 // concurrent one: the Delaunay triangulation is unique (CGAL breaks cospherical
 // ties by symbolic perturbation), so building it in parallel changes only the
-// order of cells in memory, which nothing downstream depends on.
+// order of cells in memory; their dense ids are then given in the order of
+// their vertices (Triangulation.h), so that nothing depends on the schedule.
 #ifndef flowrecon_Delaunay_h
 #define flowrecon_Delaunay_h
 

@@ -6,10 +6,14 @@
 #include <CGAL/property_map.h>
 #include <CGAL/spatial_sort.h>
 
+#include <tbb/blocked_range.h>
 #include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <numeric>
@@ -73,6 +77,10 @@ Triangulation::Triangulation(const std::vector<Point3>& points, const Progress& 
   {
     throw InputError("the Delaunay triangulation of this many points exceeds 2^31 cells");
   }
+  if (threads >= 4)
+  {
+    this->NumberCellsByVertices();
+  }
 }
 
 void Triangulation::InsertInOrder(const std::vector<Point3>& points, const Progress& progress)
@@ -97,9 +105,10 @@ void Triangulation::InsertInOrder(const std::vector<Point3>& points, const Progr
   CGAL::spatial_sort<CGAL::Parallel_tag>(
     order.begin(), order.end(), CGAL::Spatial_sort_traits_adapter_3<Kernel, Map>(map));
   VertexHandle hint;
+  const std::size_t step = std::max<std::size_t>(1, order.size() / 64);
   for (std::size_t k = 0; k < order.size(); ++k)
   {
-    if (k % (std::size_t(1) << 16) == 0)
+    if (k % step == 0)
     {
       progress(static_cast<double>(k) / static_cast<double>(order.size() + 1), "Delaunay triangulation");
     }
@@ -137,6 +146,41 @@ void Triangulation::InsertInParallel(const std::vector<Point3>& points, const Pr
     begin = end;
   }
   this->DT.set_lock_data_structure(nullptr);
+}
+
+void Triangulation::NumberCellsByVertices()
+{
+  // A parallel insertion leaves its cells in an order that depends on the
+  // schedule; numbered by their sorted vertex ids instead, they come out the
+  // same from run to run (the compact output lists a solid's tetrahedra by
+  // cell id).
+  struct Keyed
+  {
+    std::array<std::int32_t, 4> Key;
+    CellHandle Cell;
+  };
+  std::vector<Keyed> keyed(this->Cells.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, keyed.size()),
+    [&](const tbb::blocked_range<std::size_t>& r) {
+      for (std::size_t k = r.begin(); k != r.end(); ++k)
+      {
+        const CellHandle c = this->Cells[k];
+        std::array<std::int32_t, 4> key{};
+        for (int i = 0; i < 4; ++i)
+        {
+          key[i] = static_cast<std::int32_t>(c->vertex(i)->info());
+        }
+        std::sort(key.begin(), key.end());
+        keyed[k] = Keyed{ key, c };
+      }
+    });
+  tbb::parallel_sort(keyed.begin(), keyed.end(),
+    [](const Keyed& a, const Keyed& b) { return a.Key < b.Key; });
+  for (std::size_t k = 0; k < keyed.size(); ++k)
+  {
+    this->Cells[k] = keyed[k].Cell;
+    keyed[k].Cell->info() = static_cast<Id>(k);
+  }
 }
 
 bool Triangulation::Link(Id u, Id v, std::vector<Id>& out, std::vector<CellHandle>* cells,

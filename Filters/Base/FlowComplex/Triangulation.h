@@ -63,6 +63,8 @@ private:
   /// One thread at a time (below 4 threads), or with CGAL's lock grid.
   void InsertInOrder(const std::vector<Point3>& points, const Progress& progress);
   void InsertInParallel(const std::vector<Point3>& points, const Progress& progress);
+  /// Cell ids in the order of the cells' sorted vertex ids.
+  void NumberCellsByVertices();
 
   const std::vector<Point3>& Coords;
   std::uint64_t SerialNumber;
