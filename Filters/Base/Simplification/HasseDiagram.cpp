@@ -119,9 +119,10 @@ void HasseDiagram::Push(List& list, const HalfArc& h, ListArena<HalfArc>& arena)
 {
   if (list.Size == list.Capacity)
   {
-    if (list.Size == std::numeric_limits<std::uint32_t>::max())
+    // Capacities are powers of two held in 32 bits (ListArena.h).
+    if (list.Size >= (std::uint32_t(1) << 30))
     {
-      throw InputError("Hasse diagram: a node with more than 2^32 arcs");
+      throw InputError("Hasse diagram: a node with more than 2^30 arcs");
     }
     std::uint32_t capacity = 0;
     HalfArc* moved = arena.Allocate(std::max<std::uint32_t>(4, list.Size + (list.Size >> 1) + 1), capacity);
