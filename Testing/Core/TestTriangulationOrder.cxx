@@ -3,7 +3,9 @@
 // varies from run to run, so the ids are then given in the order of the cells'
 // sorted vertex ids. Built twice in a 4-thread arena (parallel insertion even on
 // a 2-core machine), the ids must list the same cells, in increasing vertex
-// order, and the cells must be those of the sequential build.
+// order, and the cells must be those of the sequential build. Points that
+// coincide (callers pass distinct ones) are refused with an InputError rather
+// than leaving a point without its vertex.
 #include "Check.h"
 #include "Clouds.h"
 #include "Triangulation.h"
@@ -51,11 +53,29 @@ void TestParallelOrder(const char* name, const std::vector<Point3>& points)
   CHECK(sequential == first);
 }
 
+void TestCoincidingPoints()
+{
+  std::cout << "-- coinciding points\n";
+  std::vector<Point3> points = clouds::Cube(200, 43);
+  points.push_back(points[17]);
+  bool refused = false;
+  try
+  {
+    const Triangulation tri(points);
+  }
+  catch (const InputError&)
+  {
+    refused = true;
+  }
+  CHECK(refused);
+}
+
 } // namespace
 
 int main()
 {
   TestParallelOrder("cube 20000", clouds::Cube(20000, 41));
   TestParallelOrder("sphere 8000", clouds::Sphere(8000, 42));
+  TestCoincidingPoints();
   return check::Finish("TestTriangulationOrder");
 }

@@ -17,6 +17,7 @@
 #include <atomic>
 #include <cstdint>
 #include <numeric>
+#include <string>
 #include <utility>
 
 namespace flowrecon
@@ -51,6 +52,13 @@ Triangulation::Triangulation(const std::vector<Point3>& points, const Progress& 
   else
   {
     this->InsertInOrder(points, progress);
+  }
+  // Each point must be a vertex of its own (the Vertices table below): two
+  // points that coincide (the callers pass distinct ones) end here in one line.
+  if (this->DT.number_of_vertices() != points.size())
+  {
+    throw InputError("Delaunay triangulation: " + std::to_string(points.size()) +
+      " points gave " + std::to_string(this->DT.number_of_vertices()) + " vertices (coinciding points)");
   }
   this->Vertices.assign(points.size(), VertexHandle());
   for (auto v = this->DT.finite_vertices_begin(); v != this->DT.finite_vertices_end(); ++v)
