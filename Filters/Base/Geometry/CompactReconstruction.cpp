@@ -12,6 +12,8 @@
 
 #include <algorithm>
 #include <functional>
+#include <tuple>
+#include <limits>
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
@@ -351,36 +353,66 @@ void SelectTetrahedra(const CellView& cells, const CompactPieces& pieces,
 /// a compact triangle, and the node of each such (cell, facet), keyed by
 /// cell * 4 + facet. Only a void to fill needs the nodes: they are sorted
 /// then (SortSides), not for every t_r.
+/// The facets of each Delaunay cell that are triangles of the complex, as
+/// bits; which node each wall belongs to is read only for a void being filled
+/// (rare), so the sorted sides are made then: at 10^6 surface points they
+/// were 64 MB, and most of the compact output's peak.
 struct Walls
 {
-  std::vector<std::pair<Id, Id>> Sides;
-  std::vector<std::uint8_t> Facets;
-  bool Sorted = false;
-
-  void SortSides()
+  /// A triangle seen from one of its cells: (Cell, Facet), then its node.
+  struct Side
   {
-    if (!this->Sorted)
+    std::int32_t Cell;
+    std::int32_t Node;
+    std::int8_t Facet;
+    bool operator<(const Side& o) const
     {
-      std::sort(this->Sides.begin(), this->Sides.end());
-      this->Sorted = true;
+      return std::tie(this->Cell, this->Facet, this->Node) < std::tie(o.Cell, o.Facet, o.Node);
     }
+  };
+  std::vector<std::uint8_t> Facets;
+
+  /// The node of the triangle on facet `facet` of `cell` (a wall); the least
+  /// one when several triangles share it.
+  Id NodeAt(Id cell, int facet, const CompactComplex& out, const std::vector<const Claim*>& written)
+  {
+    if (this->Sides.empty())
+    {
+      this->Sides.reserve(2 * written.size());
+      for (std::size_t k = 0; k < written.size(); ++k)
+      {
+        for (int side = 0; side < 2; ++side)
+        {
+          if (written[k]->Cells[side] >= 0)
+          {
+            this->Sides.push_back(Side{ written[k]->Cells[side],
+              static_cast<std::int32_t>(out.TriangleNode[k]), written[k]->Facets[side] });
+          }
+        }
+      }
+      std::sort(this->Sides.begin(), this->Sides.end());
+    }
+    const Side key{ static_cast<std::int32_t>(cell), std::numeric_limits<std::int32_t>::min(),
+      static_cast<std::int8_t>(facet) };
+    return std::lower_bound(this->Sides.begin(), this->Sides.end(), key)->Node;
   }
+
+private:
+  std::vector<Side> Sides;
 };
 
-Walls FindWalls(Id cellCount, const CompactComplex& out, const std::vector<const Claim*>& written)
+Walls FindWalls(Id cellCount, const std::vector<const Claim*>& written)
 {
   Walls walls;
   walls.Facets.assign(static_cast<std::size_t>(cellCount), 0);
-  for (std::size_t k = 0; k < written.size(); ++k)
+  for (const Claim* claim : written)
   {
     for (int side = 0; side < 2; ++side)
     {
-      const Id cell = written[k]->Cells[side];
+      const Id cell = claim->Cells[side];
       if (cell >= 0)
       {
-        const int facet = written[k]->Facets[side];
-        walls.Facets[cell] |= static_cast<std::uint8_t>(1u << facet);
-        walls.Sides.emplace_back(4 * cell + facet, out.TriangleNode[k]);
+        walls.Facets[cell] |= static_cast<std::uint8_t>(1u << claim->Facets[side]);
       }
     }
   }
@@ -399,23 +431,33 @@ Walls FindWalls(Id cellCount, const CompactComplex& out, const std::vector<const
 /// not filled, and only counting the voids needs to know more.
 bool SearchRegion(const std::vector<std::int32_t>& cellNode, const Walls& walls,
   const std::vector<char>& isMaximum, const Neighbourhood& neighbours, Id start,
-  std::int32_t search, bool toVoid, std::vector<std::int32_t>& mark, std::vector<Id>& component,
-  std::vector<Id>& stack, bool& walled, bool& maximum)
+  std::int32_t search, bool toVoid, std::vector<std::int32_t>& mark,
+  std::vector<std::int32_t>& component, std::vector<std::int32_t>& stack, bool& walled, bool& maximum)
 {
   walled = false;
   maximum = false;
   component.clear();
-  stack.assign(1, start); // reused: most searches stop within a few cells
+  stack.assign(1, static_cast<std::int32_t>(start)); // reused: most searches stop within a few cells
   mark[start] = search;
   while (!stack.empty())
   {
     const Id c = stack.back();
     stack.pop_back();
-    component.push_back(c);
-    maximum = maximum || isMaximum[c] != 0;
-    if (maximum && toVoid)
+    if (!maximum && isMaximum[c] != 0)
     {
-      return false;
+      maximum = true;
+      if (toVoid)
+      {
+        return false;
+      }
+      // A region with a maximum is not filled: its cells are not needed (a
+      // closed surface's inside is millions of them).
+      component.clear();
+      component.shrink_to_fit();
+    }
+    if (!maximum)
+    {
+      component.push_back(static_cast<std::int32_t>(c));
     }
     walled = walled || walls.Facets[c] != 0;
     for (int k = 0; k < 4; ++k)
@@ -437,7 +479,7 @@ bool SearchRegion(const std::vector<std::int32_t>& cellNode, const Walls& walls,
       if (mark[n] == 0)
       {
         mark[n] = search;
-        stack.push_back(n);
+        stack.push_back(static_cast<std::int32_t>(n));
       }
     }
   }
@@ -447,9 +489,9 @@ bool SearchRegion(const std::vector<std::int32_t>& cellNode, const Walls& walls,
 /// The node of largest value among the walls and complex cells around the
 /// bounded region `component` (the least id on ties: no order matters).
 Id WallNode(const std::vector<Node>& nodes, const std::vector<std::int32_t>& cellNode, Walls& walls,
-  const Neighbourhood& neighbours, const std::vector<Id>& component)
+  const Neighbourhood& neighbours, const std::vector<std::int32_t>& component, const CompactComplex& out,
+  const std::vector<const Claim*>& written)
 {
-  walls.SortSides();
   Id wall = -1;
   auto meet = [&](Id node) {
     if (wall < 0 || nodes[node].Value > nodes[wall].Value ||
@@ -464,8 +506,7 @@ Id WallNode(const std::vector<Node>& nodes, const std::vector<std::int32_t>& cel
     {
       if (walls.Facets[c] & (1u << k))
       {
-        const std::pair<Id, Id> key(4 * c + k, -1);
-        meet(std::lower_bound(walls.Sides.begin(), walls.Sides.end(), key)->second);
+        meet(walls.NodeAt(c, k, out, written));
         continue;
       }
       const Id n = neighbours[c][k];
@@ -495,36 +536,20 @@ void FillVoidsWithoutMaximum(const CellView& cells, const std::vector<Node>& nod
   const std::vector<const Claim*>& written, bool count, CompactComplex& out,
   std::vector<Id>& filled)
 {
-  Walls walls = FindWalls(cells.Count(), out, written);
-  std::vector<Id> starts;
-  for (Id c = 0; c < cells.Count(); ++c)
-  {
-    const bool inside = !cellNode.empty() && cellNode[c] >= 0;
-    if (!inside && walls.Facets[c] != 0)
-    {
-      starts.push_back(c);
-    }
-    for (int k = 0; inside && k < 4; ++k)
-    {
-      const Id next = neighbours[c][k];
-      if (next >= 0 && cellNode[next] < 0)
-      {
-        starts.push_back(next);
-      }
-    }
-  }
+  Walls walls = FindWalls(cells.Count(), written);
   const std::vector<char> isMaximum = cells.MaximumFlags();
   std::vector<std::int32_t> mark(static_cast<std::size_t>(cells.Count()), 0);
-  std::vector<Id> component, stack;
+  std::vector<std::int32_t> component, stack;
   std::int32_t search = 0;
   // Filled in a canonical order (regions by their least cell, cells sorted),
   // which CompactFamily, finding them another way, gives too.
-  std::vector<std::pair<std::vector<Id>, Id>> fills;
-  for (const Id start : starts)
-  {
+  std::vector<std::pair<std::vector<std::int32_t>, Id>> fills;
+  // A search from each cell next to a wall or to the complex's cells, in cell
+  // order, as they are met.
+  const auto searchFrom = [&](Id start) {
     if (mark[start] != 0)
     {
-      continue;
+      return;
     }
     bool walled = false;
     bool maximum = false;
@@ -532,17 +557,33 @@ void FillVoidsWithoutMaximum(const CellView& cells, const std::vector<Node>& nod
           component, stack, walled, maximum) ||
       !walled)
     {
-      continue;
+      return;
     }
     if (maximum)
     {
       ++out.Voids; // a void of the exact reconstruction too
-      continue;
+      return;
     }
     ++out.FilledVoids;
-    const Id wall = WallNode(nodes, cellNode, walls, neighbours, component);
+    const Id wall = WallNode(nodes, cellNode, walls, neighbours, component, out, written);
     std::sort(component.begin(), component.end());
     fills.emplace_back(component, wall);
+  };
+  for (Id c = 0; c < cells.Count(); ++c)
+  {
+    const bool inside = !cellNode.empty() && cellNode[c] >= 0;
+    if (!inside && walls.Facets[c] != 0)
+    {
+      searchFrom(c);
+    }
+    for (int k = 0; inside && k < 4; ++k)
+    {
+      const Id next = neighbours[c][k];
+      if (next >= 0 && cellNode[next] < 0)
+      {
+        searchFrom(next);
+      }
+    }
   }
   std::sort(fills.begin(), fills.end());
   for (const auto& fill : fills)
