@@ -438,8 +438,10 @@ void CloudRun::DrawCompact()
   {
     this->Result.NodeThreshold[i] = r.Run.Nodes[r.Carriers[i]].Threshold;
   }
-  this->Result.Compact =
-    CompactReconstruction(*r.Triangulation, r.Complex.Nodes, selected, this->Report.Range(0.9, 0.95));
+  // The walks are the flow's last use (Draw dropped the deferred lines): its
+  // memory goes before the search for voids, the compact output's peak.
+  this->Result.Compact = CompactReconstruction(
+    *r.Triangulation, r.Complex.Nodes, selected, this->Report.Range(0.9, 0.95), true);
   this->PhaseDone("compact output");
 }
 

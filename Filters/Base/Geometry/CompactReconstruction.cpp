@@ -976,9 +976,13 @@ CompactCells CellsOf(const Retriangulation& re)
 }
 
 CompactComplex CompactReconstruction(const Retriangulation& re, const std::vector<Node>& nodes,
-  const std::vector<Id>& selected, const Progress& progress)
+  const std::vector<Id>& selected, const Progress& progress, bool releaseFlow)
 {
   const CompactPieces pieces = PrepareCompact(re, nodes, selected, progress.Range(0, 0.9));
+  if (releaseFlow)
+  {
+    re.ReleaseFlow();
+  }
   progress(0.9, "compact voids");
   CompactComplex out = SelectCompact(re, nodes, pieces, selected);
   progress(1.0, "compact output");

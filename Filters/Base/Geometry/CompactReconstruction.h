@@ -170,9 +170,11 @@ CompactComplex SelectCompact(const CompactCells& cells, const std::vector<Node>&
 /// Delaunay cell when a maximum is selected (up to its value). A bounded
 /// region of the complement that holds no maximum is filled with its cells:
 /// the exact reconstruction has no such void. Throws InputError when a node
-/// does not belong to `re`, Degenerate if a walk meets a tie.
+/// does not belong to `re`, Degenerate if a walk meets a tie. With
+/// `releaseFlow`, re's flow is freed after the walks (Retriangulation::ReleaseFlow:
+/// only for a caller that knows nothing else holds it).
 CompactComplex CompactReconstruction(const Retriangulation& re, const std::vector<Node>& nodes,
-  const std::vector<Id>& selected, const Progress& progress = Progress());
+  const std::vector<Id>& selected, const Progress& progress = Progress(), bool releaseFlow = false);
 
 /// b0, b1, b2, b3 of the simplicial complex the cells span, by cell homology
 /// (CellHomology): the oracle of compact.Betti, superlinear (50 s for 2 10^6

@@ -131,6 +131,12 @@ SuccessorForest& Retriangulation::Flow() const
   return *this->Forest;
 }
 
+void Retriangulation::ReleaseFlow() const
+{
+  this->Forest.reset(); // it refers to MaximumOfCell
+  this->MaximumOfCell.reset();
+}
+
 void Retriangulation::SetBases()
 {
   this->Base2_ = this->Tri_->NumberOfVertices() + this->Cs.Edges.ValueCount();

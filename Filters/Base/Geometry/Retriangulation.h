@@ -66,6 +66,10 @@ public:
   /// (on a 10^5-point bunny the second t_p followed every deferred line anew).
   /// Made on first use: call it first from one thread.
   SuccessorForest& Flow() const;
+  /// Frees the flow (made again on next use): for a caller that knows no one
+  /// holds it (the deferred flow lines refer to it), before a phase that
+  /// needs the memory (10^6 torus points: 19 M cells, 9 bytes each).
+  void ReleaseFlow() const;
 
   static const char* Mismatch();
 
