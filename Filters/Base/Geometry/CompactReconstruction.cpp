@@ -12,8 +12,8 @@
 
 #include <algorithm>
 #include <functional>
-#include <tuple>
 #include <limits>
+#include <tuple>
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
@@ -350,13 +350,10 @@ void SelectTetrahedra(const CellView& cells, const CompactPieces& pieces,
 }
 
 /// The walls of the complement's regions: per cell, a bit per facet that is
-/// a compact triangle, and the node of each such (cell, facet), keyed by
-/// cell * 4 + facet. Only a void to fill needs the nodes: they are sorted
-/// then (SortSides), not for every t_r.
-/// The facets of each Delaunay cell that are triangles of the complex, as
-/// bits; which node each wall belongs to is read only for a void being filled
-/// (rare), so the sorted sides are made then: at 10^6 surface points they
-/// were 64 MB, and most of the compact output's peak.
+/// a compact triangle. Which node each wall belongs to is read only for a
+/// void being filled (rare), so the sorted sides are made then: made for every
+/// search, they were 64 MB at 10^6 surface points, most of the compact
+/// output's peak.
 struct Walls
 {
   /// A triangle seen from one of its cells: (Cell, Facet), then its node.
