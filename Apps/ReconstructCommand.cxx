@@ -479,14 +479,25 @@ void PrintJumps(const Reconstruction& r, double jumps)
 {
   std::cout << "largest jumps of the profile (step: threshold before -> after, node, index, "
                "critical value, location):\n";
+  // Locations to 10^-5 of the nodes' extent, wherever the cloud sits.
+  std::array<double, 3> lo{ { HUGE_VAL, HUGE_VAL, HUGE_VAL } }, hi{ { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL } };
+  for (const Node& n : r.Nodes)
+  {
+    for (int k = 0; k < 3 && !n.IsInfinity(); ++k)
+    {
+      lo[k] = std::min(lo[k], n.Location[k]);
+      hi[k] = std::max(hi[k], n.Location[k]);
+    }
+  }
+  const double extent = std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
   for (const ProfileJumpNode& j : LargestProfileJumps(r.Profile, static_cast<std::size_t>(jumps)))
   {
     const bool known = j.Node >= 0 && j.Node < static_cast<Id>(r.Nodes.size());
     const Point3 x = known ? r.Nodes[j.Node].Location : Point3{ { 0, 0, 0 } };
     std::cout << "  step " << j.Jump.Step << ": " << j.Jump.Before << " -> " << j.Jump.After
               << ", node " << j.Node << ", index " << j.Index << ", value "
-              << (known ? r.Nodes[j.Node].Value : std::nan("")) << ", at (" << x[0] << ", "
-              << x[1] << ", " << x[2] << ")\n";
+              << (known ? r.Nodes[j.Node].Value : std::nan("")) << ", at "
+              << PlaceText(x, 1e-5 * extent) << "\n";
   }
 }
 

@@ -381,9 +381,8 @@ std::string Describe(const UnderSampledPlace& place)
   const int up = place.Appears ? 1 : 0;
   const int d = place.Dimension;
   std::ostringstream os;
-  os << "under-sampled near (" << place.Location[0] << ", " << place.Location[1] << ", "
-     << place.Location[2] << "): spacing " << place.Spacing << "; at t_r " << place.Threshold
-     << " ";
+  os << "under-sampled near " << PlaceText(place.Location, place.Spacing / 10) << ": spacing "
+     << place.Spacing << "; at t_r " << place.Threshold << " ";
   if (place.Count == 1)
   {
     os << (d == 0 && up == 0 ? "" : "a ") << one[up][d];
@@ -392,6 +391,19 @@ std::string Describe(const UnderSampledPlace& place)
   {
     os << place.Count << " " << many[up][d];
   }
+  return os.str();
+}
+
+std::string PlaceText(const std::array<double, 3>& x, double resolution)
+{
+  const double far = std::max({ std::fabs(x[0]), std::fabs(x[1]), std::fabs(x[2]) });
+  int digits = 6;
+  if (far > 0 && resolution > 0 && std::isfinite(far) && std::isfinite(resolution))
+  {
+    digits = std::clamp(static_cast<int>(std::ceil(std::log10(far / resolution))) + 1, 6, 17);
+  }
+  std::ostringstream os;
+  os << std::setprecision(digits) << "(" << x[0] << ", " << x[1] << ", " << x[2] << ")";
   return os.str();
 }
 

@@ -99,6 +99,11 @@ std::vector<UnderSampledPlace> UnderSampledPlaces(vtkPolyData* warnings);
 /// close" for two changes).
 std::string Describe(const UnderSampledPlace& place);
 
+/// "(x, y, z)" with enough significant digits (6 at least) that a step of
+/// `resolution` shows, however far x is from the origin: a georeferenced scan
+/// sits at 10^6 units and more, where 6 digits do not tell places apart.
+std::string PlaceText(const std::array<double, 3>& x, double resolution);
+
 } // namespace flowrecon
 
 #endif

@@ -5,7 +5,8 @@ sphere, a torus and a genus-2 surface (Apps/Scripts/generate_clouds.py): the rig
 Betti numbers and no warning. The same sphere and torus with a known region
 thinned (a polar cap, the top of the tube: half or more of its points removed):
 a wrong answer, at least one warning, and every warning inside the thinned
-region. Usage: test_undersampling.py FLOWRECON WORKDIR
+region. One of them moved 4*10^6 units away: the same answer, and its places
+printed finely enough to be found there. Usage: test_undersampling.py FLOWRECON WORKDIR
 """
 import os
 import re
@@ -58,6 +59,21 @@ for name, top, removed in (("sphere_qu", 0.7, 0.5), ("sphere_qu", 0.7, 0.7), ("t
         "OK" if ok else "WRONG")
     if not ok:
         failures.append("%s thinned %g" % (name, removed))
+# The same cloud where a georeferenced scan sits (10^6 units from the origin):
+# the same answer, and the places printed finely enough to find (6 digits
+# would be off by about 5 units there, a hundred times the spacing).
+offset = np.array([512345.0, 4123456.0, 105.0])
+base = gc.make("sphere_qu", size=3000)
+keep = (base[:, 2] <= 0.7) | (np.random.default_rng(3).uniform(size=len(base)) > 0.5)
+near = reconstruct("sphere_qu_thinned_near", base[keep])
+far = reconstruct("sphere_qu_thinned_far", base[keep] + offset)
+moved = [tuple(np.subtract(p, offset)) for p in far[1]]
+ok = (far[0] == near[0] and len(moved) == len(near[1]) and near[1] and
+      all(np.max(np.abs(np.subtract(a, b))) < 0.005 for a, b in zip(moved, near[1])))
+print("thinned sphere moved by %s: Betti %s (at the origin %s), places minus the offset %s" % (
+    offset.tolist(), far[0], near[0], ["(%.4f, %.4f, %.4f)" % p for p in moved]), "OK" if ok else "WRONG")
+if not ok:
+    failures.append("thinned sphere far from the origin")
 if failures:
     raise SystemExit("under-sampling warnings wrong on: " + ", ".join(failures))
 print("no warning on clean samples, a warning inside every thinned region")
