@@ -102,7 +102,8 @@ public:
    * Choose t_r from the data (then ReconstructionThreshold is not used): among
    * the windows of t_r in (1.5, MaximumThreshold] where the Betti numbers stay
    * the same over at least 10 %, the one with the most voids (b2), then an
-   * even b1 when it has voids, then the longest; a solid answer on samples
+   * even b1 when it has voids, then the most closed surfaces apart, then the
+   * longest; a solid answer on samples
    * that lie on a surface gives way to a window with a void (PreferSurface);
    * t_r is 10 % above its start, at most its middle
    * (AutomaticThresholds.h, what `flowrecon reconstruct` does). Needs

@@ -13,7 +13,10 @@ numbers within (1.5, C], and calls a window stable when To/From >= Q:
   earliest   the stable window that starts first (the finest stable shape)
   maxb2      the stable window with the most voids, the longest on ties
   maxb2even  the same, with an even b1 first among windows with voids (a union of
-             closed surfaces), then the longest: the rule flowrecon uses, with Q = 1.1
+             closed surfaces), then the longest
+  maxb2evenparts  the same, then the most separate closed surfaces (b0 when
+             b0 <= b2 and b1 is even), then the longest: the rule flowrecon
+             uses, with Q = 1.1
 and, without a stable window, the longest. A wrong answer counts as flagged when
 flowrecon would warn (AutomaticThresholds.h, ChoiceWarnings): no stable window, a
 window under 30 %, several changes where it starts, a longer window with other
@@ -64,6 +67,11 @@ def length(w):
     return math.log(w[1] / w[0])
 
 
+def separate_surfaces(b):
+    """The components when each can bound a void of its own and b1 is even, else 1."""
+    return b[0] if b[2] > 0 and b[1] % 2 == 0 and b[0] <= b[2] else 1
+
+
 def pick(ws, rule, q):
     stable = [w for w in ws if w[1] >= w[0] * q]
     if rule == "longest" or not stable:
@@ -73,6 +81,9 @@ def pick(ws, rule, q):
     if rule == "maxb2even":
         return max(stable, key=lambda w: (w[2][2], w[2][2] == 0 or w[2][1] % 2 == 0,
                                           round(length(w), 6))), True
+    if rule == "maxb2evenparts":
+        return max(stable, key=lambda w: (w[2][2], w[2][2] == 0 or w[2][1] % 2 == 0,
+                                          separate_surfaces(w[2]), round(length(w), 6))), True
     return max(stable, key=lambda w: (w[2][2], round(length(w), 6))), True
 
 
@@ -131,7 +142,8 @@ def main():
     print("| rule | Q | clouds | right | flagged | silent | right where achievable |")
     print("|---|---|---:|---:|---:|---:|---|")
     for rule, qs in (("fixed", (None,)), ("longest", (None,)), ("earliest", (1.1, 1.2)),
-                     ("maxb2", (1.05, 1.1, 1.2)), ("maxb2even", (1.1,))):
+                     ("maxb2", (1.05, 1.1, 1.2)), ("maxb2even", (1.1,)),
+                     ("maxb2evenparts", (1.1,))):
         for q in qs:
             c, a, ra, wrong = evaluate(runs, clouds, rule, q or 1.1)
             n = sum(c.values())

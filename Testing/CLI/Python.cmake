@@ -66,6 +66,10 @@ flowrecon_add_cli_python_test(py.reconstruction.automatic_thresholds test_automa
 # ellipsoid): right when clean, warned when wrong under noise.
 flowrecon_add_cli_python_test(py.reconstruction.held_out_shapes test_held_out_shapes.py held_out_shapes)
 
+# And on closed surfaces apart or joined: isosurface vertices (a segmentation's
+# cloud) of seven shapes, two spheres alone and joined by a rod.
+flowrecon_add_cli_python_test(py.reconstruction.separate_surfaces test_separate_surfaces.py separate_surfaces)
+
 # Critical values of perturbed (degenerate) clouds come from the unperturbed
 # points: exact on grids and cospherical sets, equal to GUDHI's exact alpha
 # persistence within 1e-12 relative, lazy reconstruction equal to eager.

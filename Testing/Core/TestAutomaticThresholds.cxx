@@ -5,7 +5,7 @@
 // clouds of known dimension, and the filled-surface check built on it. The
 // depth of a solid in edges on lattices whose answer is known, and the
 // shallow-solid check built on it. The preference for a surface when a
-// solid answer is filled in.
+// solid answer is filled in, and for closed surfaces apart over those joined.
 #include "AutomaticThresholds.h"
 #include "Check.h"
 #include "Clouds.h"
@@ -247,6 +247,27 @@ int main()
     const auto two = Profile({ { 1.0, { 3, 20, 0 } }, { 1.8, { 1, 1, 2 } }, { 2.0, { 1, 0, 1 } } });
     ThresholdChoice f = ChooseThresholds({ two }, 5);
     CHECK(f.Window.Betti == (std::array<Id, 3>{ { 1, 1, 2 } }));
+  }
+  // Separate closed surfaces: two spheres apart over (1.5, 2.35] and joined by
+  // a bridge over the longer (2.35, 5], their voids kept (2 0 2, then 1 0 2),
+  // are taken apart, across candidates too; a nested pair of spheres (2 0 2)
+  // likewise. A part that cannot bound a void of its own (b0 > b2: a curve
+  // beside a sphere, 2 0 1) is not preferred: the longest, joined, wins; nor
+  // is an odd b1 (2 1 2), which the parity rule already puts after.
+  {
+    const auto bridged = Profile({ { 1.0, { 228, 36, 0 } }, { 1.42, { 2, 0, 2 } }, { 2.35, { 1, 0, 2 } } });
+    ThresholdChoice c = ChooseThresholds({ bridged }, 5);
+    CHECK(c.Window.Betti == (std::array<Id, 3>{ { 2, 0, 2 } }) && c.Window.From == 1.5 && c.Window.To == 2.35);
+    CHECK(c.Longest.Betti == (std::array<Id, 3>{ { 1, 0, 2 } }));
+    const auto joined = Profile({ { 1.0, { 228, 36, 0 } }, { 1.42, { 1, 0, 2 } } });
+    ThresholdChoice d = ChooseThresholds({ joined, bridged }, 5);
+    CHECK(d.Candidate == 1 && d.Window.Betti == (std::array<Id, 3>{ { 2, 0, 2 } }) && d.CandidatesDisagree());
+    const auto curve = Profile({ { 1.0, { 40, 3, 0 } }, { 1.42, { 2, 0, 1 } }, { 2.35, { 1, 0, 1 } } });
+    ThresholdChoice e = ChooseThresholds({ curve }, 5);
+    CHECK(e.Window.Betti == (std::array<Id, 3>{ { 1, 0, 1 } }) && e.Window.From == 2.35);
+    const auto odd = Profile({ { 1.0, { 40, 3, 0 } }, { 1.42, { 2, 1, 2 } }, { 2.35, { 1, 0, 2 } } });
+    ThresholdChoice f = ChooseThresholds({ odd }, 5);
+    CHECK(f.Window.Betti == (std::array<Id, 3>{ { 1, 0, 2 } }));
   }
   // Preferring a surface: a surface sample whose stable answer is a solid
   // torus (1 1 0) over (1.8, 5] takes the torus (1 2 1) that closes briefly

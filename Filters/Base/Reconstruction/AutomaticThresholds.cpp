@@ -103,9 +103,23 @@ bool ClosedSurfaces(const StableWindow& w)
   return w.Betti[2] == 0 || w.Betti[1] % 2 == 0;
 }
 
+/// How many separate closed surfaces a window can be: its components when
+/// each can bound a void of its own (b0 <= b2) and b1 is even, else 1. The
+/// reconstructions are nested, so components only join as t_r grows; closed
+/// surfaces that are apart over a stable window and joined later, their voids
+/// kept, were joined by a bridge across the gap between them (a hole of the
+/// sampling cannot split a closed surface in two). A component that cannot
+/// bound a void (b0 > b2: a curve or an open sheet beside a surface) may be
+/// attached to the surface where its samples thin out, so then no window is
+/// preferred for its components.
+Id SeparateSurfaces(const StableWindow& w)
+{
+  return w.Betti[2] > 0 && w.Betti[1] % 2 == 0 && w.Betti[0] <= w.Betti[2] ? w.Betti[0] : 1;
+}
+
 /// Whether `w` beats `best` (ties within `tie` go to `best`, the earlier):
 /// stable first, then the most voids, then (with voids) an even b1, then the
-/// longest.
+/// most separate closed surfaces, then the longest.
 bool Better(const StableWindow& w, const StableWindow& best, double stable, double tie)
 {
   const bool a = w.To >= w.From * stable, b = best.To >= best.From * stable;
@@ -120,6 +134,10 @@ bool Better(const StableWindow& w, const StableWindow& best, double stable, doub
   if (a && ClosedSurfaces(w) != ClosedSurfaces(best))
   {
     return ClosedSurfaces(w);
+  }
+  if (a && SeparateSurfaces(w) != SeparateSurfaces(best))
+  {
+    return SeparateSurfaces(w) > SeparateSurfaces(best);
   }
   return w.Length() > best.Length() * tie + 1e-12;
 }
@@ -252,7 +270,8 @@ bool PreferSurface(ThresholdChoice& choice, const std::vector<std::vector<Topolo
       const bool better = best.Length() == 0 || stable != bestStable ? best.Length() == 0 || stable
         : w.Betti[2] != best.Betti[2]                               ? w.Betti[2] > best.Betti[2]
         : ClosedSurfaces(w) != ClosedSurfaces(best)                 ? ClosedSurfaces(w)
-                                                                    : w.Length() > best.Length() * rule.Tie + 1e-12;
+        : SeparateSurfaces(w) != SeparateSurfaces(best) ? SeparateSurfaces(w) > SeparateSurfaces(best)
+                                                        : w.Length() > best.Length() * rule.Tie + 1e-12;
       if (better)
       {
         best = w;

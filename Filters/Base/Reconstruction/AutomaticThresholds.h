@@ -6,7 +6,10 @@
 // windows of the topology profiles of a few persistence thresholds, the rule
 // takes the one enclosing the most voids (a surface with a hole not closed
 // yet, and the solid that fills it later, both have fewer), among those one
-// that can be closed surfaces (even b1), the longest among those. The range where the shape holds moves with the sampling (i.i.d.
+// that can be closed surfaces (even b1), then the one with the most closed
+// surfaces apart (components join as t_r grows: surfaces apart over a stable
+// window, joined later with their voids kept, were bridged across a gap), the
+// longest among those. The range where the shape holds moves with the sampling (i.i.d.
 // samples need more t_r as they grow, regular lattices lose patches to the
 // simplification), so no fixed pair is right on every cloud.
 // Data/EXPERIMENTS.md gives the rule's measured grounds.
@@ -110,7 +113,9 @@ struct ThresholdChoice
 
 /// The stable window with the largest b2 over every profile (one per t_p
 /// candidate, profiles up to `cap`), on ties one whose b1 is even when it has
-/// voids (a union of closed surfaces), then the longest, and t_r in it;
+/// voids (a union of closed surfaces), then the one with the most components
+/// when each can bound a void of its own (b0 <= b2: closed surfaces apart),
+/// then the longest, and t_r in it;
 /// without a stable window, the longest one (Unstable() is then true). When
 /// no profile has a window above Lowest, t_r is Lowest * Margin (at most the
 /// cap) on the first

@@ -1,0 +1,138 @@
+#!/usr/bin/python3
+"""The automatic thresholds on two kinds of cloud outside the topology study:
+- isosurface vertices, the cloud a CT or MRI segmentation gives: the vertices of
+  VTK's flying edges at level 0 of an implicit function sampled on an n^3 grid of
+  [-1, 1]^3 (n = 24, 48, 96), for a sphere, a torus, a genus-2 surface, two
+  spheres 0.2 apart, a rounded cube, the boundary of a thick spherical shell (two
+  nested spheres) and a flat ellipsoid: points on the grid's edges, spaced by
+  the grid, with no noise;
+- two unit spheres a gap apart (Fibonacci points, and i.i.d. points), alone and
+  joined by a rod of points along the segment between them at the surface
+  spacing: (2 0 2) apart, (1 0 2) joined.
+`flowrecon reconstruct` runs at its defaults and at `--tp 1.1 --tr 2`; verdicts
+as in held_out_shapes.py (right, flagged: wrong with a warning, silent: wrong
+without one). Prints a Markdown table, one row per cloud, and the counts.
+
+  /usr/bin/python3 Benchmarks/Study/separate_surfaces.py build/bin/flowrecon WORKDIR [--quick]
+
+--quick: the grids of 24 and 48 and the two smallest pairs of spheres (the
+test py.reconstruction.separate_surfaces).
+"""
+import argparse
+import os
+import sys
+
+import numpy as np
+from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+from vtkmodules.vtkCommonDataModel import vtkImageData
+from vtkmodules.vtkFiltersCore import vtkFlyingEdges3D
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import held_out_shapes as ho  # noqa: E402
+
+
+def _torus(x, y, z, cx, r_big, r_small):
+    return np.sqrt((np.sqrt((x - cx) ** 2 + y ** 2) - r_big) ** 2 + z ** 2) - r_small
+
+
+IMPLICIT = [
+    ("sphere", lambda x, y, z: np.sqrt(x * x + y * y + z * z) - 0.8, (1, 0, 1)),
+    ("torus", lambda x, y, z: _torus(x, y, z, 0, 0.6, 0.25), (1, 2, 1)),
+    ("genus-2", lambda x, y, z: np.minimum(_torus(x, y, z, -0.45, 0.4, 0.15),
+                                           _torus(x, y, z, 0.45, 0.4, 0.15)), (1, 4, 1)),
+    ("two spheres 0.2 apart", lambda x, y, z: np.minimum(
+        np.sqrt((x - 0.45) ** 2 + y * y + z * z), np.sqrt((x + 0.45) ** 2 + y * y + z * z)) - 0.35,
+     (2, 0, 2)),
+    ("rounded cube", lambda x, y, z: (x ** 8 + y ** 8 + z ** 8) ** 0.125 - 0.7, (1, 0, 1)),
+    ("thick shell", lambda x, y, z: np.abs(np.sqrt(x * x + y * y + z * z) - 0.6) - 0.2, (2, 0, 2)),
+    ("flat ellipsoid", lambda x, y, z: np.sqrt((x / 0.9) ** 2 + (y / 0.5) ** 2 + (z / 0.25) ** 2) - 1,
+     (1, 0, 1)),
+]
+GRIDS = (24, 48, 96)
+PAIRS = ((600, 0.6), (1500, 0.5), (1500, 1.0), (4000, 0.3))  # points per sphere, gap
+
+
+def isosurface_vertices(field, n):
+    """The distinct vertices of the level-0 isosurface of `field` on an n^3 grid."""
+    g = np.linspace(-1, 1, n)
+    z, y, x = np.meshgrid(g, g, g, indexing="ij")
+    image = vtkImageData()
+    image.SetDimensions(n, n, n)
+    image.SetOrigin(-1, -1, -1)
+    image.SetSpacing(*(3 * [2 / (n - 1)]))
+    image.GetPointData().SetScalars(numpy_to_vtk(field(x, y, z).ravel().astype(np.float64), deep=1))
+    edges = vtkFlyingEdges3D()
+    edges.SetInputData(image)
+    edges.SetValue(0, 0.0)
+    edges.Update()
+    return np.unique(vtk_to_numpy(edges.GetOutput().GetPoints().GetData()).astype(np.float64), axis=0)
+
+
+def fibonacci_sphere(n):
+    i = np.arange(n) + 0.5
+    polar, turn = np.arccos(1 - 2 * i / n), np.pi * (1 + 5 ** 0.5) * i
+    return np.c_[np.cos(turn) * np.sin(polar), np.sin(turn) * np.sin(polar), np.cos(polar)]
+
+
+def iid_sphere(rng, n):
+    v = rng.normal(size=(n, 3))
+    return v / np.linalg.norm(v, axis=1)[:, None]
+
+
+def sphere_pairs(pairs=PAIRS):
+    """Yields (name, points, cloud, truth): two unit spheres `gap` apart, alone and
+    joined by a rod along the x axis."""
+    for k, (n, gap) in enumerate(pairs):
+        spacing = np.sqrt(4 * np.pi / n)
+        inside = np.linspace(-gap / 2, gap / 2, max(2, int(gap / spacing)) + 2)[1:-1]
+        rod = np.c_[inside, np.zeros_like(inside), np.zeros_like(inside)]
+        shift = np.array([1 + gap / 2, 0, 0])
+        rng = np.random.default_rng(500 + k)
+        for sampling, one in (("Fibonacci", lambda: fibonacci_sphere(n)), ("i.i.d.", lambda: iid_sphere(rng, n))):
+            two = np.vstack([one() - shift, one() + shift])
+            yield "two spheres %g apart, %s" % (gap, sampling), 2 * n, two, (2, 0, 2)
+            yield "two spheres %g apart joined by a rod, %s" % (gap, sampling), 2 * n + len(rod), \
+                np.vstack([two, rod]), (1, 0, 2)
+
+
+def clouds(grids=GRIDS, pairs=PAIRS):
+    """Yields (name, points, cloud, truth), the same on every call."""
+    for name, field, truth in IMPLICIT:
+        for n in grids:
+            p = isosurface_vertices(field, n)
+            yield "%s, isosurface of a %d^3 grid" % (name, n), len(p), p, truth
+    yield from sphere_pairs(pairs)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
+    ap.add_argument("flowrecon")
+    ap.add_argument("work")
+    ap.add_argument("--quick", action="store_true")
+    args = ap.parse_args()
+    os.makedirs(args.work, exist_ok=True)
+    counts = {"auto": {}, "fixed": {}}
+    print("| cloud | points | truth | automatic | fixed t_p 1.1, t_r 2 | automatic choice |")
+    print("|---|---:|---|---|---|---|")
+    selection = clouds(GRIDS[:2], PAIRS[:2]) if args.quick else clouds()
+    for k, (name, n, p, truth) in enumerate(selection):
+        cloud = os.path.join(args.work, "cloud%02d.xyz" % k)
+        np.savetxt(cloud, p, fmt="%.17g")
+        auto = ho.run(args.flowrecon, cloud, [])
+        fixed = ho.run(args.flowrecon, cloud, ["--tp", "1.1", "--tr", "2"])
+        cells = []
+        for label, (betti, warned, _) in (("auto", auto), ("fixed", fixed)):
+            v = ho.verdict(betti, warned, truth)
+            counts[label][v] = counts[label].get(v, 0) + 1
+            cells.append("%s %s" % (v, " ".join(map(str, betti)) if betti else "none"))
+        print("| %s | %d | %s | %s | %s | %s |" % (name, n, " ".join(map(str, truth)), cells[0], cells[1],
+                                                  auto[2]), flush=True)
+    for label in ("auto", "fixed"):
+        c = counts[label]
+        print("%s: %d right, %d flagged, %d silent, %d errors" % (
+            label, c.get("right", 0), c.get("flagged", 0), c.get("silent", 0), c.get("error", 0)))
+    return counts
+
+
+if __name__ == "__main__":
+    main()
