@@ -112,7 +112,8 @@ Candidate Run(CappedBuild& build, double tp, bool take, const CloudReconstructio
 /// around it is the longest), and whether the answer is a surface filled in:
 /// then, with t_r chosen, a window with a void is preferred (PreferSurface).
 ThresholdChoice Choose(const std::vector<Candidate>& candidates,
-  const CloudReconstructionSettings& settings, const std::vector<Point3>& samples)
+  const CloudReconstructionSettings& settings, const std::vector<Point3>& samples,
+  const std::vector<Node>& nodes)
 {
   std::vector<std::vector<TopologyStep>> profiles;
   for (const Candidate& c : candidates)
@@ -128,6 +129,7 @@ ThresholdChoice Choose(const std::vector<Candidate>& candidates,
   {
     PreferSurface(choice, profiles, settings.Cap);
   }
+  CheckFar(choice, nodes);
   return choice;
 }
 
@@ -266,7 +268,9 @@ void CloudRun::BuildAndRun(bool defer)
   std::size_t pick = 0;
   if (this->Automatic)
   {
-    this->Result.Choice = Choose(candidates, settings, this->Samples);
+    // The nodes are the build's, or the one run's that took them.
+    this->Result.Choice = Choose(candidates, settings, this->Samples,
+      this->Tps.size() == 1 ? candidates.front().R.Complex.Nodes : build.Complex.Nodes);
     this->Result.Automatic = true;
     pick = this->Result.Choice.Candidate;
     this->Tr = this->Result.Choice.ReconstructionThreshold;

@@ -181,6 +181,16 @@ std::vector<std::string> ReconstructionChoiceWarnings(const ThresholdChoice& cho
       " of its boundary, so a closed surface with noise of about its sample spacing "
       "may have been filled in (a solid sampled through its volume is deeper)");
   }
+  if (choice.Far.Count > 0)
+  {
+    const bool one = choice.Far.Count == 1;
+    lines.push_back(std::to_string(choice.Far.Count) + (one ? " sample lies" : " samples lie") +
+      " apart from the rest (the nearest sample over " + Number(choice.Rule.FarFactor, 0) +
+      " times the median distance away; " + (one ? "it is" : "the farthest,") + " " +
+      Number(choice.Far.Largest, 1) + " times, near " + PlaceText(choice.Far.Farthest, choice.Far.Median) +
+      "): outliers, or a region sampled far more sparsely; the reconstruction grows through "
+      "them, and can fill a closed surface or join parts");
+  }
   // A resurfaced answer has said which solid lasts longer.
   if (choice.Longest.Length() > choice.Window.Length() && choice.Longest.Betti != choice.Window.Betti &&
     !(choice.Resurfaced && choice.Longest.Betti == choice.Solid.Betti))

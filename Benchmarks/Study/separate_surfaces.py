@@ -8,15 +8,18 @@
   the grid, with no noise;
 - two unit spheres a gap apart (Fibonacci points, and i.i.d. points), alone and
   joined by a rod of points along the segment between them at the surface
-  spacing: (2 0 2) apart, (1 0 2) joined.
+  spacing: (2 0 2) apart, (1 0 2) joined;
+- i.i.d. unions: three spheres of unequal radii, a sphere and a torus, two linked
+  tori, a sphere beside a circle (a curve: not a closed surface), two nested
+  spheres, two spheres of 10x unequal density.
 `flowrecon reconstruct` runs at its defaults and at `--tp 1.1 --tr 2`; verdicts
 as in held_out_shapes.py (right, flagged: wrong with a warning, silent: wrong
 without one). Prints a Markdown table, one row per cloud, and the counts.
 
   /usr/bin/python3 Benchmarks/Study/separate_surfaces.py build/bin/flowrecon WORKDIR [--quick]
 
---quick: the grids of 24 and 48 and the two smallest pairs of spheres (the
-test py.reconstruction.separate_surfaces).
+--quick: the grids of 24 and 48 and the two smallest pairs of spheres, no union
+(the test py.reconstruction.separate_surfaces).
 """
 import argparse
 import os
@@ -95,13 +98,52 @@ def sphere_pairs(pairs=PAIRS):
                 np.vstack([two, rod]), (1, 0, 2)
 
 
-def clouds(grids=GRIDS, pairs=PAIRS):
+def iid_torus(rng, n, big, small, axis=2):
+    """Area-uniform on a torus around the z axis (around y with axis=1)."""
+    kept = np.empty((0, 3))
+    while len(kept) < n:
+        u, v = rng.uniform(0, 2 * np.pi, (2, 4 * n))
+        keep = rng.uniform(size=4 * n) < (big + small * np.cos(v)) / (big + small)
+        u, v = u[keep], v[keep]
+        kept = np.vstack([kept, np.c_[(big + small * np.cos(v)) * np.cos(u),
+                                      (big + small * np.cos(v)) * np.sin(u), small * np.sin(v)]])
+    p = kept[:n]
+    return p[:, [0, 2, 1]] if axis == 1 else p
+
+
+def mixed():
+    """Yields (name, points, cloud, truth): i.i.d. unions of closed surfaces of
+    unequal sizes and densities, and a surface beside a curve."""
+    rng = np.random.default_rng(9)
+    at = np.array
+    circle = np.linspace(0, 2 * np.pi, 300, endpoint=False)
+    for name, parts, truth in (
+        ("three spheres, radii 1, 0.4, 0.2", lambda: [iid_sphere(rng, 3000), 0.4 * iid_sphere(rng, 800) + at([1.8, 0, 0]),
+                                                      0.2 * iid_sphere(rng, 300) + at([0, 1.6, 0])], (3, 0, 3)),
+        ("a sphere and a torus", lambda: [iid_sphere(rng, 3000), iid_torus(rng, 3000, 0.8, 0.3) + at([2.6, 0, 0])],
+         (2, 2, 2)),
+        ("two linked tori", lambda: [iid_torus(rng, 4000, 1, 0.25), iid_torus(rng, 4000, 1, 0.25, 1) + at([1, 0, 0])],
+         (2, 4, 2)),
+        ("a sphere and a circle of 300 points", lambda: [iid_sphere(rng, 3000),
+                                                        np.c_[0.8 * np.cos(circle) + 2.5, 0.8 * np.sin(circle), 0 * circle]],
+         (2, 1, 1)),
+        ("two nested spheres, radii 1 and 0.5", lambda: [iid_sphere(rng, 4000), 0.5 * iid_sphere(rng, 1500)], (2, 0, 2)),
+        ("two spheres 0.5 apart, 6000 and 600 points", lambda: [iid_sphere(rng, 6000),
+                                                               iid_sphere(rng, 600) + at([2.5, 0, 0])], (2, 0, 2)),
+    ):
+        p = np.vstack(parts())
+        yield name + ", i.i.d.", len(p), p, truth
+
+
+def clouds(grids=GRIDS, pairs=PAIRS, unions=True):
     """Yields (name, points, cloud, truth), the same on every call."""
     for name, field, truth in IMPLICIT:
         for n in grids:
             p = isosurface_vertices(field, n)
             yield "%s, isosurface of a %d^3 grid" % (name, n), len(p), p, truth
     yield from sphere_pairs(pairs)
+    if unions:
+        yield from mixed()
 
 
 def main():
@@ -114,7 +156,7 @@ def main():
     counts = {"auto": {}, "fixed": {}}
     print("| cloud | points | truth | automatic | fixed t_p 1.1, t_r 2 | automatic choice |")
     print("|---|---:|---|---|---|---|")
-    selection = clouds(GRIDS[:2], PAIRS[:2]) if args.quick else clouds()
+    selection = clouds(GRIDS[:2], PAIRS[:2], False) if args.quick else clouds()
     for k, (name, n, p, truth) in enumerate(selection):
         cloud = os.path.join(args.work, "cloud%02d.xyz" % k)
         np.savetxt(cloud, p, fmt="%.17g")

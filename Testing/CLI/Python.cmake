@@ -70,6 +70,10 @@ flowrecon_add_cli_python_test(py.reconstruction.held_out_shapes test_held_out_sh
 # cloud) of seven shapes, two spheres alone and joined by a rod.
 flowrecon_add_cli_python_test(py.reconstruction.separate_surfaces test_separate_surfaces.py separate_surfaces)
 
+# Samples apart from the rest (outliers strewn in a cloud's box): warned, as
+# many as an independent Gabriel-edge count (scipy) finds; clean clouds not.
+flowrecon_add_cli_python_test(py.reconstruction.far_samples test_far_samples.py far_samples)
+
 # Critical values of perturbed (degenerate) clouds come from the unperturbed
 # points: exact on grids and cospherical sets, equal to GUDHI's exact alpha
 # persistence within 1e-12 relative, lazy reconstruction equal to eager.

@@ -22,7 +22,7 @@ import separate_surfaces as ss  # noqa: E402
 FLOWRECON, WORK = sys.argv[1:3]
 os.makedirs(WORK, exist_ok=True)
 failures = []
-for k, (name, n, points, truth) in enumerate(ss.clouds(ss.GRIDS[:2], ss.PAIRS[:2])):
+for k, (name, n, points, truth) in enumerate(ss.clouds(ss.GRIDS[:2], ss.PAIRS[:2], False)):
     cloud = os.path.join(WORK, "cloud%02d.xyz" % k)
     np.savetxt(cloud, points, fmt="%.17g")
     betti, warned, choice = ho.run(FLOWRECON, cloud, [])

@@ -6,6 +6,7 @@
 // depth of a solid in edges on lattices whose answer is known, and the
 // shallow-solid check built on it. The preference for a surface when a
 // solid answer is filled in, and for closed surfaces apart over those joined.
+// The samples apart from the rest, on hand-made Gabriel edges.
 #include "AutomaticThresholds.h"
 #include "Check.h"
 #include "Clouds.h"
@@ -192,6 +193,57 @@ int main()
     CHECK(c.Window.From == 2.1 && c.Window.To == 6);
     const ThresholdChoice d = ChoosePersistence({ Torus, Sphere }, 1.9, 6);
     CHECK(d.Candidate == 0 && d.Window.From == 1.7); // (1.7, 2.0] beats (1.8, 1.95]
+  }
+  // Samples apart: a 3 x 3 grid of samples 1 apart (Gabriel edges between
+  // grid neighbours, node value 0.5) and one sample 20 away, whose only edge
+  // (value 10) goes to a corner: the median nearest distance is 0.5 and the
+  // lone one is 20 times it, found at factor 10, not at 25. A second stray
+  // sample 1 from the first hides it: two strays together are not apart.
+  {
+    std::vector<Node> nodes;
+    auto sample = [&](Id id, Point3 at) {
+      Node n;
+      n.Index = 0;
+      n.Simplex = { { static_cast<std::int32_t>(id), -1, -1, -1 } };
+      n.Location = at;
+      nodes.push_back(n);
+    };
+    auto edge = [&](Id a, Id b, double value) {
+      Node n;
+      n.Index = 1;
+      n.Value = value;
+      n.Simplex = { { static_cast<std::int32_t>(std::min(a, b)), static_cast<std::int32_t>(std::max(a, b)), -1, -1 } };
+      nodes.push_back(n);
+    };
+    for (int i = 0; i < 9; ++i)
+    {
+      sample(i, { { static_cast<double>(i % 3), static_cast<double>(i / 3), 0 } });
+      if (i % 3 < 2)
+      {
+        edge(i, i + 1, 0.5);
+      }
+      if (i < 6)
+      {
+        edge(i, i + 3, 0.5);
+      }
+    }
+    sample(9, { { 22, 2, 0 } });
+    edge(8, 9, 10);
+    FarSamples far = FindFarSamples(nodes, 10);
+    CHECK(far.Count == 1 && far.Median == 0.5);
+    CHECK_NEAR(far.Largest, 20, 1e-12);
+    CHECK(far.Farthest[0] == 22 && far.Farthest[1] == 2);
+    CHECK(FindFarSamples(nodes, 25).Count == 0);
+    // Through the choice, with the rule's factor; none on the grid alone.
+    ThresholdChoice c = ChooseThresholds({ Sphere }, 6);
+    CheckFar(c, nodes);
+    CHECK(c.Far.Count == 1);
+    sample(10, { { 23, 2, 0 } });
+    edge(9, 10, 0.5);
+    CHECK(FindFarSamples(nodes, 10).Count == 0);
+    nodes.resize(21); // the 9 samples and their 12 edges
+    CheckFar(c, nodes);
+    CHECK(c.Far.Count == 0 && c.Far.Median == 0.5);
   }
   // Bad input.
   {

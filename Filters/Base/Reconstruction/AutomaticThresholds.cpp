@@ -233,6 +233,11 @@ ThresholdChoice ChoosePersistence(
   return choice;
 }
 
+void CheckFar(ThresholdChoice& choice, const std::vector<Node>& nodes)
+{
+  choice.Far = FindFarSamples(nodes, choice.Rule.FarFactor);
+}
+
 void CheckFilled(ThresholdChoice& choice, const std::vector<Point3>& samples, Id maxima)
 {
   choice.Maxima = maxima;

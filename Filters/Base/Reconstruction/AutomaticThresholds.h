@@ -17,6 +17,7 @@
 #define flowrecon_AutomaticThresholds_h
 
 #include "CellHomology.h"
+#include "FarSamples.h"
 #include "Reconstruction.h"
 
 #include <array>
@@ -68,6 +69,13 @@ struct ThresholdRule
   /// deep, a closed surface with noise of 1-2 times its spacing 1-2 at any
   /// size (Data/EXPERIMENTS.md).
   Id ShallowDepth = 2;
+  /// Samples whose nearest sample is over this many times the median
+  /// nearest-sample distance away are apart from the rest (FarSamples.h):
+  /// 4.5 at most in i.i.d. surface samples of 10^6 points, 7.4 with a density
+  /// varying 10 times, 14 in an i.i.d. circle of 10^4 points (wrong and
+  /// warned anyway: its gaps); 22-32 for outliers strewn in a scan's box
+  /// (Data/EXPERIMENTS.md).
+  double FarFactor = 10;
 };
 
 struct ThresholdChoice
@@ -105,6 +113,9 @@ struct ThresholdChoice
   /// (CheckShallow): a noisy closed surface may have been filled (warned).
   bool Shallow = false;
   Id Depth = -1; ///< SolidDepth of the answer's tetrahedra, up to ShallowDepth + 1 (-1: not measured)
+  /// Samples apart from the rest (CheckFar; warned): outliers can fill a
+  /// closed surface or join parts whatever the window says.
+  FarSamples Far;
   /// Whether CheckShallow has something to measure: a solid answer (no void,
   /// SolidShare maxima a sample, after CheckFilled) that is not Filled.
   bool NeedsDepth() const;
@@ -146,6 +157,10 @@ void CheckFilled(ThresholdChoice& choice, const std::vector<Point3>& samples, Id
 /// it is shorter than Rule.Stable (Data/EXPERIMENTS.md). Returns whether it
 /// changed the choice (Resurfaced); without such a window it keeps it.
 bool PreferSurface(ThresholdChoice& choice, const std::vector<std::vector<TopologyStep>>& profiles, double cap);
+
+/// Sets choice.Far from the Gabriel edges of `nodes` (a flow complex's; any
+/// t_p: cancellations leave the nodes in place), Rule.FarFactor.
+void CheckFar(ThresholdChoice& choice, const std::vector<Node>& nodes);
 
 /// After CheckFilled, with the tetrahedra of the compact output at t_r:
 /// measures their depth when NeedsDepth() and sets Shallow when it is at most
