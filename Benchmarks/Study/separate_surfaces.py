@@ -11,7 +11,9 @@
   spacing: (2 0 2) apart, (1 0 2) joined;
 - i.i.d. unions: three spheres of unequal radii, a sphere and a torus, two linked
   tori, a sphere beside a circle (a curve: not a closed surface), two nested
-  spheres, two spheres of 10x unequal density.
+  spheres, two spheres of 10x unequal density;
+- the isosurface vertices of the 32^3 and 64^3 grids with Gaussian noise of 0.3
+  and 1 times their mean spacing.
 `flowrecon reconstruct` runs at its defaults and at `--tp 1.1 --tr 2`; verdicts
 as in held_out_shapes.py (right, flagged: wrong with a warning, silent: wrong
 without one). Prints a Markdown table, one row per cloud, and the counts.
@@ -19,13 +21,14 @@ without one). Prints a Markdown table, one row per cloud, and the counts.
   /usr/bin/python3 Benchmarks/Study/separate_surfaces.py build/bin/flowrecon WORKDIR [--quick]
 
 --quick: the grids of 24 and 48 and the two smallest pairs of spheres, no union
-(the test py.reconstruction.separate_surfaces).
+and no noise (the test py.reconstruction.separate_surfaces).
 """
 import argparse
 import os
 import sys
 
 import numpy as np
+from scipy.spatial import cKDTree
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 from vtkmodules.vtkCommonDataModel import vtkImageData
 from vtkmodules.vtkFiltersCore import vtkFlyingEdges3D
@@ -135,6 +138,20 @@ def mixed():
         yield name + ", i.i.d.", len(p), p, truth
 
 
+def noisy_isosurfaces():
+    """Yields (name, points, cloud, truth): the isosurface vertices on 32^3 and
+    64^3 grids with Gaussian noise of 0.3 and 1 times their mean spacing (a
+    segmentation's jitter)."""
+    rng = np.random.default_rng(3)
+    for name, field, truth in IMPLICIT:
+        for n in (32, 64):
+            p = isosurface_vertices(field, n)
+            spacing = cKDTree(p).query(p, k=2)[0][:, 1].mean()
+            for noise in (0.3, 1.0):
+                yield "%s, isosurface of a %d^3 grid, noise %g" % (name, n, noise), len(p), \
+                    p + rng.normal(scale=noise * spacing, size=p.shape), truth
+
+
 def clouds(grids=GRIDS, pairs=PAIRS, unions=True):
     """Yields (name, points, cloud, truth), the same on every call."""
     for name, field, truth in IMPLICIT:
@@ -144,6 +161,7 @@ def clouds(grids=GRIDS, pairs=PAIRS, unions=True):
     yield from sphere_pairs(pairs)
     if unions:
         yield from mixed()
+        yield from noisy_isosurfaces()
 
 
 def main():
