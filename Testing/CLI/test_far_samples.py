@@ -8,7 +8,9 @@ as the product takes it); the product reads the same distances off its Gabriel
 edges. On the clouds with outliers the warning must name as many samples as the
 oracle finds over 10 times the median, and place the farthest at the oracle's
 farthest sample, an outlier (off the surface); the clean clouds must not be
-warned, and the oracle must find none there.
+warned, and the oracle must find none there. One cloud is also reconstructed
+from its stored flow complex (`complex`, then `reconstruct` of the .vtm), which
+must name as many.
 Usage: test_far_samples.py FLOWRECON WORKDIR
 """
 import os
@@ -71,6 +73,12 @@ for name, shape, points in clouds():
             problems.append("%s samples warned, the oracle finds %d" % (m.group(1), expected))
         if np.max(np.abs(place - farthest)) > 1e-4 or not OFF_SURFACE[shape](place):
             problems.append("farthest printed at %s, the oracle's %s" % (place, farthest))
+    if expected and m and name == "sphere with 3% outliers":
+        # The same count from the stored flow complex (the filters' path).
+        fr.run(FLOWRECON, "complex", path, "-o", path[:-4] + ".vtm", quiet=True)
+        stored = WARNING.search(fr.call(FLOWRECON, "reconstruct", path[:-4] + ".vtm", "-o", path[:-4] + "_vtm.vtu")[2])
+        if not stored or stored.group(1) != m.group(1):
+            problems.append("from the stored complex: %s" % (stored.group(0) if stored else "no warning"))
     print("%s: oracle %d apart (largest %.1f times the median), printed: %s%s" % (
         name, expected, ratio.max(), m.group(0)[:60] + "..." if m else "no warning",
         "" if not problems else "  <- " + "; ".join(problems)))
