@@ -239,12 +239,7 @@ Reconstruction FromComplex(const Arguments& args, vtkMultiBlockDataSet* complex,
         tr = r.Choice.ReconstructionThreshold;
       }
     }
-    FlowComplex nodes; // the nodes alone: their Gabriel edges measure the spread
-    std::string error;
-    if (FromMultiBlock(complex, nodes, error, true))
-    {
-      CheckFar(r.Choice, nodes.Nodes);
-    }
+    CheckFar(r.Choice, GabrielEdgeNodes(complex)); // the light block, not the diagram
   }
   r.Tps = tps;
   r.Tr = tr;

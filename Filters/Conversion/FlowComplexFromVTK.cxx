@@ -24,6 +24,7 @@
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
@@ -417,6 +418,42 @@ bool ReadSamples(vtkMultiBlockDataSet* input, FlowComplex& fc, std::string& erro
     sm->GetPoint(i, fc.Points[i].data());
   }
   return true;
+}
+
+std::vector<Node> GabrielEdgeNodes(vtkMultiBlockDataSet* input)
+{
+  std::vector<Node> nodes;
+  auto* ge = vtkPolyData::SafeDownCast(NamedBlock(input, flowrecon::names::GabrielEdges));
+  vtkDataArray* value = ge ? ge->GetCellData()->GetArray(flowrecon::names::CriticalValue) : nullptr;
+  if (!ge || !value || value->GetNumberOfTuples() != ge->GetNumberOfCells() || !ge->GetLines())
+  {
+    return nodes;
+  }
+  nodes.resize(static_cast<std::size_t>(ge->GetNumberOfPoints()));
+  for (vtkIdType k = 0; k < ge->GetNumberOfPoints(); ++k)
+  {
+    Node& n = nodes[static_cast<std::size_t>(k)];
+    n.Simplex[0] = static_cast<std::int32_t>(k);
+    ge->GetPoint(k, n.Location.data());
+  }
+  vtkCellArray* lines = ge->GetLines();
+  vtkIdType cell = 0;
+  vtkIdType count = 0;
+  const vtkIdType* ends = nullptr;
+  for (lines->InitTraversal(); lines->GetNextCell(count, ends); ++cell)
+  {
+    if (count == 2 && ends[0] >= 0 && ends[1] >= 0 && ends[0] < ge->GetNumberOfPoints() &&
+      ends[1] < ge->GetNumberOfPoints() && ends[0] != ends[1])
+    {
+      Node n;
+      n.Index = 1;
+      n.Value = value->GetComponent(cell, 0);
+      n.Simplex[0] = static_cast<std::int32_t>(std::min(ends[0], ends[1]));
+      n.Simplex[1] = static_cast<std::int32_t>(std::max(ends[0], ends[1]));
+      nodes.push_back(n);
+    }
+  }
+  return nodes;
 }
 
 } // namespace flowrecon

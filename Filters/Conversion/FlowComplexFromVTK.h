@@ -6,6 +6,7 @@
 #include "FlowComplex.h"
 
 #include <string>
+#include <vector>
 
 class vtkMultiBlockDataSet;
 
@@ -40,6 +41,12 @@ bool ReadSamples(vtkMultiBlockDataSet* input, FlowComplex& fc, std::string& erro
 /// NodePoint) after a diagramOnly read of the same input: what drawing the
 /// exact cells reads when the input holds them. The nodes and arcs stay.
 bool ReadManifoldGeometry(vtkMultiBlockDataSet* input, FlowComplex& fc, std::string& error);
+
+/// The samples and the Gabriel edges of a stored flow complex's GabrielEdges
+/// block (point k is sample k; each line's CriticalValue, half its length) as
+/// index-0 and index-1 nodes: what FindFarSamples reads, without the rest of the
+/// diagram. Empty when the block or its array is missing.
+std::vector<Node> GabrielEdgeNodes(vtkMultiBlockDataSet* input);
 
 } // namespace flowrecon
 
