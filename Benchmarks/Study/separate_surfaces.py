@@ -11,7 +11,8 @@
   spacing: (2 0 2) apart, (1 0 2) joined;
 - i.i.d. unions: three spheres of unequal radii, a sphere and a torus, two linked
   tori, a sphere beside a circle (a curve: not a closed surface), two nested
-  spheres, two spheres of 10x unequal density;
+  spheres, two spheres of 10x unequal density, two spheres touching at a point
+  (and touching Fibonacci spheres): (1 0 2), joined where they touch;
 - the isosurface vertices of the 32^3 and 64^3 grids with Gaussian noise of 0.3
   and 1 times their mean spacing.
 `flowrecon reconstruct` runs at its defaults and at `--tp 1.1 --tr 2`; verdicts
@@ -116,7 +117,9 @@ def iid_torus(rng, n, big, small, axis=2):
 
 def mixed():
     """Yields (name, points, cloud, truth): i.i.d. unions of closed surfaces of
-    unequal sizes and densities, and a surface beside a curve."""
+    unequal sizes and densities, a surface beside a curve, and two spheres
+    touching at a point (joined there: the preference for surfaces apart must
+    not part them)."""
     rng = np.random.default_rng(9)
     at = np.array
     circle = np.linspace(0, 2 * np.pi, 300, endpoint=False)
@@ -133,9 +136,13 @@ def mixed():
         ("two nested spheres, radii 1 and 0.5", lambda: [iid_sphere(rng, 4000), 0.5 * iid_sphere(rng, 1500)], (2, 0, 2)),
         ("two spheres 0.5 apart, 6000 and 600 points", lambda: [iid_sphere(rng, 6000),
                                                                iid_sphere(rng, 600) + at([2.5, 0, 0])], (2, 0, 2)),
+        ("two spheres touching at a point", lambda: [iid_sphere(rng, 4000) - at([1, 0, 0]),
+                                                     iid_sphere(rng, 4000) + at([1, 0, 0])], (1, 0, 2)),
     ):
         p = np.vstack(parts())
         yield name + ", i.i.d.", len(p), p, truth
+    touching = np.vstack([fibonacci_sphere(4000) - at([1, 0, 0]), fibonacci_sphere(4000) + at([1, 0, 0])])
+    yield "two spheres touching at a point, Fibonacci", len(touching), touching, (1, 0, 2)
 
 
 def noisy_isosurfaces():
