@@ -239,7 +239,10 @@ Reconstruction FromComplex(const Arguments& args, vtkMultiBlockDataSet* complex,
         tr = r.Choice.ReconstructionThreshold;
       }
     }
-    CheckFar(r.Choice, GabrielEdgeNodes(complex)); // the light block, not the diagram
+    // The light block, not the diagram: its points are the samples.
+    const std::vector<Node> edges = GabrielEdgeNodes(complex);
+    CheckFar(r.Choice, edges,
+      static_cast<Id>(std::count_if(edges.begin(), edges.end(), [](const Node& n) { return n.Index == 0; })));
   }
   r.Tps = tps;
   r.Tr = tr;

@@ -129,7 +129,7 @@ ThresholdChoice Choose(const std::vector<Candidate>& candidates,
   {
     PreferSurface(choice, profiles, settings.Cap);
   }
-  CheckFar(choice, nodes);
+  CheckFar(choice, nodes, static_cast<Id>(samples.size()));
   return choice;
 }
 

@@ -456,7 +456,7 @@ bool vtkFlowReconstruction::SelectThreshold(double tmax, Selection& selection)
       flowrecon::CheckFilled(choice,
         std::vector<flowrecon::Point3>(fc.Points.begin(), fc.Points.begin() + fc.NumberOfInputPoints),
         flowrecon::MaximaBelow(fc.Nodes, c.Carrier, c.Run, t));
-      flowrecon::CheckFar(choice, fc.Nodes);
+      flowrecon::CheckFar(choice, fc.Nodes, fc.NumberOfInputPoints);
       if (flowrecon::PreferSurface(choice, profiles, tmax))
       {
         t = choice.ReconstructionThreshold;

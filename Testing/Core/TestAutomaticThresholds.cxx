@@ -229,20 +229,29 @@ int main()
     }
     sample(9, { { 22, 2, 0 } });
     edge(8, 9, 10);
-    FarSamples far = FindFarSamples(nodes, 10);
+    FarSamples far = FindFarSamples(nodes, 10, 10);
     CHECK(far.Count == 1 && far.Median == 0.5);
     CHECK_NEAR(far.Largest, 20, 1e-12);
     CHECK(far.Farthest[0] == 22 && far.Farthest[1] == 2);
-    CHECK(FindFarSamples(nodes, 25).Count == 0);
+    CHECK(FindFarSamples(nodes, 10, 25).Count == 0);
+    // Ids past the samples (a damaged file) are passed over, not indexed:
+    // an edge to sample 10^9 neither allocates nor counts.
+    Node damaged;
+    damaged.Index = 1;
+    damaged.Value = 100;
+    damaged.Simplex = { { 3, 1000000000, -1, -1 } };
+    nodes.push_back(damaged);
+    CHECK(FindFarSamples(nodes, 10, 10).Count == 1);
+    nodes.pop_back();
     // Through the choice, with the rule's factor; none on the grid alone.
     ThresholdChoice c = ChooseThresholds({ Sphere }, 6);
-    CheckFar(c, nodes);
+    CheckFar(c, nodes, 10);
     CHECK(c.Far.Count == 1);
     sample(10, { { 23, 2, 0 } });
     edge(9, 10, 0.5);
-    CHECK(FindFarSamples(nodes, 10).Count == 0);
+    CHECK(FindFarSamples(nodes, 11, 10).Count == 0);
     nodes.resize(21); // the 9 samples and their 12 edges
-    CheckFar(c, nodes);
+    CheckFar(c, nodes, 9);
     CHECK(c.Far.Count == 0 && c.Far.Median == 0.5);
   }
   // Bad input.

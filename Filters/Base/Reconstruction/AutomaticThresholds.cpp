@@ -233,9 +233,9 @@ ThresholdChoice ChoosePersistence(
   return choice;
 }
 
-void CheckFar(ThresholdChoice& choice, const std::vector<Node>& nodes)
+void CheckFar(ThresholdChoice& choice, const std::vector<Node>& nodes, Id samples)
 {
-  choice.Far = FindFarSamples(nodes, choice.Rule.FarFactor);
+  choice.Far = FindFarSamples(nodes, samples, choice.Rule.FarFactor);
 }
 
 void CheckFilled(ThresholdChoice& choice, const std::vector<Point3>& samples, Id maxima)

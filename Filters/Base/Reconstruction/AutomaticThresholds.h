@@ -158,9 +158,10 @@ void CheckFilled(ThresholdChoice& choice, const std::vector<Point3>& samples, Id
 /// changed the choice (Resurfaced); without such a window it keeps it.
 bool PreferSurface(ThresholdChoice& choice, const std::vector<std::vector<TopologyStep>>& profiles, double cap);
 
-/// Sets choice.Far from the Gabriel edges of `nodes` (a flow complex's; any
-/// t_p: cancellations leave the nodes in place), Rule.FarFactor.
-void CheckFar(ThresholdChoice& choice, const std::vector<Node>& nodes);
+/// Sets choice.Far from the Gabriel edges of `nodes` (a flow complex's over
+/// `samples` input points; any t_p: cancellations leave the nodes in place),
+/// Rule.FarFactor.
+void CheckFar(ThresholdChoice& choice, const std::vector<Node>& nodes, Id samples);
 
 /// After CheckFilled, with the tetrahedra of the compact output at t_r:
 /// measures their depth when NeedsDepth() and sets Shallow when it is at most

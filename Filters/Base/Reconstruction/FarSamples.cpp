@@ -7,23 +7,17 @@
 namespace flowrecon
 {
 
-FarSamples FindFarSamples(const std::vector<Node>& nodes, double factor)
+FarSamples FindFarSamples(const std::vector<Node>& nodes, Id samples, double factor)
 {
   FarSamples far;
-  Id samples = 0;
-  for (const Node& n : nodes)
-  {
-    if (!n.IsInfinity())
-    {
-      samples = std::max<Id>(samples, n.Simplex[n.Index] + 1);
-    }
-  }
+  samples = std::max<Id>(samples, 0);
+  auto valid = [samples](Id s) { return s >= 0 && s < samples; };
   // Each sample's shortest edge (node values: half the lengths).
   constexpr double None = std::numeric_limits<double>::infinity();
   std::vector<double> nearest(static_cast<std::size_t>(samples), None);
   for (const Node& n : nodes)
   {
-    if (n.Index == 1 && !n.IsInfinity())
+    if (n.Index == 1 && valid(n.Simplex[0]) && valid(n.Simplex[1]))
     {
       for (int k = 0; k < 2; ++k)
       {

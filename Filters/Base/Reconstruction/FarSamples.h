@@ -27,8 +27,10 @@ struct FarSamples
 /// its nearest sample (no sample can lie in that edge's diametral ball), so
 /// the index-1 nodes give every distance. Two stray samples close together
 /// hide each other; strays a few spacings from the surface are noise, not
-/// counted. `nodes`: a flow complex's (index-0 nodes give the places).
-FarSamples FindFarSamples(const std::vector<Node>& nodes, double factor);
+/// counted. `nodes`: a flow complex's (index-0 nodes give the places) over
+/// `samples` input points; ids outside 0..samples-1 (a damaged file) are
+/// passed over.
+FarSamples FindFarSamples(const std::vector<Node>& nodes, Id samples, double factor);
 
 } // namespace flowrecon
 
