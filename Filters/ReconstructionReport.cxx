@@ -191,6 +191,14 @@ std::vector<std::string> ReconstructionChoiceWarnings(const ThresholdChoice& cho
       "): outliers, or a region sampled far more sparsely; the reconstruction grows through "
       "them, and can fill a closed surface or join parts");
   }
+  if (choice.Apart.Length() > 0)
+  {
+    // Three digits: the range can be narrow, and it is advice to follow.
+    lines.push_back(std::to_string(choice.Apart.Betti[0]) + " closed surfaces were apart for t_r in (" +
+      Number(choice.Apart.From, 3) + ", " + Number(choice.Apart.To, 3) + "] (Betti numbers " + Betti(choice.Apart) + ") and are joined in the answer: "
+      "a gap between separate surfaces, about as wide as the sample spacing, may have been bridged "
+      "(a t_r in that range keeps them apart)");
+  }
   // A resurfaced answer has said which solid lasts longer.
   if (choice.Longest.Length() > choice.Window.Length() && choice.Longest.Betti != choice.Window.Betti &&
     !(choice.Resurfaced && choice.Longest.Betti == choice.Solid.Betti))

@@ -61,6 +61,12 @@ PAIRS = ((600, 0.6), (1500, 0.5), (1500, 1.0), (4000, 0.3))  # points per sphere
 
 def isosurface_vertices(field, n):
     """The distinct vertices of the level-0 isosurface of `field` on an n^3 grid."""
+    mesh = isosurface_mesh(field, n)
+    return np.unique(vtk_to_numpy(mesh.GetPoints().GetData()).astype(np.float64), axis=0)
+
+
+def isosurface_mesh(field, n):
+    """VTK's flying edges at level 0 of `field` sampled on an n^3 grid of [-1, 1]^3."""
     g = np.linspace(-1, 1, n)
     z, y, x = np.meshgrid(g, g, g, indexing="ij")
     image = vtkImageData()
@@ -72,7 +78,7 @@ def isosurface_vertices(field, n):
     edges.SetInputData(image)
     edges.SetValue(0, 0.0)
     edges.Update()
-    return np.unique(vtk_to_numpy(edges.GetOutput().GetPoints().GetData()).astype(np.float64), axis=0)
+    return edges.GetOutput()
 
 
 def fibonacci_sphere(n):

@@ -70,6 +70,11 @@ flowrecon_add_cli_python_test(py.reconstruction.held_out_shapes test_held_out_sh
 # cloud) of seven shapes, two spheres alone and joined by a rod.
 flowrecon_add_cli_python_test(py.reconstruction.separate_surfaces test_separate_surfaces.py separate_surfaces)
 
+# And on the vertices of decimated meshes (dense where the surface bends, sparse
+# where it is flat), truth from the mesh: right or warned, and a warning that
+# closed surfaces were apart below the answer names a range that parts them.
+flowrecon_add_cli_python_test(py.reconstruction.mesh_vertices test_mesh_vertices.py mesh_vertices)
+
 # Samples apart from the rest (outliers strewn in a cloud's box): warned, as
 # many as an independent Gabriel-edge count (scipy) finds; clean clouds not.
 flowrecon_add_cli_python_test(py.reconstruction.far_samples test_far_samples.py far_samples)

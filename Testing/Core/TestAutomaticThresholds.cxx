@@ -330,6 +330,33 @@ int main()
     ThresholdChoice f = ChooseThresholds({ odd }, 5);
     CHECK(f.Window.Betti == (std::array<Id, 3>{ { 1, 0, 2 } }));
   }
+  // Closed surfaces apart only below the windows looked at (or too briefly
+  // to be stable), then joined (2 0 2 over (1.42, 1.46], 1 0 2 after): the
+  // joined answer stays, and Apart names the window where they were apart,
+  // the last one below the answer, on the chosen candidate only. Not when
+  // they joined before closing (touching spheres: 2 0 0, 1 0 1, 1 0 2), when
+  // a part cannot bound a void (2 0 1, then 1 0 1), when b1 differs (2 2 2
+  // then 1 0 2: a torus filled as it joined), nor when the answer has them
+  // apart.
+  {
+    const auto brief = Profile({ { 1.0, { 228, 36, 0 } }, { 1.2, { 3, 0, 2 } }, { 1.3, { 2, 1, 2 } },
+      { 1.35, { 2, 0, 2 } }, { 1.42, { 2, 0, 2 } }, { 1.455, { 1, 0, 2 } }, { 4.1, { 1, 0, 1 } } });
+    const ThresholdChoice c = ChooseThresholds({ brief }, 5);
+    CHECK(c.Window.Betti == (std::array<Id, 3>{ { 1, 0, 2 } }) && c.Apart.Length() > 0);
+    CHECK(c.Apart.Betti == (std::array<Id, 3>{ { 2, 0, 2 } }) && c.Apart.From == 1.35 && c.Apart.To == 1.455);
+    const auto touching = Profile({ { 1.0, { 228, 36, 0 } }, { 1.2, { 2, 0, 0 } }, { 1.3, { 1, 0, 1 } },
+      { 1.4, { 1, 0, 2 } } });
+    CHECK(ChooseThresholds({ touching }, 5).Apart.Length() == 0);
+    const ThresholdChoice d = ChooseThresholds({ touching, brief }, 5);
+    CHECK(d.Candidate == 0 && d.Apart.Length() == 0); // the chosen candidate's profile only
+    const auto curve = Profile({ { 1.0, { 40, 3, 0 } }, { 1.3, { 2, 0, 1 } }, { 1.45, { 1, 0, 1 } } });
+    CHECK(ChooseThresholds({ curve }, 5).Apart.Length() == 0);
+    const auto filled = Profile({ { 1.0, { 40, 3, 0 } }, { 1.3, { 2, 2, 2 } }, { 1.45, { 1, 0, 2 } } });
+    CHECK(ChooseThresholds({ filled }, 5).Apart.Length() == 0);
+    const auto bridged = Profile({ { 1.0, { 228, 36, 0 } }, { 1.3, { 2, 0, 2 } }, { 2.35, { 1, 0, 2 } } });
+    const ThresholdChoice e = ChooseThresholds({ bridged }, 5);
+    CHECK(e.Window.Betti == (std::array<Id, 3>{ { 2, 0, 2 } }) && e.Apart.Length() == 0);
+  }
   // Preferring a surface: a surface sample whose stable answer is a solid
   // torus (1 1 0) over (1.8, 5] takes the torus (1 2 1) that closes briefly
   // before it, on whichever candidate has it; unstable windows only when no

@@ -158,6 +158,25 @@ Id ChangesAt(const std::vector<TopologyStep>& rows, double t)
   return changes;
 }
 
+/// ThresholdChoice::Apart of `chosen` in its candidate's `profile`.
+StableWindow ApartBelow(const std::vector<TopologyStep>& profile, const StableWindow& chosen)
+{
+  const std::array<Id, 3>& b = chosen.Betti;
+  StableWindow apart;
+  if (chosen.Length() == 0 || b[2] < 2 || b[0] >= b[2] || b[1] % 2 != 0 || !(chosen.From > 1))
+  {
+    return apart;
+  }
+  for (const StableWindow& w : StableWindows(profile, 1, chosen.From))
+  {
+    if (w.Betti[1] == b[1] && w.Betti[2] == b[2] && w.Betti[0] > b[0] && w.Betti[0] <= b[2])
+    {
+      apart = w;
+    }
+  }
+  return apart;
+}
+
 } // namespace
 
 ThresholdChoice ChooseThresholds(
@@ -197,6 +216,7 @@ ThresholdChoice ChooseThresholds(
   choice.ChangesAtStart = w.From > rule.Lowest ? ChangesAt(profiles[choice.Candidate], w.From) : 0;
   // Just above the last change, by the margin, but never past the middle.
   choice.ReconstructionThreshold = std::min(w.From * rule.Margin, std::sqrt(w.From * w.To));
+  choice.Apart = ApartBelow(profiles[choice.Candidate], w);
   return choice;
 }
 
@@ -295,6 +315,7 @@ bool PreferSurface(ThresholdChoice& choice, const std::vector<std::vector<Topolo
   choice.Window = best;
   choice.ChangesAtStart = best.From > rule.Lowest ? ChangesAt(profiles[candidate], best.From) : 0;
   choice.ReconstructionThreshold = std::min(best.From * rule.Margin, std::sqrt(best.From * best.To));
+  choice.Apart = ApartBelow(profiles[candidate], best);
   return true;
 }
 

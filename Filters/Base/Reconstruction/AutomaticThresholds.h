@@ -116,6 +116,15 @@ struct ThresholdChoice
   /// Samples apart from the rest (CheckFar; warned): outliers can fill a
   /// closed surface or join parts whatever the window says.
   FarSamples Far;
+  /// Closed surfaces apart below the window, joined in it (warned): the last
+  /// window of the chosen profile below From with the chosen b1 and b2 (two
+  /// voids or more, b1 even) and more components, each able to bound a void
+  /// of its own (b0 <= b2); Length 0 when there is none. Components only
+  /// join as t_r grows, and a closed surface cannot split in two, so such
+  /// surfaces were bridged across a gap after they closed: separate surfaces
+  /// whose gap is about the spacing, which the rule looks for only above
+  /// Rule.Lowest and over a stable window.
+  StableWindow Apart;
   /// Whether CheckShallow has something to measure: a solid answer (no void,
   /// SolidShare maxima a sample, after CheckFilled) that is not Filled.
   bool NeedsDepth() const;

@@ -1,0 +1,201 @@
+#!/usr/bin/python3
+"""The automatic thresholds on clouds that are the vertices of meshes, a kind of
+cloud outside the topology study: many public point sets are a mesh's vertices,
+spaced as the mesher left them, not as a scanner samples.
+- parametric grids (VTK's parametric sources): a torus (R 1, r 0.35) at 48x24,
+  96x48 and 200x100, denser on its inner side; an ellipsoid (1, 0.6, 0.35) at
+  64x64 and VTK's latitude-longitude sphere at 48 and 100, dense at the poles; a
+  superquadric torus with flattened sides;
+- a coarse parametric torus (24x12) twice Loop-subdivided: old vertices beside
+  new ones;
+- decimated meshes (VTK's quadric decimation, 90 % and 97 % of the triangles
+  removed) of the flying-edges isosurfaces of separate_surfaces.py's seven
+  implicit shapes on a 96^3 grid, and of the 200x100 parametric torus: the
+  vertices thin out where the surface is flat and stay dense where it bends.
+The truth is the mesh's own: each mesh, its seams merged, must be a closed
+2-manifold (no boundary or non-manifold edge, VTK's feature edges), and then its
+Betti numbers are (c, 2c - chi, c) for c components and Euler characteristic
+chi; a mesh that is not is left out and said so. The cloud is the mesh's
+distinct vertices. `flowrecon reconstruct` runs at its defaults and at `--tp 1.1
+--tr 2`; verdicts as in held_out_shapes.py (right, flagged: wrong with a
+warning, silent: wrong without one). Prints a Markdown table and the counts.
+
+  /usr/bin/python3 Benchmarks/Study/mesh_vertices.py build/bin/flowrecon WORKDIR [--quick]
+
+--quick: the decimated meshes of the sphere, the torus and the two spheres 0.2
+apart only (the test py.reconstruction.mesh_vertices).
+"""
+import argparse
+import os
+import sys
+
+import numpy as np
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkCommonComputationalGeometry import vtkParametricEllipsoid, vtkParametricTorus
+from vtkmodules.vtkFiltersCore import (vtkCleanPolyData, vtkFeatureEdges, vtkPolyDataConnectivityFilter,
+                                       vtkQuadricDecimation, vtkTriangleFilter)
+from vtkmodules.vtkFiltersModeling import vtkLoopSubdivisionFilter
+from vtkmodules.vtkFiltersSources import (vtkParametricFunctionSource, vtkSphereSource,
+                                          vtkSuperquadricSource)
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import held_out_shapes as ho  # noqa: E402
+import separate_surfaces as ss  # noqa: E402
+
+
+def _output(algorithm):
+    algorithm.Update()
+    return algorithm.GetOutput()
+
+
+def triangles(poly):
+    """`poly`'s polygons as triangles, coincident points merged (a parametric
+    grid repeats its seam), vertices and lines dropped."""
+    c = vtkCleanPolyData()
+    c.SetInputData(poly)
+    c.SetTolerance(1e-9)
+    t = vtkTriangleFilter()
+    t.SetInputConnection(c.GetOutputPort())
+    t.PassVertsOff()
+    t.PassLinesOff()
+    return _output(t)
+
+
+def truth_of(poly):
+    """(b0, b1, b2) of a closed triangulated 2-manifold (every closed surface in
+    R^3 is orientable), None when `poly` has a boundary or a non-manifold edge."""
+    f = vtkFeatureEdges()
+    f.SetInputData(poly)
+    f.BoundaryEdgesOn()
+    f.NonManifoldEdgesOn()
+    f.FeatureEdgesOff()
+    f.ManifoldEdgesOff()
+    if _output(f).GetNumberOfCells() > 0 or poly.GetNumberOfPolys() == 0:
+        return None
+    conn = vtkPolyDataConnectivityFilter()
+    conn.SetInputData(poly)
+    conn.SetExtractionModeToAllRegions()
+    conn.Update()
+    c = conn.GetNumberOfExtractedRegions()
+    tri = vtk_to_numpy(poly.GetPolys().GetConnectivityArray()).reshape(-1, 3)
+    edges = np.unique(np.sort(np.r_[tri[:, [0, 1]], tri[:, [1, 2]], tri[:, [2, 0]]], axis=1), axis=0)
+    chi = len(np.unique(tri)) - len(edges) + len(tri)
+    return (c, 2 * c - chi, c)
+
+
+def vertices(poly):
+    return np.unique(vtk_to_numpy(poly.GetPoints().GetData()).astype(np.float64), axis=0)
+
+
+def parametric(function, u, v):
+    s = vtkParametricFunctionSource()
+    s.SetParametricFunction(function)
+    s.SetUResolution(u)
+    s.SetVResolution(v)
+    return triangles(_output(s))
+
+
+def isosurface(field, n):
+    return triangles(ss.isosurface_mesh(field, n))
+
+
+def decimated(poly, reduction):
+    d = vtkQuadricDecimation()
+    d.SetInputData(poly)
+    d.SetTargetReduction(reduction)
+    return triangles(_output(d))
+
+
+def subdivided(poly, levels):
+    s = vtkLoopSubdivisionFilter()
+    s.SetInputData(poly)
+    s.SetNumberOfSubdivisions(levels)
+    return triangles(_output(s))
+
+
+def torus():
+    t = vtkParametricTorus()
+    t.SetRingRadius(1)
+    t.SetCrossSectionRadius(0.35)
+    return t
+
+
+def parametric_meshes():
+    for u, v in ((48, 24), (96, 48), (200, 100)):
+        yield "parametric torus %dx%d" % (u, v), parametric(torus(), u, v)
+    e = vtkParametricEllipsoid()
+    e.SetXRadius(1)
+    e.SetYRadius(0.6)
+    e.SetZRadius(0.35)
+    yield "parametric ellipsoid 64x64", parametric(e, 64, 64)
+    for r in (48, 100):
+        s = vtkSphereSource()
+        s.SetThetaResolution(r)
+        s.SetPhiResolution(r)
+        yield "latitude-longitude sphere %d" % r, triangles(_output(s))
+    q = vtkSuperquadricSource()
+    q.SetToroidal(1)
+    q.SetThickness(0.3)
+    q.SetThetaResolution(96)
+    q.SetPhiResolution(48)
+    q.SetThetaRoundness(0.3)
+    q.SetPhiRoundness(0.3)
+    yield "superquadric torus", triangles(_output(q))
+    yield "parametric torus 24x12, Loop-subdivided twice", subdivided(parametric(torus(), 24, 12), 2)
+
+
+def decimated_meshes(names=None):
+    for name, field, _ in ss.IMPLICIT:
+        if names is None or name in names:
+            mesh = isosurface(field, 96)
+            for reduction in (0.9, 0.97):
+                yield "%s, 96^3 isosurface decimated %g" % (name, reduction), decimated(mesh, reduction)
+    if names is None:
+        yield "parametric torus 200x100 decimated 0.9", decimated(parametric(torus(), 200, 100), 0.9)
+
+
+def meshes(quick=False):
+    """Yields (name, mesh as vtkPolyData), deterministic."""
+    if quick:
+        yield from decimated_meshes(("sphere", "torus", "two spheres 0.2 apart"))
+        return
+    yield from parametric_meshes()
+    yield from decimated_meshes()
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
+    ap.add_argument("flowrecon")
+    ap.add_argument("work")
+    ap.add_argument("--quick", action="store_true")
+    args = ap.parse_args()
+    os.makedirs(args.work, exist_ok=True)
+    counts = {"auto": {}, "fixed": {}}
+    print("| mesh | vertices | truth | automatic | fixed t_p 1.1, t_r 2 | automatic choice |")
+    print("|---|---:|---|---|---|---|")
+    for k, (name, poly) in enumerate(meshes(args.quick)):
+        truth = truth_of(poly)
+        if truth is None:
+            print("| %s | not a closed 2-manifold: left out | | | | |" % name)
+            continue
+        points = vertices(poly)
+        cloud = os.path.join(args.work, "mesh%02d.xyz" % k)
+        np.savetxt(cloud, points, fmt="%.17g")
+        cells = []
+        for label, extra in (("auto", []), ("fixed", ["--tp", "1.1", "--tr", "2"])):
+            betti, warned, choice = ho.run(args.flowrecon, cloud, extra)
+            v = ho.verdict(betti, warned, truth)
+            counts[label][v] = counts[label].get(v, 0) + 1
+            cells.append("%s %s" % (v, " ".join(map(str, betti)) if betti else "none"))
+            chosen = choice if label == "auto" else chosen
+        print("| %s | %d | %s | %s | %s | %s |" % (name, len(points), " ".join(map(str, truth)), cells[0],
+                                                  cells[1], chosen), flush=True)
+    for label in ("auto", "fixed"):
+        c = counts[label]
+        print("%s: %d right, %d flagged, %d silent, %d errors" % (
+            label, c.get("right", 0), c.get("flagged", 0), c.get("silent", 0), c.get("error", 0)))
+    return counts
+
+
+if __name__ == "__main__":
+    main()
