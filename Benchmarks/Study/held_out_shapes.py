@@ -14,6 +14,7 @@ table, one row per cloud, and the counts.
 
   /usr/bin/python3 Benchmarks/Study/held_out_shapes.py build/bin/flowrecon WORKDIR
 """
+import argparse
 import os
 import re
 import subprocess
@@ -130,28 +131,48 @@ def clouds(sizes=SIZES, noises=NOISE):
                 yield name, n, noise, p, truth
 
 
-def main():
-    flowrecon, work = sys.argv[1], sys.argv[2]
+def arguments(doc, quick=False):
+    """FLOWRECON WORKDIR [--quick]: a comparison script's command line."""
+    ap = argparse.ArgumentParser(description=doc, formatter_class=argparse.RawTextHelpFormatter)
+    ap.add_argument("flowrecon")
+    ap.add_argument("work")
+    if quick:
+        ap.add_argument("--quick", action="store_true")
+    return ap.parse_args()
+
+
+def compare(flowrecon, work, columns, rows):
+    """Runs `flowrecon reconstruct` at its defaults and at `--tp 1.1 --tr 2` on each
+    of `rows` ((leading cells, cloud as an n x 3 array, true Betti numbers)),
+    written to WORK/cloudNN.xyz; prints a Markdown table (the `columns` named
+    first, then the points, the truth, both verdicts and the automatic choice)
+    and the counts, which it returns."""
     os.makedirs(work, exist_ok=True)
     counts = {"auto": {}, "fixed": {}}
-    print("| shape | points | noise | truth | automatic | fixed t_p 1.1, t_r 2 | automatic choice |")
-    print("|---|---:|---:|---|---|---|---|")
-    for name, n, noise, p, truth in clouds():
-        cloud = os.path.join(work, "%s_%d_%g.xyz" % (name.replace(" ", "_"), n, noise))
-        np.savetxt(cloud, p, fmt="%.9g")
+    print("| %s | points | truth | automatic | fixed t_p 1.1, t_r 2 | automatic choice |" % " | ".join(columns))
+    print("|%s---:|---|---|---|---|" % ("---|" * len(columns)))
+    for k, (cells, p, truth) in enumerate(rows):
+        cloud = os.path.join(work, "cloud%02d.xyz" % k)
+        np.savetxt(cloud, p, fmt="%.17g")
         auto = run(flowrecon, cloud, [])
         fixed = run(flowrecon, cloud, ["--tp", "1.1", "--tr", "2"])
-        cells = []
+        answers = []
         for label, (betti, warned, _) in (("auto", auto), ("fixed", fixed)):
             v = verdict(betti, warned, truth)
             counts[label][v] = counts[label].get(v, 0) + 1
-            cells.append("%s %s" % (v, " ".join(map(str, betti)) if betti else "none"))
-        print("| %s | %d | %g | %s | %s | %s | %s |" % (name, n, noise, " ".join(map(str, truth)),
-                                                      cells[0], cells[1], auto[2]))
+            answers.append("%s %s" % (v, " ".join(map(str, betti)) if betti else "none"))
+        print("| %s | %d | %s | %s | %s | %s |" % (" | ".join(cells), len(p), " ".join(map(str, truth)),
+                                                  answers[0], answers[1], auto[2]), flush=True)
     for label in ("auto", "fixed"):
         c = counts[label]
         print("%s: %d right, %d flagged, %d silent, %d errors" % (
             label, c.get("right", 0), c.get("flagged", 0), c.get("silent", 0), c.get("error", 0)))
+    return counts
+
+
+def main():
+    compare(sys.argv[1], sys.argv[2], ["shape", "noise"],
+            (([name, "%g" % noise], p, truth) for name, n, noise, p, truth in clouds()))
 
 
 if __name__ == "__main__":

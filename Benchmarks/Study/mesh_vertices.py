@@ -25,7 +25,6 @@ warning, silent: wrong without one). Prints a Markdown table and the counts.
 --quick: the decimated meshes of the sphere, the torus and the two spheres 0.2
 apart only (the test py.reconstruction.mesh_vertices).
 """
-import argparse
 import os
 import sys
 
@@ -163,38 +162,20 @@ def meshes(quick=False):
     yield from decimated_meshes()
 
 
-def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
-    ap.add_argument("flowrecon")
-    ap.add_argument("work")
-    ap.add_argument("--quick", action="store_true")
-    args = ap.parse_args()
-    os.makedirs(args.work, exist_ok=True)
-    counts = {"auto": {}, "fixed": {}}
-    print("| mesh | vertices | truth | automatic | fixed t_p 1.1, t_r 2 | automatic choice |")
-    print("|---|---:|---|---|---|---|")
-    for k, (name, poly) in enumerate(meshes(args.quick)):
+def rows(quick=False):
+    """(name, vertices, truth) of each mesh that is a closed 2-manifold; the
+    others are said on stderr."""
+    for name, poly in meshes(quick):
         truth = truth_of(poly)
         if truth is None:
-            print("| %s | not a closed 2-manifold: left out | | | | |" % name)
+            print("%s: not a closed 2-manifold, left out" % name, file=sys.stderr)
             continue
-        points = vertices(poly)
-        cloud = os.path.join(args.work, "mesh%02d.xyz" % k)
-        np.savetxt(cloud, points, fmt="%.17g")
-        cells = []
-        for label, extra in (("auto", []), ("fixed", ["--tp", "1.1", "--tr", "2"])):
-            betti, warned, choice = ho.run(args.flowrecon, cloud, extra)
-            v = ho.verdict(betti, warned, truth)
-            counts[label][v] = counts[label].get(v, 0) + 1
-            cells.append("%s %s" % (v, " ".join(map(str, betti)) if betti else "none"))
-            chosen = choice if label == "auto" else chosen
-        print("| %s | %d | %s | %s | %s | %s |" % (name, len(points), " ".join(map(str, truth)), cells[0],
-                                                  cells[1], chosen), flush=True)
-    for label in ("auto", "fixed"):
-        c = counts[label]
-        print("%s: %d right, %d flagged, %d silent, %d errors" % (
-            label, c.get("right", 0), c.get("flagged", 0), c.get("silent", 0), c.get("error", 0)))
-    return counts
+        yield [name], vertices(poly), truth
+
+
+def main():
+    args = ho.arguments(__doc__, quick=True)
+    return ho.compare(args.flowrecon, args.work, ["mesh"], rows(args.quick))
 
 
 if __name__ == "__main__":

@@ -24,7 +24,6 @@ without one). Prints a Markdown table, one row per cloud, and the counts.
 --quick: the grids of 24 and 48 and the two smallest pairs of spheres, no union
 and no noise (the test py.reconstruction.separate_surfaces).
 """
-import argparse
 import os
 import sys
 
@@ -178,33 +177,9 @@ def clouds(grids=GRIDS, pairs=PAIRS, unions=True):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
-    ap.add_argument("flowrecon")
-    ap.add_argument("work")
-    ap.add_argument("--quick", action="store_true")
-    args = ap.parse_args()
-    os.makedirs(args.work, exist_ok=True)
-    counts = {"auto": {}, "fixed": {}}
-    print("| cloud | points | truth | automatic | fixed t_p 1.1, t_r 2 | automatic choice |")
-    print("|---|---:|---|---|---|---|")
+    args = ho.arguments(__doc__, quick=True)
     selection = clouds(GRIDS[:2], PAIRS[:2], False) if args.quick else clouds()
-    for k, (name, n, p, truth) in enumerate(selection):
-        cloud = os.path.join(args.work, "cloud%02d.xyz" % k)
-        np.savetxt(cloud, p, fmt="%.17g")
-        auto = ho.run(args.flowrecon, cloud, [])
-        fixed = ho.run(args.flowrecon, cloud, ["--tp", "1.1", "--tr", "2"])
-        cells = []
-        for label, (betti, warned, _) in (("auto", auto), ("fixed", fixed)):
-            v = ho.verdict(betti, warned, truth)
-            counts[label][v] = counts[label].get(v, 0) + 1
-            cells.append("%s %s" % (v, " ".join(map(str, betti)) if betti else "none"))
-        print("| %s | %d | %s | %s | %s | %s |" % (name, n, " ".join(map(str, truth)), cells[0], cells[1],
-                                                  auto[2]), flush=True)
-    for label in ("auto", "fixed"):
-        c = counts[label]
-        print("%s: %d right, %d flagged, %d silent, %d errors" % (
-            label, c.get("right", 0), c.get("flagged", 0), c.get("silent", 0), c.get("error", 0)))
-    return counts
+    return ho.compare(args.flowrecon, args.work, ["cloud"], (([name], p, truth) for name, n, p, truth in selection))
 
 
 if __name__ == "__main__":
