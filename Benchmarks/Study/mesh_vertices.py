@@ -11,7 +11,9 @@ spaced as the mesher left them, not as a scanner samples.
 - decimated meshes (VTK's quadric decimation, 90 % and 97 % of the triangles
   removed) of the flying-edges isosurfaces of separate_surfaces.py's seven
   implicit shapes on a 96^3 grid, and of the 200x100 parametric torus: the
-  vertices thin out where the surface is flat and stay dense where it bends.
+  vertices thin out where the surface is flat and stay dense where it bends;
+- the Stanford bunny's closed mesh (npm package `bunny`, fetched with npm into
+  build/npm), Loop-subdivided once and twice, and decimated by 50 % and 80 %.
 The truth is the mesh's own: each mesh, its seams merged, must be a closed
 2-manifold (no boundary or non-manifold edge, VTK's feature edges), and then its
 Betti numbers are (c, 2c - chi, c) for c components and Euler characteristic
@@ -29,7 +31,9 @@ import os
 import sys
 
 import numpy as np
-from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.util.numpy_support import numpy_to_vtk, numpy_to_vtkIdTypeArray, vtk_to_numpy
+from vtkmodules.vtkCommonCore import vtkPoints
+from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
 from vtkmodules.vtkCommonComputationalGeometry import vtkParametricEllipsoid, vtkParametricTorus
 from vtkmodules.vtkFiltersCore import (vtkCleanPolyData, vtkFeatureEdges, vtkPolyDataConnectivityFilter,
                                        vtkQuadricDecimation, vtkTriangleFilter)
@@ -40,6 +44,9 @@ from vtkmodules.vtkFiltersSources import (vtkParametricFunctionSource, vtkSphere
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import held_out_shapes as ho  # noqa: E402
 import separate_surfaces as ss  # noqa: E402
+
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+import whole_process as wp  # noqa: E402
 
 
 def _output(algorithm):
@@ -153,6 +160,27 @@ def decimated_meshes(names=None):
         yield "parametric torus 200x100 decimated 0.9", decimated(parametric(torus(), 200, 100), 0.9)
 
 
+def bunny_meshes():
+    """The Stanford bunny of the npm package `bunny` (a closed mesh of 1 839
+    vertices, fetched with npm as the whole-process benchmark does), Loop-subdivided
+    and decimated."""
+    positions, cells = wp.bunny_mesh()
+    poly = vtkPolyData()
+    points = vtkPoints()
+    points.SetData(numpy_to_vtk(positions, deep=1))
+    poly.SetPoints(points)
+    polys = vtkCellArray()
+    polys.SetData(numpy_to_vtkIdTypeArray(np.arange(0, 3 * len(cells) + 1, 3), deep=1),
+                  numpy_to_vtkIdTypeArray(cells.astype(np.int64).ravel(), deep=1))
+    poly.SetPolys(polys)
+    bunny = triangles(poly)
+    yield "bunny (npm)", bunny
+    for levels, times in ((1, "once"), (2, "twice")):
+        yield "bunny, Loop-subdivided %s" % times, subdivided(bunny, levels)
+    for reduction in (0.5, 0.8):
+        yield "bunny decimated %g" % reduction, decimated(bunny, reduction)
+
+
 def meshes(quick=False):
     """Yields (name, mesh as vtkPolyData), deterministic."""
     if quick:
@@ -160,6 +188,7 @@ def meshes(quick=False):
         return
     yield from parametric_meshes()
     yield from decimated_meshes()
+    yield from bunny_meshes()
 
 
 def rows(quick=False):
