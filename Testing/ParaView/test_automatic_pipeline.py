@@ -18,6 +18,9 @@ Flow Reconstruction, every property at its default, in pvpython.
 - On 1000 points of a torus with noise of half their spacing, whose most
   stable topology is a solid while the samples lie on a surface, both take
   the torus that closes briefly before it, and say so.
+- On two spheres apart only briefly, below the range where windows are looked
+  for (the vertices of a decimated mesh), both answer them joined and warn that
+  they were apart, with the range.
 - Turning Automatic t_r off shows the Reconstruction Threshold (2) instead,
   and its Betti numbers are the profile's at 2.
 Usage: pvpython test_automatic_pipeline.py PLUGIN FLOWRECON WORKDIR
@@ -30,6 +33,8 @@ import sys
 import zlib
 
 import generate_clouds as gc
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Benchmarks", "Study"))
+import mesh_vertices as mv  # noqa: E402
 from flowrecon_testing.clouds import noisy_surface
 from paraview import servermanager
 from paraview.simple import Delete, LoadPlugin, OpenDataFile
@@ -160,6 +165,16 @@ def main():
     c = check("torus, noise half its spacing", brief, gc.betti("torus_pd"))
     expect(any("is taken instead" in w for w in c["warnings"]),
            "torus, noise half its spacing: no warning that the surface was taken in %s" % c["warnings"])
+    # Two spheres 0.2 apart given as the 316 vertices of a decimated mesh are
+    # apart only over (1.424, 1.455], below the windows looked at: joined in the
+    # answer (1 0 2), and warned with that range, in ParaView as on the command line.
+    name, mesh = list(mv.decimated_meshes(("two spheres 0.2 apart",)))[-1]
+    joined = os.path.join(WORK, "two_spheres_decimated.xyz")
+    with open(joined, "w") as f:
+        f.write(gc.to_xyz_text(mv.vertices(mesh)))
+    c = check(name, joined, None)
+    expect(any("closed surfaces were apart for t_r in" in w for w in c["warnings"]),
+           "%s: no warning that the surfaces were apart in %s" % (name, c["warnings"]))
     grid, table = pipeline(torus, automatic=False)
     fd = grid.GetFieldData()
     fixed = tuple(int(v) for v in values(fd, "BettiNumbers"))
