@@ -137,6 +137,19 @@ void CompactFromStored(vtkMultiBlockDataSet* complex, const std::string& input, 
   }
 }
 
+// CheckRows of a stored complex's answer: the gaps between its parts from the
+// Gabriel edges (the light block), as on a cloud.
+void CheckRowsOfStored(vtkMultiBlockDataSet* complex, const CompactComplex& cells, ThresholdChoice& choice)
+{
+  if (!choice.NeedsRows())
+  {
+    return;
+  }
+  const std::vector<Node> edges = GabrielEdgeNodes(complex);
+  CheckRows(choice, edges,
+    static_cast<Id>(std::count_if(edges.begin(), edges.end(), [](const Node& n) { return n.Index == 0; })), cells);
+}
+
 // CheckFilled on a stored complex's reconstruction up to the cap (`grid`: its
 // cells, below t_r those of the reconstruction at `tr`); returns Filled.
 bool CheckFilledOnGrid(vtkUnstructuredGrid* grid, vtkMultiBlockDataSet* complex, double tr,
@@ -555,9 +568,10 @@ int RunReconstruct(const Arguments& args)
     if (r.Automatic)
     {
       CheckShallow(r.Choice, r.Compact.Tetrahedra); // as on a cloud
+      CheckRowsOfStored(complex, r.Compact, r.Choice);
     }
   }
-  else if (complex && r.Automatic && r.Choice.NeedsDepth())
+  else if (complex && r.Automatic && (r.Choice.NeedsDepth() || r.Choice.NeedsRows()))
   {
     // --exact of a solid answer: the compact tetrahedra of the same cells,
     // made for this measure only (as on a cloud).
@@ -568,6 +582,7 @@ int RunReconstruct(const Arguments& args)
     {
       CompactFromStored(complex, args.Input, probe);
       CheckShallow(r.Choice, probe.Compact.Tetrahedra);
+      CheckRowsOfStored(complex, probe.Compact, r.Choice);
     }
     catch (const Error& e)
     {
@@ -575,13 +590,13 @@ int RunReconstruct(const Arguments& args)
       {
         throw; // Ctrl-C stops the command, as anywhere else
       }
-      std::cerr << "warning: the solid's depth is not measured (no shallow-solid warning): "
+      std::cerr << "warning: the answer's cells on the samples are not made (no shallow-solid or side-by-side check): "
                 << e.what() << "\n";
     }
     catch (const std::exception& e)
     {
       // Only a warning needed them: the exact output is still written.
-      std::cerr << "warning: the solid's depth is not measured (no shallow-solid warning): "
+      std::cerr << "warning: the answer's cells on the samples are not made (no shallow-solid or side-by-side check): "
                 << e.what() << "\n";
     }
   }

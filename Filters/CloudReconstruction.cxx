@@ -382,16 +382,19 @@ void CloudRun::Draw()
         Run(eager, this->Chosen.Tp, true, this->Settings, regions, this->Report.Range(0.4, 0.7));
     }
   }
-  // The shallow-solid check reads tetrahedra on the samples: the exact output
-  // has none, so the compact ones of the same reconstruction stand in.
-  const bool depth = this->Automatic && this->Result.Choice.NeedsDepth();
-  std::vector<std::array<Id, 4>> tetrahedra;
-  bool measurable = depth;
-  if (depth && !this->Settings.Compact)
+  // The shallow-solid and side-by-side checks read cells on the samples: the
+  // exact output has none, so the compact ones of the same reconstruction
+  // stand in.
+  ThresholdChoice& choice = this->Result.Choice;
+  const bool rows = this->Automatic && choice.NeedsRows();
+  const bool depth = this->Automatic && choice.NeedsDepth();
+  CompactComplex probe;
+  bool measurable = depth || rows;
+  if (measurable && !this->Settings.Compact)
   {
     try
     {
-      tetrahedra = CompactReconstruction(*r.Triangulation, r.Complex.Nodes, this->Selected()).Tetrahedra;
+      probe = CompactReconstruction(*r.Triangulation, r.Complex.Nodes, this->Selected());
     }
     catch (const std::exception&)
     {
@@ -406,11 +409,16 @@ void CloudRun::Draw()
   // The triangulation is the largest block until here (~0.7 KB per point, in
   // tbbmalloc's pools): the VTK arrays below need that memory back.
   ReleaseFreedMemory();
-  if (measurable)
+  const CompactComplex& cells = this->Settings.Compact ? this->Result.Compact : probe;
+  if (measurable && depth)
   {
     // After the triangulation is gone: on a large solid the samples' stars
     // are ~100 MB (10^6 cube points).
-    CheckShallow(this->Result.Choice, this->Settings.Compact ? this->Result.Compact.Tetrahedra : tetrahedra);
+    CheckShallow(choice, cells.Tetrahedra);
+  }
+  if (measurable && rows)
+  {
+    CheckRows(choice, r.Complex.Nodes, static_cast<Id>(this->Samples.size()), cells);
   }
   if (!this->Settings.Compact)
   {

@@ -199,6 +199,15 @@ std::vector<std::string> ReconstructionChoiceWarnings(const ThresholdChoice& cho
       "a gap between separate surfaces, about as wide as the sample spacing, may have been bridged "
       "(a t_r in that range keeps them apart)");
   }
+  if (choice.Rows > 0)
+  {
+    lines.push_back("the answer is " + std::to_string(choice.Rows) + " parts side by side, none with a "
+      "void, each within " + Number(choice.RowGap, 1) + " times the median sample spacing of another "
+      "(the widest gap near " + PlaceText(choice.RowPlace, choice.Far.Median) + "): rows of one "
+      "surface sampled far more finely along them than across (scan lines, a mesh's long rows) "
+      "close as curves of their own long before they join; an even spacing across and along "
+      "(the rows thinned, or more of them) lets the surface close");
+  }
   // A resurfaced answer has said which solid lasts longer.
   if (choice.Longest.Length() > choice.Window.Length() && choice.Longest.Betti != choice.Window.Betti &&
     !(choice.Resurfaced && choice.Longest.Betti == choice.Solid.Betti))

@@ -280,12 +280,14 @@ int vtkFlowReconstruction::RequestData(
     flowrecon::EmptyOutputs(outputVector);
     return 0;
   }
-  // The exact geometry of a solid answer needs the compact tetrahedra too:
-  // the shallow-solid check reads them, as the command line's --exact does.
+  // The exact geometry of a solid answer, or of one of several parts, needs
+  // the compact cells too: the shallow-solid and side-by-side checks read
+  // them, as the command line's --exact does.
   // There only a warning depends on them: when they cannot be made, the exact
   // output is still given, unmeasured.
   const bool compactGeometry = this->Geometry == GEOMETRY_COMPACT;
-  if ((compactGeometry || (selection.Chosen && selection.Choice.NeedsDepth())) &&
+  if ((compactGeometry ||
+        (selection.Chosen && (selection.Choice.NeedsDepth() || selection.Choice.NeedsRows()))) &&
     !this->PrepareCompact(tmax, !compactGeometry))
   {
     flowrecon::EmptyOutputs(outputVector);
@@ -534,7 +536,7 @@ void vtkFlowReconstruction::FillOutputs(vtkMultiBlockDataSet* input, double tmax
   flowrecon::CompactComplex& compact = c.Shown;
   std::vector<double>& thresholds = c.NodeThresholds;
   const bool withCompact = this->Geometry == GEOMETRY_COMPACT && c.Compact;
-  const bool measure = choice && c.Compact && choice->NeedsDepth();
+  const bool measure = choice && c.Compact && (choice->NeedsDepth() || choice->NeedsRows());
   if (withCompact || measure)
   {
     try
@@ -556,6 +558,7 @@ void vtkFlowReconstruction::FillOutputs(vtkMultiBlockDataSet* input, double tmax
   {
     measured = *choice;
     flowrecon::CheckShallow(measured, compact.Tetrahedra);
+    flowrecon::CheckRows(measured, fc.Nodes, fc.NumberOfInputPoints, compact);
     choice = &measured;
   }
   std::string why; // no Betti numbers

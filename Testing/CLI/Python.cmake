@@ -75,6 +75,12 @@ flowrecon_add_cli_python_test(py.reconstruction.separate_surfaces test_separate_
 # closed surfaces were apart below the answer names a range that parts them.
 flowrecon_add_cli_python_test(py.reconstruction.mesh_vertices test_mesh_vertices.py mesh_vertices)
 
+# Parts side by side: a sphere scanned along parallels and a knot tube's grid of
+# vertices (rows far finer along than across) answer their rows as curves and
+# are warned, with the gap a k-d tree finds; far-apart circles and even
+# samplings are not.
+flowrecon_add_cli_python_test(py.reconstruction.parts_side_by_side test_parts_side_by_side.py parts_side_by_side)
+
 # Samples apart from the rest (outliers strewn in a cloud's box): warned, as
 # many as an independent Gabriel-edge count (scipy) finds; clean clouds not.
 flowrecon_add_cli_python_test(py.reconstruction.far_samples test_far_samples.py far_samples)

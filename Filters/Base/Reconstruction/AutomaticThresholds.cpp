@@ -1,6 +1,7 @@
 #include "AutomaticThresholds.h"
 
 #include "LocalFlatness.h"
+#include "PartGaps.h"
 #include "SolidDepth.h"
 
 #include "Progress.h"
@@ -317,6 +318,30 @@ bool PreferSurface(ThresholdChoice& choice, const std::vector<std::vector<Topolo
   choice.ReconstructionThreshold = std::min(best.From * rule.Margin, std::sqrt(best.From * best.To));
   choice.Apart = ApartBelow(profiles[candidate], best);
   return true;
+}
+
+bool ThresholdChoice::NeedsRows() const
+{
+  return this->Window.Length() > 0 && this->Window.Betti[2] == 0 && this->Window.Betti[0] >= 3 &&
+    this->Far.Median > 0;
+}
+
+void CheckRows(ThresholdChoice& choice, const std::vector<Node>& nodes, Id samples, const CompactComplex& cells)
+{
+  choice.Rows = 0;
+  choice.RowGap = 0;
+  if (!choice.NeedsRows())
+  {
+    return;
+  }
+  const PartGaps gaps = FindPartGaps(nodes, samples, cells);
+  const double gap = gaps.Widest / choice.Far.Median;
+  if (gaps.Parts >= 3 && gap <= choice.Rule.RowFactor)
+  {
+    choice.Rows = gaps.Parts;
+    choice.RowGap = gap;
+    choice.RowPlace = gaps.Where;
+  }
 }
 
 bool ThresholdChoice::NeedsDepth() const

@@ -17,6 +17,7 @@
 #define flowrecon_AutomaticThresholds_h
 
 #include "CellHomology.h"
+#include "CompactReconstruction.h"
 #include "FarSamples.h"
 #include "Reconstruction.h"
 
@@ -76,6 +77,14 @@ struct ThresholdRule
   /// warned anyway: its gaps); 22-32 for outliers strewn in a scan's box
   /// (Data/EXPERIMENTS.md).
   double FarFactor = 10;
+  /// An answer of three parts or more without a void, each of whose parts
+  /// has another within this many times the median nearest-sample distance,
+  /// is warned as rows of one surface (PartGaps.h): 3-6.3 on surfaces scanned
+  /// along lines 3-6 times closer than the lines, or a mesh's rows 6-10 times
+  /// finer along than across; 12-17 on the study's i.i.d. curves, wrong and
+  /// warned already; no right answer of the studies has three parts and no
+  /// void (Data/EXPERIMENTS.md).
+  double RowFactor = 10;
 };
 
 struct ThresholdChoice
@@ -125,6 +134,15 @@ struct ThresholdChoice
   /// whose gap is about the spacing, which the rule looks for only above
   /// Rule.Lowest and over a stable window.
   StableWindow Apart;
+  /// Parts side by side (CheckRows; warned): the answer's parts, when there
+  /// are three or more, none with a void, and each has another within
+  /// Rule.RowFactor times the median nearest-sample distance; else 0.
+  Id Rows = 0;
+  double RowGap = 0; ///< the widest gap from a part to its nearest, over that distance
+  Point3 RowPlace{ { 0, 0, 0 } }; ///< the middle of that gap
+  /// Whether CheckRows has something to measure: a window with no void and
+  /// three components or more, after CheckFar.
+  bool NeedsRows() const;
   /// Whether CheckShallow has something to measure: a solid answer (no void,
   /// SolidShare maxima a sample, after CheckFilled) that is not Filled.
   bool NeedsDepth() const;
@@ -178,6 +196,14 @@ void CheckFar(ThresholdChoice& choice, const std::vector<Node>& nodes, Id sample
 /// closed surface whose noise is about its spacing give the same samples, so
 /// the answer is doubtful either way; deeper solids are volume samples.
 void CheckShallow(ThresholdChoice& choice, const std::vector<std::array<Id, 4>>& tetrahedra);
+
+/// After CheckFar, with the reconstruction at t_r as cells on the samples
+/// (the compact output): when NeedsRows(), sets Rows, RowGap and RowPlace if
+/// every part has another within Rule.RowFactor spacings (FindPartGaps over
+/// `nodes`, a flow complex's over `samples` input points). A surface sampled
+/// far more finely along lines than across gives such parts, each line a
+/// curve of its own over the whole range of t_r looked at.
+void CheckRows(ThresholdChoice& choice, const std::vector<Node>& nodes, Id samples, const CompactComplex& cells);
 
 /// The Threshold of the carrier of every maximum with cells in `run`, sorted:
 /// MaximaBelow at any t (the count below t) once the run is gone.

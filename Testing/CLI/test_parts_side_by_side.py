@@ -1,0 +1,120 @@
+"""Parts side by side: a surface sampled far more finely along lines than across
+them is read at its finest spacing, each line a closed curve of its own over
+every t_r looked at. The unit sphere scanned along parallels 0.06 and 0.03
+apart, with points 0.01 apart on each, answers 52 52 0 (and, 0.03 apart, the
+sphere, 1 0 1); a tube
+around a trefoil knot given as a 1000 x 12 grid of vertices answers 12 12 0.
+Each must be warned as parts side by side, with the widest gap from a part to
+its nearest other part over the median nearest-sample distance equal (to the
+printed digit) to what a k-d tree finds on the written cells' components
+(scipy). Controls that must not be warned so: three circles far apart (3 3 0,
+right), the sphere's parallels 0.03 apart and the ones 0.06 apart thinned to
+an even spacing (both right), a trefoil knot (one part).
+Usage: test_parts_side_by_side.py FLOWRECON WORKDIR
+"""
+import os
+import re
+import subprocess
+import sys
+
+import numpy as np
+from scipy.sparse import coo_matrix
+from scipy.sparse.csgraph import connected_components
+from scipy.spatial import cKDTree
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
+
+FLOWRECON, WORK = sys.argv[1:3]
+os.makedirs(WORK, exist_ok=True)
+ROWS = re.compile(r"^warning: the answer is (\d+) parts side by side, none with a void, each within "
+                  r"([\d.]+) times the median sample spacing of another", re.M)
+
+
+def parallels(across, along, keep_every=1):
+    """Points `along` apart on the sphere's parallels, `across` apart in latitude."""
+    rows = []
+    for polar in np.arange(across / 2, np.pi, across):
+        r = np.sin(polar)
+        m = max(3, int(2 * np.pi * r / along))
+        t = np.linspace(0, 2 * np.pi, m, endpoint=False)[::keep_every]
+        rows.append(np.c_[r * np.cos(t), r * np.sin(t), np.full(len(t), np.cos(polar))])
+    return np.vstack(rows)
+
+
+def trefoil(t):
+    return np.c_[np.sin(t) + 2 * np.sin(2 * t), np.cos(t) - 2 * np.cos(2 * t), -np.sin(3 * t)]
+
+
+def knot_tube(nu, nv, radius):
+    """The vertices of a nu x nv grid on a tube around the trefoil."""
+    u, v = np.meshgrid(np.linspace(0, 2 * np.pi, nu, endpoint=False),
+                       np.linspace(0, 2 * np.pi, nv, endpoint=False), indexing="ij")
+    u, v = u.ravel(), v.ravel()
+    h = 1e-4
+    tangent = trefoil(u + h) - trefoil(u - h)
+    tangent /= np.linalg.norm(tangent, axis=1)[:, None]
+    normal = np.cross(tangent, [0.3, 0.5, 0.81])
+    normal /= np.linalg.norm(normal, axis=1)[:, None]
+    binormal = np.cross(tangent, normal)
+    return trefoil(u) + radius * (np.cos(v)[:, None] * normal + np.sin(v)[:, None] * binormal)
+
+
+def circles():
+    """Three unit circles 4 apart, in planes of their own (all in one plane is bad input)."""
+    t = np.linspace(0, 2 * np.pi, 200, endpoint=False)
+    return np.vstack([np.c_[np.cos(t) + 4 * k, np.sin(t) * np.cos(k), np.sin(t) * np.sin(k)] for k in range(3)])
+
+
+def widest_gap(vtu, samples):
+    """Over the components of the written cells, the largest distance to the
+    nearest other component, over the median nearest-sample distance."""
+    reader = vtkXMLUnstructuredGridReader()
+    reader.SetFileName(vtu)
+    reader.Update()
+    grid = reader.GetOutput()
+    points = vtk_to_numpy(grid.GetPoints().GetData())
+    conn = vtk_to_numpy(grid.GetCells().GetConnectivityArray())
+    offsets = vtk_to_numpy(grid.GetCells().GetOffsetsArray())
+    rows, cols = [], []
+    for k in range(len(offsets) - 1):
+        ids = conn[offsets[k]:offsets[k + 1]]
+        rows += [ids[0]] * (len(ids) - 1)
+        cols += list(ids[1:])
+    n = len(points)
+    count, label = connected_components(coo_matrix((np.ones(len(rows)), (rows, cols)), shape=(n, n)),
+                                        directed=False)
+    spacing = np.median(cKDTree(samples).query(samples, k=2)[0][:, 1])
+    widest = max(cKDTree(points[label != c]).query(points[label == c])[0].min() for c in range(count))
+    return count, widest / spacing
+
+
+failures = []
+cases = [("sphere scanned along parallels 0.06 apart", parallels(0.06, 0.01), True),
+         ("sphere scanned along parallels 0.03 apart (right: 1 0 1)", parallels(0.03, 0.01), False),
+         ("tube around a trefoil, 1000 x 12 grid", knot_tube(1000, 12, 0.4), True),
+         ("three circles 4 apart", circles(), False),
+         ("the parallels 0.06 apart, every sixth point", parallels(0.06, 0.01, 6), False),
+         ("trefoil knot", trefoil(np.linspace(0, 2 * np.pi, 1000, endpoint=False)), False)]
+for k, (name, points, rows) in enumerate(cases):
+    cloud = os.path.join(WORK, "cloud%d.xyz" % k)
+    np.savetxt(cloud, points, fmt="%.17g")
+    out = subprocess.run([FLOWRECON, "reconstruct", cloud, "-o", cloud[:-4] + ".vtu"], capture_output=True, text=True)
+    betti = re.search(r"^Betti numbers: (\d+) (\d+) (\d+)$", out.stdout, re.M)
+    warning = ROWS.search(out.stderr)
+    print("%s: Betti %s; %s" % (name, betti.groups() if betti else None,
+                                 warning.group(0)[9:] if warning else "not warned as parts side by side"))
+    if betti is None:
+        failures.append(name + ": no Betti numbers (exit %d)" % out.returncode)
+        continue
+    if bool(warning) != rows:
+        failures.append(name + (": not warned" if rows else ": warned") + " as parts side by side")
+    if warning:
+        parts, gap = widest_gap(cloud[:-4] + ".vtu", points)
+        print("  oracle: %d parts, widest gap %.2f spacings" % (parts, gap))
+        if int(warning.group(1)) != parts or int(betti.group(1)) != parts or abs(float(warning.group(2)) - gap) > 0.051:
+            failures.append("%s: warned %s parts within %s, the oracle %d within %.2f"
+                            % (name, warning.group(1), warning.group(2), parts, gap))
+if failures:
+    raise SystemExit("; ".join(failures))
+print("parts side by side warned on the %d row samplings, on none of the %d controls"
+      % (sum(c[2] for c in cases), sum(not c[2] for c in cases)))
