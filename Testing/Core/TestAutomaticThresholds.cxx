@@ -11,6 +11,7 @@
 #include "Check.h"
 #include "Clouds.h"
 #include "LocalFlatness.h"
+#include "PartGaps.h"
 #include "SolidDepth.h"
 
 #include <algorithm>
@@ -253,6 +254,59 @@ int main()
     nodes.resize(21); // the 9 samples and their 12 edges
     CheckFar(c, nodes, 9);
     CHECK(c.Far.Count == 0 && c.Far.Median == 0.5);
+  }
+  // Parts side by side: three rows of three samples (edges of half-length 1
+  // along them), the rows 3 and 4 apart (Gabriel edges across, half-lengths
+  // 1.5 and 2); the widest gap from a row to its nearest is 2, 4 median
+  // distances. Warned under a factor of 10, not under 3; not when the answer
+  // has a void, fewer than three parts, or no window.
+  {
+    std::vector<Node> nodes;
+    CompactComplex cells;
+    const auto edge = [&](Id a, Id b, double half, bool inside) {
+      Node n;
+      n.Index = 1;
+      n.Value = half;
+      n.Simplex = { { std::min(a, b), std::max(a, b), -1, -1 } };
+      n.Location = { { static_cast<double>(a), static_cast<double>(b), 0 } };
+      nodes.push_back(n);
+      if (inside)
+      {
+        cells.Edges.push_back({ { a, b } });
+      }
+    };
+    for (Id row = 0; row < 3; ++row)
+    {
+      edge(3 * row, 3 * row + 1, 1, true);
+      edge(3 * row + 1, 3 * row + 2, 1, true);
+    }
+    edge(1, 4, 1.5, false);
+    edge(4, 7, 2, false);
+    edge(2, 8, 3.5, false); // not the nearest of either
+    const PartGaps gaps = FindPartGaps(nodes, 9, cells);
+    CHECK(gaps.Parts == 3 && gaps.Widest == 2 && gaps.Where[0] == 4 && gaps.Where[1] == 7);
+    ThresholdChoice c = ChooseThresholds({ Profile({ { 1.0, { 9, 0, 0 } }, { 1.4, { 3, 0, 0 } } }) }, 5);
+    CHECK(c.NeedsRows() == false); // CheckFar first: no median yet
+    CheckFar(c, nodes, 9);
+    CHECK(c.Far.Median == 1 && c.NeedsRows());
+    CheckRows(c, nodes, 9, cells);
+    CHECK(c.Rows == 3 && c.RowGap == 2 && c.RowPlace[0] == 4);
+    c.Rule.RowFactor = 1.9;
+    CheckRows(c, nodes, 9, cells);
+    CHECK(c.Rows == 0);
+    c.Rule.RowFactor = 10;
+    c.Window.Betti = { { 3, 0, 1 } };
+    CheckRows(c, nodes, 9, cells);
+    CHECK(c.Rows == 0);
+    c.Window.Betti = { { 2, 0, 0 } };
+    CheckRows(c, nodes, 9, cells);
+    CHECK(c.Rows == 0);
+    // Two rows joined into one part by a cell: two parts, nothing to warn.
+    cells.Edges.push_back({ { 1, 4 } });
+    CHECK(FindPartGaps(nodes, 9, cells).Parts == 2);
+    // Ids past the samples are passed over.
+    edge(5, 1000000000, 0.1, true);
+    CHECK(FindPartGaps(nodes, 9, cells).Parts == 2);
   }
   // Bad input.
   {
