@@ -24,39 +24,12 @@ from scipy.spatial import cKDTree
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
 
+from flowrecon_testing.clouds import knot_tube, parallels, trefoil
+
 FLOWRECON, WORK = sys.argv[1:3]
 os.makedirs(WORK, exist_ok=True)
 ROWS = re.compile(r"^warning: the answer is (\d+) parts side by side, none with a void, each within "
                   r"([\d.]+) times the median sample spacing of another", re.M)
-
-
-def parallels(across, along, keep_every=1):
-    """Points `along` apart on the sphere's parallels, `across` apart in latitude."""
-    rows = []
-    for polar in np.arange(across / 2, np.pi, across):
-        r = np.sin(polar)
-        m = max(3, int(2 * np.pi * r / along))
-        t = np.linspace(0, 2 * np.pi, m, endpoint=False)[::keep_every]
-        rows.append(np.c_[r * np.cos(t), r * np.sin(t), np.full(len(t), np.cos(polar))])
-    return np.vstack(rows)
-
-
-def trefoil(t):
-    return np.c_[np.sin(t) + 2 * np.sin(2 * t), np.cos(t) - 2 * np.cos(2 * t), -np.sin(3 * t)]
-
-
-def knot_tube(nu, nv, radius):
-    """The vertices of a nu x nv grid on a tube around the trefoil."""
-    u, v = np.meshgrid(np.linspace(0, 2 * np.pi, nu, endpoint=False),
-                       np.linspace(0, 2 * np.pi, nv, endpoint=False), indexing="ij")
-    u, v = u.ravel(), v.ravel()
-    h = 1e-4
-    tangent = trefoil(u + h) - trefoil(u - h)
-    tangent /= np.linalg.norm(tangent, axis=1)[:, None]
-    normal = np.cross(tangent, [0.3, 0.5, 0.81])
-    normal /= np.linalg.norm(normal, axis=1)[:, None]
-    binormal = np.cross(tangent, normal)
-    return trefoil(u) + radius * (np.cos(v)[:, None] * normal + np.sin(v)[:, None] * binormal)
 
 
 def circles():

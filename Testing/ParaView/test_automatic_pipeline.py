@@ -20,7 +20,8 @@ Flow Reconstruction, every property at its default, in pvpython.
   the torus that closes briefly before it, and say so.
 - On two spheres apart only briefly, below the range where windows are looked
   for (the vertices of a decimated mesh), both answer them joined and warn that
-  they were apart, with the range.
+  they were apart, with the range; on a knot tube's grid of vertices far finer
+  along than across, both warn of parts side by side.
 - Turning Automatic t_r off shows the Reconstruction Threshold (2) instead,
   and its Betti numbers are the profile's at 2.
 Usage: pvpython test_automatic_pipeline.py PLUGIN FLOWRECON WORKDIR
@@ -35,7 +36,7 @@ import zlib
 import generate_clouds as gc
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Benchmarks", "Study"))
 import mesh_vertices as mv  # noqa: E402
-from flowrecon_testing.clouds import noisy_surface
+from flowrecon_testing.clouds import knot_tube, noisy_surface
 from paraview import servermanager
 from paraview.simple import Delete, LoadPlugin, OpenDataFile
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
@@ -175,6 +176,15 @@ def main():
     c = check(name, joined, None)
     expect(any("closed surfaces were apart for t_r in" in w for w in c["warnings"]),
            "%s: no warning that the surfaces were apart in %s" % (name, c["warnings"]))
+    # A knot tube's grid of vertices, 6 times finer along the knot than around
+    # it, answers its 12 rows as curves (12 12 0): warned as parts side by
+    # side, with the same gap and place as on the command line.
+    rows = os.path.join(WORK, "knot_tube_rows.xyz")
+    with open(rows, "w") as f:
+        f.write(gc.to_xyz_text(knot_tube(1000, 12, 0.4)))
+    c = check("knot tube rows", rows, None)
+    expect(any("parts side by side" in w for w in c["warnings"]),
+           "knot tube rows: no warning of parts side by side in %s" % c["warnings"])
     grid, table = pipeline(torus, automatic=False)
     fd = grid.GetFieldData()
     fixed = tuple(int(v) for v in values(fd, "BettiNumbers"))
