@@ -835,32 +835,7 @@ void SetBettiNumbers(CompactComplex& out)
   });
   std::vector<char> used(static_cast<std::size_t>(points), 0);
   UnionFind components(static_cast<std::size_t>(points));
-  const auto hold = [&](const Id* v, int n) {
-    for (int a = 0; a < n; ++a)
-    {
-      used[v[a]] = 1;
-      if (a > 0)
-      {
-        components.Merge(static_cast<std::int32_t>(v[0]), static_cast<std::int32_t>(v[a]));
-      }
-    }
-  };
-  for (const Id& v : out.Vertices)
-  {
-    hold(&v, 1);
-  }
-  for (const auto& e : out.Edges)
-  {
-    hold(e.data(), 2);
-  }
-  for (const auto& t : out.Triangles)
-  {
-    hold(t.data(), 3);
-  }
-  for (const auto& t : out.Tetrahedra)
-  {
-    hold(t.data(), 4);
-  }
+  JoinCells(out, points, used, components);
   Id vertices = 0, b0 = 0;
   for (Id v = 0; v < points; ++v)
   {
@@ -1006,6 +981,40 @@ std::array<Id, 4> CompactBettiNumbers(const CompactComplex& compact)
     cells.Add(t.data(), 4, 0);
   }
   return BettiNumbersBelow(CellBarcode(cells), 1);
+}
+
+void JoinCells(const CompactComplex& cells, Id points, std::vector<char>& used, UnionFind& components)
+{
+  const auto hold = [&](const Id* v, int n) {
+    for (int a = 0; a < n; ++a)
+    {
+      if (v[a] < 0 || v[a] >= points)
+      {
+        return;
+      }
+    }
+    for (int a = 0; a < n; ++a)
+    {
+      used[static_cast<std::size_t>(v[a])] = 1;
+      components.Merge(static_cast<std::int32_t>(v[0]), static_cast<std::int32_t>(v[a]));
+    }
+  };
+  for (const Id& v : cells.Vertices)
+  {
+    hold(&v, 1);
+  }
+  for (const auto& e : cells.Edges)
+  {
+    hold(e.data(), 2);
+  }
+  for (const auto& t : cells.Triangles)
+  {
+    hold(t.data(), 3);
+  }
+  for (const auto& t : cells.Tetrahedra)
+  {
+    hold(t.data(), 4);
+  }
 }
 
 } // namespace flowrecon

@@ -26,6 +26,8 @@
 namespace flowrecon
 {
 
+class UnionFind;
+
 class Retriangulation;
 
 /// Cells over input point ids, each with the node it stands for. Triangles
@@ -180,6 +182,11 @@ CompactComplex CompactReconstruction(const Retriangulation& re, const std::vecto
 /// (CellHomology): the oracle of compact.Betti, superlinear (50 s for 2 10^6
 /// triangles).
 std::array<Id, 4> CompactBettiNumbers(const CompactComplex& compact);
+
+/// Marks in `used` (sized `points`) the samples that `cells` holds and joins
+/// them, cell by cell, in `components` (sized `points`): its parts. A cell
+/// with an id outside 0..points-1 (a damaged file) is passed over.
+void JoinCells(const CompactComplex& cells, Id points, std::vector<char>& used, UnionFind& components);
 
 } // namespace flowrecon
 

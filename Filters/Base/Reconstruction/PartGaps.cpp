@@ -13,39 +13,9 @@ PartGaps FindPartGaps(const std::vector<Node>& nodes, Id samples, const CompactC
   PartGaps gaps;
   samples = std::max<Id>(samples, 0);
   auto valid = [samples](Id s) { return s >= 0 && s < samples; };
-  // The samples in the cells, joined by them.
   std::vector<char> in(static_cast<std::size_t>(samples), 0);
   UnionFind parts(static_cast<std::size_t>(samples));
-  auto join = [&](const Id* ids, int count) {
-    for (int k = 0; k < count; ++k)
-    {
-      if (!valid(ids[k]))
-      {
-        return;
-      }
-    }
-    for (int k = 0; k < count; ++k)
-    {
-      in[static_cast<std::size_t>(ids[k])] = 1;
-      parts.Merge(static_cast<std::int32_t>(ids[0]), static_cast<std::int32_t>(ids[k]));
-    }
-  };
-  for (const Id v : cells.Vertices)
-  {
-    join(&v, 1);
-  }
-  for (const auto& e : cells.Edges)
-  {
-    join(e.data(), 2);
-  }
-  for (const auto& t : cells.Triangles)
-  {
-    join(t.data(), 3);
-  }
-  for (const auto& t : cells.Tetrahedra)
-  {
-    join(t.data(), 4);
-  }
+  JoinCells(cells, samples, in, parts);
   // Dense part ids, by their roots.
   std::vector<Id> part(static_cast<std::size_t>(samples), -1);
   for (Id s = 0; s < samples; ++s)
