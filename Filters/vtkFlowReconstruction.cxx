@@ -733,10 +733,10 @@ bool vtkFlowReconstruction::PrepareCompact(double tmax, bool forWarning)
   }
   catch (const std::exception& e)
   {
-    // Only the shallow-solid warning needed them: the exact output goes on.
+    // Only the shallow-solid and side-by-side warnings needed them: the exact output goes on.
     c.Compact.reset();
     flowrecon::ReleaseFreedMemory();
-    vtkWarningMacro(<< "the solid's depth is not measured (no shallow-solid warning): "
+    vtkWarningMacro(<< "the answer's cells on the samples are not made (no shallow-solid or side-by-side check): "
                     << e.what());
   }
   return true;

@@ -202,8 +202,9 @@ public:
    * made once per input and MaximumThreshold, so that a new t_r only selects.
    * The Betti numbers, profiles and warnings are the same in both; with the
    * Betti numbers from the Hasse diagram the exact cells are never drawn. A
-   * solid answer at the automatic t_r also makes the compact walks with the
-   * exact geometry: the shallow-solid warning measures their tetrahedra.
+   * solid answer, or one of three parts or more without a void, at the
+   * automatic t_r also makes the compact walks with the exact geometry: the
+   * shallow-solid and side-by-side warnings measure their cells.
    */
   vtkSetClampMacro(Geometry, int, GEOMETRY_EXACT, GEOMETRY_COMPACT);
   vtkGetMacro(Geometry, int);
@@ -285,7 +286,7 @@ private:
   void ComputeBettiNumbers(double tmax);
   /// The compact family below `tmax` into the cache, unless it is there
   /// (false: failed or aborted). `forWarning`: with the exact geometry only the
-  /// shallow-solid warning needs it, so a failure warns and returns true with
+  /// shallow-solid and side-by-side warnings need it, so a failure warns and returns true with
   /// no family (an abort still returns false).
   bool PrepareCompact(double tmax, bool forWarning = false);
   /// The t_r shown below `tmax`, chosen automatically or given (false: it
