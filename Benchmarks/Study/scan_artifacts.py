@@ -10,6 +10,10 @@ and on curves, none of them in the topology study:
 - quantized coordinates: i.i.d. sphere and torus points rounded to a grid of
   step 10^-3 to 10^-2 (duplicates, coplanar and cospherical sets: the
   perturbation's work);
+- rows far finer along than across: the unit sphere scanned along parallels 0.06
+  and 0.03 apart with points 0.01 apart on each (and the first thinned to every
+  sixth point, even), and grids of vertices on a tube around a trefoil knot
+  (1 2 1), 200 x 12 to 1000 x 12 around it;
 - curves: the edges of the unit cube sampled at a spacing (a wire frame, 1 5 0),
   a trefoil knot and a closed toroidal helix (1 1 0), evenly in their parameter.
 `flowrecon reconstruct` runs at its defaults and at `--tp 1.1 --tr 2`; verdicts
@@ -68,9 +72,36 @@ def wire_cube(spacing):
     return np.unique(np.vstack([polyline([c[i], c[j]], spacing) for i, j in edges] + [c]), axis=0)
 
 
-def trefoil(n):
-    t = np.linspace(0, 2 * np.pi, n, endpoint=False)
+def parallels(across, along, keep_every=1):
+    """The unit sphere scanned along parallels: points `along` apart on each,
+    the parallels `across` apart in latitude (from across / 2 off the poles)."""
+    rows = []
+    for polar in np.arange(across / 2, np.pi, across):
+        r = np.sin(polar)
+        m = max(3, int(2 * np.pi * r / along))
+        t = np.linspace(0, 2 * np.pi, m, endpoint=False)[::keep_every]
+        rows.append(np.c_[r * np.cos(t), r * np.sin(t), np.full(len(t), np.cos(polar))])
+    return np.vstack(rows)
+
+
+def trefoil(t):
+    """The trefoil knot at parameters t."""
     return np.c_[np.sin(t) + 2 * np.sin(2 * t), np.cos(t) - 2 * np.cos(2 * t), -np.sin(3 * t)]
+
+
+def knot_tube(nu, nv, radius):
+    """The vertices of an nu x nv grid on a tube of `radius` around the trefoil
+    (a closed tube: Betti numbers 1 2 1)."""
+    u, v = np.meshgrid(np.linspace(0, 2 * np.pi, nu, endpoint=False),
+                       np.linspace(0, 2 * np.pi, nv, endpoint=False), indexing="ij")
+    u, v = u.ravel(), v.ravel()
+    h = 1e-4
+    tangent = trefoil(u + h) - trefoil(u - h)
+    tangent /= np.linalg.norm(tangent, axis=1)[:, None]
+    normal = np.cross(tangent, [0.3, 0.5, 0.81])
+    normal /= np.linalg.norm(normal, axis=1)[:, None]
+    binormal = np.cross(tangent, normal)
+    return trefoil(u) + radius * (np.cos(v)[:, None] * normal + np.sin(v)[:, None] * binormal)
 
 
 def toroidal_helix(n):
@@ -92,8 +123,17 @@ def clouds():
                    lambda rng, m=make, n=n, s=step: np.round(m(rng, n) / s) * s)
     for spacing in (0.05, 0.02):
         yield "cube's edges, spacing %g" % spacing, (1, 5, 0), lambda rng, s=spacing: wire_cube(s)
+    for across in (0.06, 0.03):
+        yield ("sphere scanned along parallels %g apart, 0.01 along" % across, (1, 0, 1),
+               lambda rng, a=across: parallels(a, 0.01))
+    yield ("sphere scanned along parallels 0.06 apart, every sixth point", (1, 0, 1),
+           lambda rng: parallels(0.06, 0.01, 6))
+    for nu, nv, radius in ((200, 12, 0.3), (1000, 12, 0.4), (600, 24, 0.3)):
+        yield ("trefoil tube, %d x %d grid, radius %g" % (nu, nv, radius), (1, 2, 1),
+               lambda rng, nu=nu, nv=nv, r=radius: knot_tube(nu, nv, r))
     for n in (300, 1000, 5000):
-        yield "trefoil knot, %d points" % n, (1, 1, 0), lambda rng, n=n: trefoil(n)
+        yield ("trefoil knot, %d points" % n, (1, 1, 0),
+               lambda rng, n=n: trefoil(np.linspace(0, 2 * np.pi, n, endpoint=False)))
         yield "toroidal helix, %d points" % n, (1, 1, 0), lambda rng, n=n: toroidal_helix(n)
 
 

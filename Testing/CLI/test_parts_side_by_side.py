@@ -18,13 +18,10 @@ import subprocess
 import sys
 
 import numpy as np
-from scipy.sparse import coo_matrix
-from scipy.sparse.csgraph import connected_components
-from scipy.spatial import cKDTree
-from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
 
-from flowrecon_testing.clouds import knot_tube, parallels, trefoil
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Benchmarks", "Study"))
+from part_gaps import widest_gap  # noqa: E402
+from scan_artifacts import knot_tube, parallels, trefoil  # noqa: E402
 
 FLOWRECON, WORK = sys.argv[1:3]
 os.makedirs(WORK, exist_ok=True)
@@ -36,29 +33,6 @@ def circles():
     """Three unit circles 4 apart, in planes of their own (all in one plane is bad input)."""
     t = np.linspace(0, 2 * np.pi, 200, endpoint=False)
     return np.vstack([np.c_[np.cos(t) + 4 * k, np.sin(t) * np.cos(k), np.sin(t) * np.sin(k)] for k in range(3)])
-
-
-def widest_gap(vtu, samples):
-    """Over the components of the written cells, the largest distance to the
-    nearest other component, over the median nearest-sample distance."""
-    reader = vtkXMLUnstructuredGridReader()
-    reader.SetFileName(vtu)
-    reader.Update()
-    grid = reader.GetOutput()
-    points = vtk_to_numpy(grid.GetPoints().GetData())
-    conn = vtk_to_numpy(grid.GetCells().GetConnectivityArray())
-    offsets = vtk_to_numpy(grid.GetCells().GetOffsetsArray())
-    rows, cols = [], []
-    for k in range(len(offsets) - 1):
-        ids = conn[offsets[k]:offsets[k + 1]]
-        rows += [ids[0]] * (len(ids) - 1)
-        cols += list(ids[1:])
-    n = len(points)
-    count, label = connected_components(coo_matrix((np.ones(len(rows)), (rows, cols)), shape=(n, n)),
-                                        directed=False)
-    spacing = np.median(cKDTree(samples).query(samples, k=2)[0][:, 1])
-    widest = max(cKDTree(points[label != c]).query(points[label == c])[0].min() for c in range(count))
-    return count, widest / spacing
 
 
 failures = []

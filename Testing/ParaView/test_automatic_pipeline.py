@@ -36,7 +36,8 @@ import zlib
 import generate_clouds as gc
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Benchmarks", "Study"))
 import mesh_vertices as mv  # noqa: E402
-from flowrecon_testing.clouds import knot_tube, noisy_surface
+from scan_artifacts import knot_tube  # noqa: E402
+from flowrecon_testing.clouds import noisy_surface
 from paraview import servermanager
 from paraview.simple import Delete, LoadPlugin, OpenDataFile
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader

@@ -116,33 +116,3 @@ def noisy_surface(shape, n, times, seed):
     rng = np.random.default_rng(seed)
     return points + rng.normal(0.0, times * float(np.mean(d[:, 1])), points.shape)
 
-
-def parallels(across, along, keep_every=1):
-    """The unit sphere scanned along parallels: points `along` apart on each,
-    the parallels `across` apart in latitude (from across / 2 off the poles)."""
-    rows = []
-    for polar in np.arange(across / 2, np.pi, across):
-        r = np.sin(polar)
-        m = max(3, int(2 * np.pi * r / along))
-        t = np.linspace(0, 2 * np.pi, m, endpoint=False)[::keep_every]
-        rows.append(np.c_[r * np.cos(t), r * np.sin(t), np.full(len(t), np.cos(polar))])
-    return np.vstack(rows)
-
-
-def trefoil(t):
-    return np.c_[np.sin(t) + 2 * np.sin(2 * t), np.cos(t) - 2 * np.cos(2 * t), -np.sin(3 * t)]
-
-
-def knot_tube(nu, nv, radius):
-    """The vertices of an nu x nv grid on a tube of `radius` around the trefoil
-    (a closed tube: Betti numbers 1 2 1)."""
-    u, v = np.meshgrid(np.linspace(0, 2 * np.pi, nu, endpoint=False),
-                       np.linspace(0, 2 * np.pi, nv, endpoint=False), indexing="ij")
-    u, v = u.ravel(), v.ravel()
-    h = 1e-4
-    tangent = trefoil(u + h) - trefoil(u - h)
-    tangent /= np.linalg.norm(tangent, axis=1)[:, None]
-    normal = np.cross(tangent, [0.3, 0.5, 0.81])
-    normal /= np.linalg.norm(normal, axis=1)[:, None]
-    binormal = np.cross(tangent, normal)
-    return trefoil(u) + radius * (np.cos(v)[:, None] * normal + np.sin(v)[:, None] * binormal)
