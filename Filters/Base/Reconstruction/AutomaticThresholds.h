@@ -79,11 +79,11 @@ struct ThresholdRule
   double FarFactor = 10;
   /// An answer of three parts or more without a void, each of whose parts
   /// has another within this many times the median nearest-sample distance,
-  /// is warned as rows of one surface (PartGaps.h): 3-6.3 on surfaces scanned
-  /// along lines 3-6 times closer than the lines, or a mesh's rows 6-10 times
-  /// finer along than across; 12-17 on the study's i.i.d. curves, wrong and
-  /// warned already; no right answer of the studies has three parts and no
-  /// void (Data/EXPERIMENTS.md).
+  /// is warned as rows of one surface (PartGaps.h): 6.0 on a sphere scanned
+  /// along parallels 6 times farther apart than the points on each, 6.3 on a
+  /// knot tube's grid of vertices about as uneven; 12-17 on the study's i.i.d.
+  /// curves, wrong and warned already; no right answer of 273 clouds has three
+  /// parts and no void (Data/EXPERIMENTS.md).
   double RowFactor = 10;
 };
 
