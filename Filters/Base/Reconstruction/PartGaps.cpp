@@ -2,7 +2,7 @@
 
 #include "UnionFind.h"
 
-#include <cmath>
+#include <algorithm>
 #include <limits>
 
 namespace flowrecon
