@@ -102,7 +102,8 @@ Reconstruction FromCloud(const std::string& input,
 // The compact output from a stored complex (simplified or not: the same nodes and
 // samples): the nodes of the written cells below t_r, walked again on the
 // samples' triangulation (Retriangulation).
-void CompactFromStored(vtkMultiBlockDataSet* complex, const std::string& input, Reconstruction& r)
+void CompactFromStored(
+  vtkMultiBlockDataSet* complex, const std::string& input, Reconstruction& r, ThresholdChoice* rows = nullptr)
 {
   FlowComplex stored;
   std::string error;
@@ -131,23 +132,16 @@ void CompactFromStored(vtkMultiBlockDataSet* complex, const std::string& input, 
     r.Compact = CompactReconstruction(*re, stored.Nodes, selected);
   });
   r.Samples.assign(stored.Points.begin(), stored.Points.begin() + stored.NumberOfInputPoints);
+  if (rows)
+  {
+    // The cells' ids are the stored complex's samples: its Gabriel edges, not
+    // the light block's (numbered as the input), give their gaps.
+    CheckRows(*rows, stored.Nodes, stored.NumberOfInputPoints, r.Compact);
+  }
   if (r.Nodes.empty())
   {
     r.Nodes = std::move(stored.Nodes);
   }
-}
-
-// CheckRows of a stored complex's answer: the gaps between its parts from the
-// Gabriel edges (the light block), as on a cloud.
-void CheckRowsOfStored(vtkMultiBlockDataSet* complex, const CompactComplex& cells, ThresholdChoice& choice)
-{
-  if (!choice.NeedsRows())
-  {
-    return;
-  }
-  const std::vector<Node> edges = GabrielEdgeNodes(complex);
-  CheckRows(choice, edges,
-    static_cast<Id>(std::count_if(edges.begin(), edges.end(), [](const Node& n) { return n.Index == 0; })), cells);
 }
 
 // CheckFilled on a stored complex's reconstruction up to the cap (`grid`: its
@@ -245,8 +239,8 @@ Reconstruction FromComplex(const Arguments& args, vtkMultiBlockDataSet* complex,
       tr = r.Choice.ReconstructionThreshold;
       // As on a cloud: a surface filled in, and then a window with a void.
       vtkUnstructuredGrid* grid = vtkUnstructuredGrid::SafeDownCast(runs[pick]->GetOutputDataObject(0));
-      if (CheckFilledOnGrid(grid, simplified[pick], tr, r.Choice) &&
-        PreferSurface(r.Choice, profiles, settings.Cap))
+      CheckFilledOnGrid(grid, simplified[pick], tr, r.Choice);
+      if (PreferSurface(r.Choice, profiles, settings.Cap))
       {
         pick = r.Choice.Candidate;
         tr = r.Choice.ReconstructionThreshold;
@@ -563,12 +557,12 @@ int RunReconstruct(const Arguments& args)
     : FromCloud(args.Input, settings, options, clock);
   if (complex && settings.Compact)
   {
-    CompactFromStored(complex, args.Input, r); // its nodes are the simplified ones'
+    // Its nodes are the simplified ones'; the side-by-side check as on a cloud.
+    CompactFromStored(complex, args.Input, r, r.Automatic ? &r.Choice : nullptr);
     clock("compact output");
     if (r.Automatic)
     {
       CheckShallow(r.Choice, r.Compact.Tetrahedra); // as on a cloud
-      CheckRowsOfStored(complex, r.Compact, r.Choice);
     }
   }
   else if (complex && r.Automatic && (r.Choice.NeedsDepth() || r.Choice.NeedsRows()))
@@ -580,9 +574,8 @@ int RunReconstruct(const Arguments& args)
     probe.Tr = r.Tr;
     try
     {
-      CompactFromStored(complex, args.Input, probe);
+      CompactFromStored(complex, args.Input, probe, &r.Choice);
       CheckShallow(r.Choice, probe.Compact.Tetrahedra);
-      CheckRowsOfStored(complex, probe.Compact, r.Choice);
     }
     catch (const Error& e)
     {

@@ -1,6 +1,7 @@
 #include "ReconstructionReport.h"
 
 #include "FlowReconNames.h"
+#include "LocalFlatness.h"
 #include "Progress.h" // core: InputError
 
 #include "vtkDataArray.h"
@@ -174,6 +175,16 @@ std::vector<std::string> ReconstructionChoiceWarnings(const ThresholdChoice& cho
       " samples): a closed surface sampled too sparsely or too noisily for its thickness "
       "may have been filled in");
   }
+  if (choice.TooFew)
+  {
+    lines.push_back("only " + std::to_string(choice.Samples) + " samples, too few to tell whether they lie on "
+      "a surface or fill a volume (the flatness test needs " + std::to_string(flowrecon::FlatnessMinimumPoints()) +
+      "), and the answer is solid, without a void: " +
+      (choice.Hollow.Length() > 0
+          ? "if they lie on a closed surface, the Betti numbers " + Betti(choice.Hollow) + " hold for t_r in (" +
+            Number(choice.Hollow.From, 3) + ", " + Number(choice.Hollow.To, 3) + "]"
+          : std::string("no t_r looked at gives a closed surface at this t_p")));
+  }
   if (choice.Shallow)
   {
     lines.push_back("the reconstruction is solid but shallow: every sample is within " +
@@ -201,9 +212,14 @@ std::vector<std::string> ReconstructionChoiceWarnings(const ThresholdChoice& cho
   }
   if (choice.Rows > 0)
   {
-    lines.push_back("the answer is " + std::to_string(choice.Rows) + " parts side by side, none with a "
-      "void, each within " + Number(choice.RowGap, 1) + " times the median sample spacing of another "
-      "(the widest gap near " + PlaceText(choice.RowPlace, choice.Far.Median) + "): rows of one "
+    const std::string within = choice.RowGapOfExtent > 0
+      ? "closed curves side by side, none with a void, each within " + Number(choice.RowGapOfExtent, 2) +
+        " times its extent of another (the widest gap " + Number(choice.RowGap, 1) +
+        " times the median sample spacing, near "
+      : "parts side by side, none with a void, each within " + Number(choice.RowGap, 1) +
+        " times the median sample spacing of another (the widest gap near ";
+    lines.push_back("the answer is " + std::to_string(choice.Rows) + " " + within +
+      PlaceText(choice.RowPlace, choice.Far.Median) + "): rows of one "
       "surface sampled far more finely along them than across (scan lines, a mesh's long rows) "
       "close as curves of their own long before they join; an even spacing across and along "
       "(the rows thinned, or more of them) lets the surface close");
@@ -231,6 +247,13 @@ std::vector<std::string> PersistenceChoiceWarnings(
         (trChosen ? "most stable " : "") + "Betti numbers are " + Betti(w) + " (t_r in " +
         Window(w) + "): the simplification changes the answer");
     }
+  }
+  const StableWindow& h = choice.HollowElsewhere;
+  if (choice.TooFew && h.Length() > 0 && choice.HollowCandidate < tps.size())
+  {
+    lines.push_back("with t_p " + Short(tps.at(choice.HollowCandidate)) + " a closed surface, Betti numbers " +
+      Betti(h) + ", holds for t_r in (" + Number(h.From, 3) + ", " + Number(h.To, 3) + "]: with so few " +
+      "samples it may be meant rather than the solid answer");
   }
   return lines;
 }

@@ -4,7 +4,7 @@ measured independently of the product: the components of the written cells
 (the compact output's Delaunay simplices on the samples, joined through shared
 samples; scipy's connected components), and for each component the distance
 to the nearest sample of another (scipy's k-d tree), over the median
-nearest-sample distance of the cloud. Prints, for each cloud whose answer has
+nearest-sample distance of the cloud and over the larger one's extent. Prints, for each cloud whose answer has
 three parts or more and no void, the parts and the widest such gap, and
 whether the answer was warned as parts side by side (Data/EXPERIMENTS.md,
 "Parts side by side").
@@ -24,10 +24,12 @@ from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
 
 
-def widest_gap(vtu, samples):
-    """(parts, gap): the components of the cells written to `vtu`, and the
-    largest over them of the distance to the nearest other component, over
-    the median nearest-sample distance of `samples`."""
+def part_gaps(vtu, samples):
+    """(parts, gap, span): the components of the cells written to `vtu` (the
+    samples they use, joined through the cells), the largest over them of the
+    distance to the nearest other component over the median nearest-sample
+    distance of `samples`, and the largest of that distance over the extent
+    (bounding-box diagonal) of the larger of the two components."""
     reader = vtkXMLUnstructuredGridReader()
     reader.SetFileName(vtu)
     reader.Update()
@@ -40,14 +42,30 @@ def widest_gap(vtu, samples):
         ids = conn[offsets[k]:offsets[k + 1]]
         rows += [ids[0]] * (len(ids) - 1)
         cols += list(ids[1:])
+    used = np.unique(conn)
+    points = points[used]
+    index = np.full(len(vtk_to_numpy(grid.GetPoints().GetData())), -1)
+    index[used] = np.arange(len(used))
     n = len(points)
-    count, label = connected_components(coo_matrix((np.ones(len(rows)), (rows, cols)), shape=(n, n)),
-                                        directed=False)
+    count, label = connected_components(
+        coo_matrix((np.ones(len(rows)), (index[rows], index[cols])), shape=(n, n)), directed=False)
     spacing = np.median(cKDTree(samples).query(samples, k=2)[0][:, 1])
     if count < 2:
-        return count, 0.0
-    widest = max(cKDTree(points[label != c]).query(points[label == c])[0].min() for c in range(count))
-    return count, widest / spacing
+        return count, 0.0, 0.0
+    extent = [np.linalg.norm(np.ptp(points[label == c], axis=0)) for c in range(count)]
+    widest = span = 0.0
+    for c in range(count):
+        others = np.flatnonzero(label != c)
+        d, i = cKDTree(points[others]).query(points[label == c])
+        nearest = label[others[i[np.argmin(d)]]]
+        widest = max(widest, d.min())
+        span = max(span, d.min() / max(extent[c], extent[nearest]))
+    return count, widest / spacing, span
+
+
+def widest_gap(vtu, samples):
+    """(parts, gap) of part_gaps."""
+    return part_gaps(vtu, samples)[:2]
 
 
 def main():
@@ -59,10 +77,10 @@ def main():
         m = re.search(r"^Betti numbers: (\d+) (\d+) (\d+)$", out.stdout, re.M)
         if not m or int(m.group(1)) < 3 or int(m.group(3)) > 0:
             continue
-        parts, gap = widest_gap(vtu, np.loadtxt(cloud, comments="#")[:, :3])
-        warned = "parts side by side" in out.stderr
-        print("%s: Betti %s %s %s, %d parts, widest gap %.2f spacings, %s" % (
-            cloud, *m.groups(), parts, gap, "warned as parts side by side" if warned else "not warned so"),
+        parts, gap, span = part_gaps(vtu, np.loadtxt(cloud, comments="#")[:, :3])
+        warned = "side by side" in out.stderr
+        print("%s: Betti %s %s %s, %d parts, widest gap %.2f spacings, %.3f of the extent, %s" % (
+            cloud, *m.groups(), parts, gap, span, "warned as side by side" if warned else "not warned so"),
             flush=True)
 
 

@@ -267,7 +267,7 @@ int main()
       Node n;
       n.Index = 1;
       n.Value = half;
-      n.Simplex = { { std::min(a, b), std::max(a, b), -1, -1 } };
+      n.Simplex = { { static_cast<int>(std::min(a, b)), static_cast<int>(std::max(a, b)), -1, -1 } };
       n.Location = { { static_cast<double>(a), static_cast<double>(b), 0 } };
       nodes.push_back(n);
       if (inside)
@@ -308,6 +308,77 @@ int main()
     edge(5, 1000000000, 0.1, true);
     CHECK(FindPartGaps(nodes, 9, cells).Parts == 2);
   }
+  // Closed curves side by side: three loops of three samples on circles of
+  // radius 1 (extent: the diagonal of a 1.5 x sqrt(3) box, sqrt(5.25)),
+  // `d` apart on one axis, each sample's Gabriel edge to the next loop's
+  // across. With the spacing rule off (RowFactor 0.5), warned by their extent
+  // when 0.4 apart (0.4 / 2.29 = 0.175 <= 0.25), not when 2 apart (0.87),
+  // nor when the window is not loops (b1 != b0) or the parts have triangles.
+  for (const double d : { 0.4, 2.0 })
+  {
+    std::vector<Node> nodes;
+    CompactComplex cells;
+    const double pi = std::acos(-1.0);
+    for (Id s = 0; s < 9; ++s)
+    {
+      Node n;
+      n.Index = 0;
+      n.Value = 0;
+      n.Simplex = { { static_cast<int>(s), -1, -1, -1 } };
+      n.Location = { { std::cos(2 * pi * static_cast<double>(s % 3) / 3),
+        std::sin(2 * pi * static_cast<double>(s % 3) / 3), d * static_cast<double>(s / 3) } };
+      nodes.push_back(n);
+    }
+    const auto edge = [&](Id a, Id b, double half, bool inside) {
+      Node n;
+      n.Index = 1;
+      n.Value = half;
+      n.Simplex = { { static_cast<int>(a), static_cast<int>(b), -1, -1 } };
+      const Point3& p = nodes[static_cast<std::size_t>(a)].Location;
+      const Point3& q = nodes[static_cast<std::size_t>(b)].Location;
+      n.Location = { { (p[0] + q[0]) / 2, (p[1] + q[1]) / 2, (p[2] + q[2]) / 2 } };
+      nodes.push_back(n);
+      if (inside)
+      {
+        cells.Edges.push_back({ { a, b } });
+      }
+    };
+    for (Id loop = 0; loop < 3; ++loop)
+    {
+      for (Id k = 0; k < 3; ++k)
+      {
+        edge(3 * loop + k, 3 * loop + (k + 1) % 3, std::sqrt(3.0) / 2, true);
+        if (loop < 2)
+        {
+          edge(3 * loop + k, 3 * loop + 3 + k, d / 2, false);
+        }
+      }
+    }
+    const PartGaps gaps = FindPartGaps(nodes, 9, cells);
+    const double span = d / std::sqrt(5.25);
+    CHECK(gaps.Parts == 3 && gaps.Curves && std::abs(gaps.WidestSpan - span) < 1e-12 && gaps.SpanGap == d / 2);
+    ThresholdChoice c = ChooseThresholds({ Profile({ { 1.0, { 9, 0, 0 } }, { 1.4, { 3, 3, 0 } } }) }, 5);
+    CheckFar(c, nodes, 9);
+    c.Rule.RowFactor = 0.5;
+    CheckRows(c, nodes, 9, cells);
+    if (d < 1)
+    {
+      CHECK(c.Rows == 3 && std::abs(c.RowGapOfExtent - span) < 1e-12 && c.RowGap == d / 2 / c.Far.Median &&
+        c.RowPlace[2] == d / 2);
+    }
+    else
+    {
+      CHECK(c.Rows == 0 && c.RowGapOfExtent == 0);
+    }
+    c.Window.Betti = { { 3, 0, 0 } };
+    CheckRows(c, nodes, 9, cells);
+    CHECK(c.Rows == 0);
+    c.Window.Betti = { { 3, 3, 0 } };
+    cells.Triangles.push_back({ { 0, 1, 2 } });
+    CHECK(!FindPartGaps(nodes, 9, cells).Curves);
+    CheckRows(c, nodes, 9, cells);
+    CHECK(c.Rows == 0);
+  }
   // Bad input.
   {
     bool threw = false;
@@ -341,6 +412,42 @@ int main()
     CHECK(c.Flatness <= flatSphere / FlatnessScales()[1].Volume);
     CheckFilled(c, cube, 1000);       // a volume sample's solid is no surface filled
     CHECK(!c.Filled);
+  }
+  // Too few samples to tell: under FlatnessMinimumPoints (200: 20 times the
+  // smallest scale's 10 neighbours) a solid answer (a maximum in it) is
+  // TooFew, not Filled, whatever the share of maxima; PreferSurface then
+  // names the window with a void, on the chosen candidate (Hollow) or, when
+  // it has none, on another (HollowElsewhere), and changes nothing. At 200 samples, or without a maximum, or with a void, it is not.
+  {
+    CHECK(FlatnessMinimumPoints() == 200);
+    const auto solid = Profile({ { 1.0, { 4, 9, 0 } }, { 1.75, { 1, 0, 1 } }, { 1.8, { 1, 0, 0 } } });
+    const auto solidOnly = Profile({ { 1.0, { 4, 9, 0 } }, { 1.8, { 1, 0, 0 } } });
+    ThresholdChoice c = ChooseThresholds({ solidOnly, solid }, 5);
+    CHECK(c.Window.Betti == (std::array<Id, 3>{ { 1, 0, 0 } }) && c.Candidate == 0);
+    CheckFilled(c, clouds::Sphere(199, 3), 1);
+    CHECK(c.TooFew && !c.Filled && c.Flatness == 1);
+    const StableWindow chosen = c.Window;
+    CHECK(!PreferSurface(c, { solidOnly, solid }, 5));
+    CHECK(!c.Resurfaced && c.Window.From == chosen.From && c.Window.Betti == chosen.Betti);
+    CHECK(c.Hollow.Length() == 0 && c.HollowElsewhere.Betti == (std::array<Id, 3>{ { 1, 0, 1 } }) &&
+      c.HollowElsewhere.From == 1.75 && c.HollowElsewhere.To == 1.8 && c.HollowCandidate == 1);
+    // On the chosen candidate itself: Hollow, and nothing elsewhere.
+    ThresholdChoice own = ChooseThresholds({ solid, solidOnly }, 5);
+    CHECK(own.Candidate == 0);
+    CheckFilled(own, clouds::Sphere(199, 3), 1);
+    CHECK(own.TooFew && !PreferSurface(own, { solid, solidOnly }, 5) && own.HollowElsewhere.Length() == 0);
+    CHECK(own.Hollow.Betti == (std::array<Id, 3>{ { 1, 0, 1 } }) && own.Hollow.From == 1.75);
+    CheckFilled(c, clouds::Sphere(199, 3), 0);
+    CHECK(!c.TooFew && c.Hollow.Length() == 0 && c.HollowElsewhere.Length() == 0);
+    CheckFilled(c, clouds::Sphere(200, 3), 199);
+    CHECK(!c.TooFew);
+    ThresholdChoice d = ChooseThresholds({ solidOnly }, 5);
+    CheckFilled(d, clouds::Sphere(30, 3), 2);
+    CHECK(d.TooFew && !PreferSurface(d, { solidOnly }, 5) && d.Hollow.Length() == 0 &&
+      d.HollowElsewhere.Length() == 0);
+    ThresholdChoice e = ChooseThresholds({ Torus }, 6);
+    CheckFilled(e, clouds::Sphere(30, 3), 2);
+    CHECK(!e.TooFew);
   }
   // Among stable windows with as many voids, an even b1 (closed surfaces)
   // beats a longer odd one: a torus whose hole a membrane spans (1 1 1) over

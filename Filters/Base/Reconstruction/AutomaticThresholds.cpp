@@ -264,8 +264,21 @@ void CheckFilled(ThresholdChoice& choice, const std::vector<Point3>& samples, Id
   choice.Maxima = maxima;
   choice.Samples = static_cast<Id>(samples.size());
   choice.Filled = false;
-  if (choice.Window.Length() == 0 || choice.Window.Betti[2] != 0 || samples.empty() ||
-    static_cast<double>(maxima) < choice.Rule.SolidShare * static_cast<double>(samples.size()))
+  choice.TooFew = false;
+  choice.Hollow = StableWindow();
+  choice.HollowElsewhere = StableWindow();
+  if (choice.Window.Length() == 0 || choice.Window.Betti[2] != 0 || samples.empty())
+  {
+    return;
+  }
+  // Below the flatness test's size the solid share says nothing either: a
+  // sphere of 30 samples fills with 2 maxima, under a share of 0.125.
+  if (samples.size() < FlatnessMinimumPoints())
+  {
+    choice.TooFew = maxima > 0;
+    return;
+  }
+  if (static_cast<double>(maxima) < choice.Rule.SolidShare * static_cast<double>(samples.size()))
   {
     return;
   }
@@ -273,15 +286,15 @@ void CheckFilled(ThresholdChoice& choice, const std::vector<Point3>& samples, Id
   choice.Filled = choice.Flatness < choice.Rule.SurfaceFlatness;
 }
 
-bool PreferSurface(ThresholdChoice& choice, const std::vector<std::vector<TopologyStep>>& profiles, double cap)
+namespace
 {
-  if (!choice.Filled || choice.Resurfaced)
-  {
-    return false;
-  }
-  const ThresholdRule& rule = choice.Rule;
+
+/// The window with a void PreferSurface takes, and its candidate.
+StableWindow BestHollow(const ThresholdRule& rule, const std::vector<std::vector<TopologyStep>>& profiles,
+  double cap, std::size_t& candidate)
+{
   StableWindow best;
-  std::size_t candidate = 0;
+  candidate = 0;
   bool bestStable = false;
   for (std::size_t c = 0; c < profiles.size(); ++c)
   {
@@ -306,6 +319,44 @@ bool PreferSurface(ThresholdChoice& choice, const std::vector<std::vector<Topolo
       }
     }
   }
+  return best;
+}
+
+} // namespace
+
+bool PreferSurface(ThresholdChoice& choice, const std::vector<std::vector<TopologyStep>>& profiles, double cap)
+{
+  const ThresholdRule& rule = choice.Rule;
+  std::size_t candidate = 0;
+  if (choice.TooFew)
+  {
+    std::vector<std::vector<TopologyStep>> others;
+    std::vector<std::size_t> index;
+    for (std::size_t c = 0; c < profiles.size(); ++c)
+    {
+      if (c == choice.Candidate)
+      {
+        choice.Hollow = BestHollow(rule, { profiles[c] }, cap, candidate);
+      }
+      else
+      {
+        others.push_back(profiles[c]);
+        index.push_back(c);
+      }
+    }
+    choice.HollowElsewhere = StableWindow();
+    if (choice.Hollow.Length() == 0 && !others.empty())
+    {
+      choice.HollowElsewhere = BestHollow(rule, others, cap, candidate);
+      choice.HollowCandidate = index[candidate];
+    }
+    return false;
+  }
+  if (!choice.Filled || choice.Resurfaced)
+  {
+    return false;
+  }
+  const StableWindow best = BestHollow(rule, profiles, cap, candidate);
   if (best.Length() == 0)
   {
     return false;
@@ -330,17 +381,32 @@ void CheckRows(ThresholdChoice& choice, const std::vector<Node>& nodes, Id sampl
 {
   choice.Rows = 0;
   choice.RowGap = 0;
+  choice.RowGapOfExtent = 0;
   if (!choice.NeedsRows())
   {
     return;
   }
   const PartGaps gaps = FindPartGaps(nodes, samples, cells);
+  if (gaps.Parts < 3)
+  {
+    return;
+  }
   const double gap = gaps.Widest / choice.Far.Median;
-  if (gaps.Parts >= 3 && gap <= choice.Rule.RowFactor)
+  if (gap <= choice.Rule.RowFactor)
   {
     choice.Rows = gaps.Parts;
     choice.RowGap = gap;
     choice.RowPlace = gaps.Where;
+  }
+  // Loops only: arcs so close are a curve broken by its gaps (warned apart),
+  // and pieces with cells of their own can be separate objects side by side.
+  else if (gaps.Curves && choice.Window.Betti[1] == choice.Window.Betti[0] &&
+    gaps.WidestSpan <= choice.Rule.RowExtent)
+  {
+    choice.Rows = gaps.Parts;
+    choice.RowGapOfExtent = gaps.WidestSpan;
+    choice.RowGap = gaps.SpanGap / choice.Far.Median;
+    choice.RowPlace = gaps.SpanWhere;
   }
 }
 

@@ -85,6 +85,12 @@ struct ThresholdRule
   /// curves, wrong and warned already; no right answer of 273 clouds has three
   /// parts and no void (Data/EXPERIMENTS.md).
   double RowFactor = 10;
+  /// Closed curves (three or more, no void, b1 = b0, drawn as edges only)
+  /// each within this fraction of its extent (the larger of it and its
+  /// nearest's bounding-box diagonal) of another are warned the same way:
+  /// 0.18 on the rings of a mesh's open cylinder, 0.25 apart and 1.41 across,
+  /// 20 and 64 spacings apart; 0.71 on three unit circles 4 apart.
+  double RowExtent = 0.25;
 };
 
 struct ThresholdChoice
@@ -115,6 +121,17 @@ struct ThresholdChoice
   /// Solid is the window first chosen.
   bool Resurfaced = false;
   StableWindow Solid;
+  /// Too few samples for RelativeFlatness (FlatnessMinimumPoints) and an
+  /// answer without a void that holds maxima (CheckFilled): whether a
+  /// surface was filled in cannot be told (warned, with Hollow).
+  bool TooFew = false;
+  /// When TooFew: the window PreferSurface would take on the chosen
+  /// candidate's profile (Length 0: none), and, when there is none there, on
+  /// the others' (with the index of its profile): the first is a matter of
+  /// t_r, the second of t_p.
+  StableWindow Hollow;
+  StableWindow HollowElsewhere;
+  std::size_t HollowCandidate = 0;
   double Flatness = 1;   ///< RelativeFlatness of the samples (1: not measured)
   Id Maxima = 0;         ///< maxima in the reconstruction at t_r
   Id Samples = 0;
@@ -140,6 +157,10 @@ struct ThresholdChoice
   Id Rows = 0;
   double RowGap = 0; ///< the widest gap from a part to its nearest, over that distance
   Point3 RowPlace{ { 0, 0, 0 } }; ///< the middle of that gap
+  /// When the rows are closed curves within Rule.RowExtent of their extent
+  /// (and not within RowFactor spacings): the widest gap over that extent;
+  /// RowGap and RowPlace are then that gap's.
+  double RowGapOfExtent = 0;
   /// Whether CheckRows has something to measure: a window with no void and
   /// three components or more, after CheckFar.
   bool NeedsRows() const;
@@ -172,7 +193,9 @@ ThresholdChoice ChoosePersistence(
 /// (`maxima`: MaximaBelow) and the samples are locally flat at some scale
 /// (RelativeFlatness below Rule.SurfaceFlatness, measured only then): a surface sampled too
 /// sparsely or too noisily for its thickness closes only as a solid, which
-/// no topology profile tells from a volume sample.
+/// no topology profile tells from a volume sample. Under
+/// FlatnessMinimumPoints samples, sets TooFew instead when such an answer
+/// holds a maximum.
 void CheckFilled(ThresholdChoice& choice, const std::vector<Point3>& samples, Id maxima);
 
 /// After CheckFilled: when the answer is Filled, the window of `profiles`
@@ -183,6 +206,8 @@ void CheckFilled(ThresholdChoice& choice, const std::vector<Point3>& samples, Id
 /// closes with its void, so a window that has one is that surface, even when
 /// it is shorter than Rule.Stable (Data/EXPERIMENTS.md). Returns whether it
 /// changed the choice (Resurfaced); without such a window it keeps it.
+/// When TooFew instead, sets Hollow (or HollowElsewhere) to that window and
+/// changes nothing.
 bool PreferSurface(ThresholdChoice& choice, const std::vector<std::vector<TopologyStep>>& profiles, double cap);
 
 /// Sets choice.Far from the Gabriel edges of `nodes` (a flow complex's over
@@ -200,9 +225,10 @@ void CheckShallow(ThresholdChoice& choice, const std::vector<std::array<Id, 4>>&
 /// After CheckFar, with the reconstruction at t_r as cells on the samples
 /// (the compact output): when NeedsRows(), sets Rows, RowGap and RowPlace if
 /// every part has another within Rule.RowFactor spacings (FindPartGaps over
-/// `nodes`, a flow complex's over `samples` input points). A surface sampled
-/// far more finely along lines than across gives such parts, each line a
-/// curve of its own over the whole range of t_r looked at.
+/// `nodes`, a flow complex's over `samples` input points), or, for closed
+/// curves, within Rule.RowExtent of their extent (RowGapOfExtent too). A
+/// surface sampled far more finely along lines than across gives such parts,
+/// each line a curve of its own over the whole range of t_r looked at.
 void CheckRows(ThresholdChoice& choice, const std::vector<Node>& nodes, Id samples, const CompactComplex& cells);
 
 /// The Threshold of the carrier of every maximum with cells in `run`, sorted:

@@ -120,12 +120,29 @@ double MedianFlatness(const std::vector<Point3>& points, int k, std::size_t prob
   return MedianFlatness(points, std::vector<int>{ k }, probes)[0];
 }
 
+namespace
+{
+/// A neighbourhood of more than a twentieth of the cloud sees its extent.
+constexpr std::size_t ScalesPerCloud = 20;
+}
+
+std::size_t FlatnessMinimumPoints()
+{
+  std::size_t fewest = 0;
+  for (const FlatnessScale& s : FlatnessScales())
+  {
+    const std::size_t n = static_cast<std::size_t>(s.K) * ScalesPerCloud;
+    fewest = fewest == 0 ? n : std::min(fewest, n);
+  }
+  return fewest;
+}
+
 double RelativeFlatness(const std::vector<Point3>& points, std::size_t probes)
 {
   std::vector<int> ks;
   for (const FlatnessScale& s : FlatnessScales())
   {
-    if (static_cast<std::size_t>(s.K) * 20 <= points.size())
+    if (static_cast<std::size_t>(s.K) * ScalesPerCloud <= points.size())
     {
       ks.push_back(s.K);
     }

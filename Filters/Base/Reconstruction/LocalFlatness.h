@@ -49,6 +49,10 @@ std::vector<double> MedianFlatness(
 /// scale. 1 when the cloud is too small for any scale.
 double RelativeFlatness(const std::vector<Point3>& points, std::size_t probes = 2000);
 
+/// The fewest points RelativeFlatness measures (twenty times the smallest
+/// scale's K): below, it cannot tell a surface's sample from a volume's.
+std::size_t FlatnessMinimumPoints();
+
 } // namespace flowrecon
 
 #endif

@@ -3,6 +3,8 @@
 #include "UnionFind.h"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <limits>
 
 namespace flowrecon
@@ -30,9 +32,40 @@ PartGaps FindPartGaps(const std::vector<Node>& nodes, Id samples, const CompactC
   {
     return gaps;
   }
+  gaps.Curves = cells.Triangles.empty() && cells.Tetrahedra.empty();
   constexpr double None = std::numeric_limits<double>::infinity();
-  std::vector<double> nearest(static_cast<std::size_t>(gaps.Parts), None);
-  std::vector<Point3> where(static_cast<std::size_t>(gaps.Parts));
+  const std::size_t count = static_cast<std::size_t>(gaps.Parts);
+  std::vector<double> nearest(count, None);
+  std::vector<Id> neighbour(count, -1);
+  std::vector<Point3> where(count);
+  // Each part's bounding box, from its samples' index-0 nodes.
+  std::vector<std::array<double, 6>> box(count, { { None, None, None, -None, -None, -None } });
+  auto partOf = [&](Id s) {
+    return part[static_cast<std::size_t>(parts.Find(static_cast<std::int32_t>(s)))];
+  };
+  for (const Node& n : nodes)
+  {
+    const Id s = n.Simplex[0];
+    if (n.Index != 0 || !valid(s) || !in[static_cast<std::size_t>(s)])
+    {
+      continue;
+    }
+    std::array<double, 6>& b = box[static_cast<std::size_t>(partOf(s))];
+    for (int k = 0; k < 3; ++k)
+    {
+      b[k] = std::min(b[k], n.Location[k]);
+      b[k + 3] = std::max(b[k + 3], n.Location[k]);
+    }
+  }
+  auto extent = [&](Id p) {
+    const std::array<double, 6>& b = box[static_cast<std::size_t>(p)];
+    double sq = 0;
+    for (int k = 0; k < 3; ++k)
+    {
+      sq += b[k + 3] > b[k] ? (b[k + 3] - b[k]) * (b[k + 3] - b[k]) : 0;
+    }
+    return std::sqrt(sq);
+  };
   for (const Node& n : nodes)
   {
     const Id a = n.Simplex[0], b = n.Simplex[1];
@@ -40,27 +73,41 @@ PartGaps FindPartGaps(const std::vector<Node>& nodes, Id samples, const CompactC
     {
       continue;
     }
-    const Id pa = part[static_cast<std::size_t>(parts.Find(static_cast<std::int32_t>(a)))];
-    const Id pb = part[static_cast<std::size_t>(parts.Find(static_cast<std::int32_t>(b)))];
+    const Id pa = partOf(a), pb = partOf(b);
     if (pa == pb)
     {
       continue;
     }
-    for (const Id p : { pa, pb })
+    for (const auto& [p, q] : { std::make_pair(pa, pb), std::make_pair(pb, pa) })
     {
-      if (n.Value < nearest[static_cast<std::size_t>(p)])
+      const std::size_t k = static_cast<std::size_t>(p);
+      // Ties (regular samplings have many) go to the least place, so that
+      // no numbering of the samples or the parts decides.
+      if (n.Value < nearest[k] || (n.Value == nearest[k] && n.Location < where[k]))
       {
         nearest[static_cast<std::size_t>(p)] = n.Value;
+        neighbour[static_cast<std::size_t>(p)] = q;
         where[static_cast<std::size_t>(p)] = n.Location;
       }
     }
   }
   for (Id p = 0; p < gaps.Parts; ++p)
   {
-    if (nearest[static_cast<std::size_t>(p)] > gaps.Widest || p == 0)
+    const std::size_t k = static_cast<std::size_t>(p);
+    if (p == 0 || nearest[k] > gaps.Widest || (nearest[k] == gaps.Widest && where[k] < gaps.Where))
     {
-      gaps.Widest = nearest[static_cast<std::size_t>(p)];
-      gaps.Where = where[static_cast<std::size_t>(p)];
+      gaps.Widest = nearest[k];
+      gaps.Where = where[k];
+    }
+    // The gap is twice the edge's value (its midpoint's distance to both ends).
+    const Id q = neighbour[k];
+    const double size = q < 0 ? 0 : std::max(extent(p), extent(q));
+    const double span = q < 0 ? None : size > 0 ? 2 * nearest[k] / size : None;
+    if (p == 0 || span > gaps.WidestSpan || (span == gaps.WidestSpan && where[k] < gaps.SpanWhere))
+    {
+      gaps.WidestSpan = span;
+      gaps.SpanGap = nearest[k];
+      gaps.SpanWhere = where[k];
     }
   }
   return gaps;
