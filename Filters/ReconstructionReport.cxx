@@ -159,7 +159,20 @@ std::vector<std::string> ReconstructionChoiceWarnings(const ThresholdChoice& cho
       " classes change at once: a cavity may have been filled together with its walls "
       "(a surface sampled with holes)");
   }
-  if (choice.Resurfaced)
+  const std::string fewer = "only " + std::to_string(choice.Samples) + " samples, too few to tell whether they "
+    "lie on a surface or fill a volume (the flatness test needs " + std::to_string(flowrecon::FlatnessMinimumPoints()) + ")";
+  if (choice.Resurfaced && choice.TooFew)
+  {
+    lines.push_back(fewer + ": the closed surface " + Betti(choice.Window) + ", which holds for t_r in " +
+      Window(choice.Window) + ", is taken over the answer without a void (" + Betti(choice.Solid) +
+      " above it)");
+  }
+  else if (choice.TooFew)
+  {
+    lines.push_back(fewer + ", and no t_r looked at gives a closed surface: the answer, without a void, "
+      "is not checked");
+  }
+  else if (choice.Resurfaced && choice.Solid.Betti[2] == 0)
   {
     lines.push_back("the samples lie on a surface (local flatness " +
       Number(choice.Flatness, 2) + "), yet the most stable topology is a solid without a void: "
@@ -167,23 +180,23 @@ std::vector<std::string> ReconstructionChoiceWarnings(const ThresholdChoice& cho
       "filled in; the closed surface " + Betti(choice.Window) + ", which holds only for t_r in " +
       Window(choice.Window) + ", is taken instead");
   }
-  else if (choice.Filled)
+  else if (choice.Resurfaced)
+  {
+    lines.push_back("the samples lie on a surface (local flatness " +
+      Number(choice.Flatness, 2) + "), yet the most stable topology (" + Betti(choice.Solid) +
+      ") is solid around its voids: the space between nested closed surfaces, sampled too sparsely "
+      "for its width, may have been filled in; the closed surfaces " + Betti(choice.Window) +
+      ", which hold only for t_r in " + Window(choice.Window) + ", are taken instead");
+  }
+  // Solid around voids without a window with more: not said, as a noisy
+  // closed surface's answer is that too (a shell a few spacings thick).
+  else if (choice.Filled && choice.Window.Betti[2] == 0)
   {
     lines.push_back("the samples lie on a surface (local flatness " +
       Number(choice.Flatness, 2) + "), yet the reconstruction is solid, without a void (" +
       std::to_string(choice.Maxima) + " maxima for " + std::to_string(choice.Samples) +
       " samples): a closed surface sampled too sparsely or too noisily for its thickness "
       "may have been filled in");
-  }
-  if (choice.TooFew)
-  {
-    lines.push_back("only " + std::to_string(choice.Samples) + " samples, too few to tell whether they lie on "
-      "a surface or fill a volume (the flatness test needs " + std::to_string(flowrecon::FlatnessMinimumPoints()) +
-      "), and the answer is solid, without a void: " +
-      (choice.Hollow.Length() > 0
-          ? "if they lie on a closed surface, the Betti numbers " + Betti(choice.Hollow) + " hold for t_r in (" +
-            Number(choice.Hollow.From, 3) + ", " + Number(choice.Hollow.To, 3) + "]"
-          : std::string("no t_r looked at gives a closed surface at this t_p")));
   }
   if (choice.Shallow)
   {
@@ -247,13 +260,6 @@ std::vector<std::string> PersistenceChoiceWarnings(
         (trChosen ? "most stable " : "") + "Betti numbers are " + Betti(w) + " (t_r in " +
         Window(w) + "): the simplification changes the answer");
     }
-  }
-  const StableWindow& h = choice.HollowElsewhere;
-  if (choice.TooFew && h.Length() > 0 && choice.HollowCandidate < tps.size())
-  {
-    lines.push_back("with t_p " + Short(tps.at(choice.HollowCandidate)) + " a closed surface, Betti numbers " +
-      Betti(h) + ", holds for t_r in (" + Number(h.From, 3) + ", " + Number(h.To, 3) + "]: with so few " +
-      "samples it may be meant rather than the solid answer");
   }
   return lines;
 }

@@ -12,7 +12,8 @@
 - i.i.d. unions: three spheres of unequal radii, a sphere and a torus, two linked
   tori, a sphere beside a circle (a curve: not a closed surface), two nested
   spheres, two spheres of 10x unequal density, two spheres touching at a point
-  (and touching Fibonacci spheres): (1 0 2), joined where they touch;
+  (and touching Fibonacci spheres): (1 0 2), joined where they touch; two
+  nested cube surfaces (sides 2 and 1) of 1 500 and 5 000 points each;
 - the isosurface vertices of the 32^3 and 64^3 grids with Gaussian noise of 0.3
   and 1 times their mean spacing.
 `flowrecon reconstruct` runs at its defaults and at `--tp 1.1 --tr 2`; verdicts
@@ -91,6 +92,14 @@ def iid_sphere(rng, n):
     return v / np.linalg.norm(v, axis=1)[:, None]
 
 
+def iid_cube_surface(rng, n, half):
+    """n i.i.d. points on the boundary of [-half, half]^3 (the faces have equal areas)."""
+    p = rng.uniform(-half, half, size=(n, 3))
+    face = rng.integers(0, 6, n)
+    p[np.arange(n), face // 2] = np.where(face % 2 == 1, half, -half)
+    return p
+
+
 def sphere_pairs(pairs=PAIRS):
     """Yields (name, points, cloud, truth): two unit spheres `gap` apart, alone and
     joined by a rod along the x axis."""
@@ -143,6 +152,10 @@ def mixed():
                                                                iid_sphere(rng, 600) + at([2.5, 0, 0])], (2, 0, 2)),
         ("two spheres touching at a point", lambda: [iid_sphere(rng, 4000) - at([1, 0, 0]),
                                                      iid_sphere(rng, 4000) + at([1, 0, 0])], (1, 0, 2)),
+        ("two nested cube surfaces, sides 2 and 1, 1500 points each",
+         lambda: [iid_cube_surface(rng, 1500, 1), iid_cube_surface(rng, 1500, 0.5)], (2, 0, 2)),
+        ("two nested cube surfaces, sides 2 and 1, 5000 points each",
+         lambda: [iid_cube_surface(rng, 5000, 1), iid_cube_surface(rng, 5000, 0.5)], (2, 0, 2)),
     ):
         p = np.vstack(parts())
         yield name + ", i.i.d.", len(p), p, truth

@@ -81,8 +81,8 @@ flowrecon_add_cli_python_test(py.reconstruction.mesh_vertices test_mesh_vertices
 # samplings are not.
 flowrecon_add_cli_python_test(py.reconstruction.parts_side_by_side test_parts_side_by_side.py parts_side_by_side)
 
-# Too few samples to tell a surface from a volume (under 200): a solid answer
-# is warned, and the window with a void it names gives that void when asked for.
+# Too few samples to tell a surface from a volume (under 200): a window with a
+# void is taken when there is one (never on a ball's samples), warned either way.
 flowrecon_add_cli_python_test(py.reconstruction.few_samples test_few_samples.py few_samples)
 
 # Samples apart from the rest (outliers strewn in a cloud's box): warned, as

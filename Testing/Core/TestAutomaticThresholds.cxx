@@ -393,8 +393,8 @@ int main()
     CHECK(threw);
   }
   // Local flatness: a surface sample is flat, a volume sample is not, a few
-  // points say nothing; the filled-surface check needs no void, a solid
-  // reconstruction and flat samples.
+  // points say nothing; the filled-surface check needs a solid
+  // reconstruction (with or without voids) and flat samples.
   {
     const std::vector<Point3> sphere = clouds::Sphere(3000, 3), cube = clouds::Cube(3000, 5);
     const double flatSphere = MedianFlatness(sphere), flatCube = MedianFlatness(cube);
@@ -402,8 +402,10 @@ int main()
     CHECK(flatCube > 0.5);
     CHECK(MedianFlatness(clouds::Sphere(20, 7)) == 1);
     ThresholdChoice c = ChooseThresholds({ Torus }, 6); // the surface, one void
-    CheckFilled(c, sphere, 3000);
-    CHECK(!c.Filled);
+    CheckFilled(c, sphere, 100); // a few slivers beside the void
+    CHECK(!c.Filled && c.Flatness == 1);
+    CheckFilled(c, sphere, 3000); // solid around its void: nested surfaces' gap filled
+    CHECK(c.Filled);
     c.Window.Betti = { { 1, 1, 0 } }; // a solid torus
     CheckFilled(c, sphere, 100);      // a few slivers only: not solid
     CHECK(!c.Filled && c.Flatness == 1);
@@ -414,40 +416,32 @@ int main()
     CHECK(!c.Filled);
   }
   // Too few samples to tell: under FlatnessMinimumPoints (200: 20 times the
-  // smallest scale's 10 neighbours) a solid answer (a maximum in it) is
-  // TooFew, not Filled, whatever the share of maxima; PreferSurface then
-  // names the window with a void, on the chosen candidate (Hollow) or, when
-  // it has none, on another (HollowElsewhere), and changes nothing. At 200 samples, or without a maximum, or with a void, it is not.
+  // smallest scale's 10 neighbours) any answer without a void is TooFew, not
+  // Filled, whatever the share of maxima, and PreferSurface takes the window
+  // with a void as for a filled surface, on whichever candidate has it. At
+  // 200 samples, or with a void, it is not TooFew; without a window with a
+  // void the answer stays.
   {
     CHECK(FlatnessMinimumPoints() == 200);
     const auto solid = Profile({ { 1.0, { 4, 9, 0 } }, { 1.75, { 1, 0, 1 } }, { 1.8, { 1, 0, 0 } } });
     const auto solidOnly = Profile({ { 1.0, { 4, 9, 0 } }, { 1.8, { 1, 0, 0 } } });
     ThresholdChoice c = ChooseThresholds({ solidOnly, solid }, 5);
     CHECK(c.Window.Betti == (std::array<Id, 3>{ { 1, 0, 0 } }) && c.Candidate == 0);
-    CheckFilled(c, clouds::Sphere(199, 3), 1);
-    CHECK(c.TooFew && !c.Filled && c.Flatness == 1);
-    const StableWindow chosen = c.Window;
-    CHECK(!PreferSurface(c, { solidOnly, solid }, 5));
-    CHECK(!c.Resurfaced && c.Window.From == chosen.From && c.Window.Betti == chosen.Betti);
-    CHECK(c.Hollow.Length() == 0 && c.HollowElsewhere.Betti == (std::array<Id, 3>{ { 1, 0, 1 } }) &&
-      c.HollowElsewhere.From == 1.75 && c.HollowElsewhere.To == 1.8 && c.HollowCandidate == 1);
-    // On the chosen candidate itself: Hollow, and nothing elsewhere.
-    ThresholdChoice own = ChooseThresholds({ solid, solidOnly }, 5);
-    CHECK(own.Candidate == 0);
-    CheckFilled(own, clouds::Sphere(199, 3), 1);
-    CHECK(own.TooFew && !PreferSurface(own, { solid, solidOnly }, 5) && own.HollowElsewhere.Length() == 0);
-    CHECK(own.Hollow.Betti == (std::array<Id, 3>{ { 1, 0, 1 } }) && own.Hollow.From == 1.75);
-    CheckFilled(c, clouds::Sphere(199, 3), 0);
-    CHECK(!c.TooFew && c.Hollow.Length() == 0 && c.HollowElsewhere.Length() == 0);
-    CheckFilled(c, clouds::Sphere(200, 3), 199);
-    CHECK(!c.TooFew);
+    CheckFilled(c, clouds::Sphere(199, 3), 0); // no maximum: an open surface's answer too
+    CHECK(c.TooFew && !c.Filled && c.Flatness == 1 && !c.NeedsDepth());
+    CHECK(PreferSurface(c, { solidOnly, solid }, 5));
+    CHECK(c.Resurfaced && c.Candidate == 1 && c.Window.Betti == (std::array<Id, 3>{ { 1, 0, 1 } }) &&
+      c.Window.From == 1.75 && c.Window.To == 1.8 && c.Solid.From == 1.8);
     ThresholdChoice d = ChooseThresholds({ solidOnly }, 5);
     CheckFilled(d, clouds::Sphere(30, 3), 2);
-    CHECK(d.TooFew && !PreferSurface(d, { solidOnly }, 5) && d.Hollow.Length() == 0 &&
-      d.HollowElsewhere.Length() == 0);
-    ThresholdChoice e = ChooseThresholds({ Torus }, 6);
-    CheckFilled(e, clouds::Sphere(30, 3), 2);
-    CHECK(!e.TooFew);
+    CHECK(d.TooFew && !PreferSurface(d, { solidOnly }, 5) && !d.Resurfaced &&
+      d.Window.Betti == (std::array<Id, 3>{ { 1, 0, 0 } }));
+    ThresholdChoice e = ChooseThresholds({ solidOnly, solid }, 5);
+    CheckFilled(e, clouds::Sphere(200, 3), 0);
+    CHECK(!e.TooFew && !PreferSurface(e, { solidOnly, solid }, 5) && e.Candidate == 0);
+    ThresholdChoice f = ChooseThresholds({ Torus }, 6);
+    CheckFilled(f, clouds::Sphere(30, 3), 2);
+    CHECK(!f.TooFew);
   }
   // Among stable windows with as many voids, an even b1 (closed surfaces)
   // beats a longer odd one: a torus whose hole a membrane spans (1 1 1) over
@@ -558,6 +552,18 @@ int main()
     ThresholdChoice f = ChooseThresholds({ brief }, 5);
     CheckFilled(f, sphere, 1000);
     CHECK(PreferSurface(f, { brief }, 5) && f.Window.Betti == (std::array<Id, 3>{ { 1, 0, 2 } }));
+    // Solid around a void (two nested surfaces whose gap filled): only a
+    // window with more voids is taken; one with as many is not.
+    const auto nested = Profile({ { 1.0, { 9, 40, 0 } }, { 1.7, { 2, 0, 2 } }, { 1.75, { 1, 0, 1 } } });
+    ThresholdChoice g = ChooseThresholds({ nested }, 5);
+    CHECK(g.Window.Betti == (std::array<Id, 3>{ { 1, 0, 1 } }));
+    CheckFilled(g, sphere, 1000);
+    CHECK(g.Filled && PreferSurface(g, { nested }, 5) && g.Resurfaced &&
+      g.Window.Betti == (std::array<Id, 3>{ { 2, 0, 2 } }) && g.Solid.Betti[2] == 1);
+    const auto shell = Profile({ { 1.0, { 9, 40, 0 } }, { 1.7, { 1, 1, 1 } }, { 1.75, { 1, 0, 1 } } });
+    ThresholdChoice h = ChooseThresholds({ shell }, 5);
+    CheckFilled(h, sphere, 1000);
+    CHECK(h.Filled && !PreferSurface(h, { shell }, 5) && h.Window.Betti == (std::array<Id, 3>{ { 1, 0, 1 } }));
   }
   // Several scales: the two walls of a thin tube (0.1 apart, 10^4 points, about
   // 0.05 apart on each wall) are flat within 10 samples and look like a volume

@@ -22,8 +22,10 @@ Flow Reconstruction, every property at its default, in pvpython.
   for (the vertices of a decimated mesh), both answer them joined and warn that
   they were apart, with the range; on a knot tube's grid of vertices far finer
   along than across, both warn of parts side by side; on 30 sphere points,
-  too few to tell a surface from a volume, both warn so and name the same
-  window with a void.
+  too few to tell a surface from a volume, both take the sphere that closes
+  briefly before the ball and warn so; on two nested spheres whose gap fills
+  into a solid shell, both take the two closed surfaces that hold briefly
+  before it, and say so.
 - Turning Automatic t_r off shows the Reconstruction Threshold (2) instead,
   and its Betti numbers are the profile's at 2.
 Usage: pvpython test_automatic_pipeline.py PLUGIN FLOWRECON WORKDIR
@@ -39,6 +41,7 @@ import generate_clouds as gc
 import numpy as np
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Benchmarks", "Study"))
 import mesh_vertices as mv  # noqa: E402
+import separate_surfaces as ss  # noqa: E402
 from scan_artifacts import knot_tube  # noqa: E402
 from flowrecon_testing.clouds import noisy_surface
 from paraview import servermanager
@@ -190,16 +193,26 @@ def main():
     expect(any("parts side by side" in w for w in c["warnings"]),
            "knot tube rows: no warning of parts side by side in %s" % c["warnings"])
     # Too few samples to tell a surface from a volume: 30 i.i.d. sphere points
-    # answer a ball; warned, with the window with a void at the chosen t_p
-    # (seed 1) or at the other (seed 3), as on the command line.
+    # close briefly before they fill, under the chosen t_p (seed 1) or the
+    # other (seed 3); the sphere is taken and warned, as on the command line.
     for seed in (1, 3):
         small = os.path.join(WORK, "sphere30_seed%d.xyz" % seed)
         p = np.random.default_rng(seed).normal(size=(30, 3))
         with open(small, "w") as f:
             f.write(gc.to_xyz_text(p / np.linalg.norm(p, axis=1)[:, None]))
-        c = check("30 sphere points, seed %d" % seed, small, None)
+        c = check("30 sphere points, seed %d" % seed, small, (1, 0, 1))
         expect(any(w.startswith("only 30 samples, too few to tell") for w in c["warnings"]),
                "30 sphere points, seed %d: no too-few warning in %s" % (seed, c["warnings"]))
+    # Two nested spheres whose gap fills first (1 0 1, solid around a void, on
+    # samples that lie on surfaces): the brief window with both voids is taken,
+    # 2 0 2, and said, as on the command line.
+    name, _, points, truth = next(c for c in ss.mixed() if c[0].startswith("two nested spheres"))
+    nested = os.path.join(WORK, "nested_spheres.xyz")
+    with open(nested, "w") as f:
+        f.write(gc.to_xyz_text(points))
+    c = check(name, nested, truth)
+    expect(any("are taken instead" in w for w in c["warnings"]),
+           "%s: no warning that the closed surfaces were taken in %s" % (name, c["warnings"]))
     grid, table = pipeline(torus, automatic=False)
     fd = grid.GetFieldData()
     fixed = tuple(int(v) for v in values(fd, "BettiNumbers"))

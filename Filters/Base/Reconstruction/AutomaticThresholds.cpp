@@ -265,19 +265,21 @@ void CheckFilled(ThresholdChoice& choice, const std::vector<Point3>& samples, Id
   choice.Samples = static_cast<Id>(samples.size());
   choice.Filled = false;
   choice.TooFew = false;
-  choice.Hollow = StableWindow();
-  choice.HollowElsewhere = StableWindow();
-  if (choice.Window.Length() == 0 || choice.Window.Betti[2] != 0 || samples.empty())
+  choice.Flatness = 1;
+  if (choice.Window.Length() == 0 || samples.empty())
   {
     return;
   }
   // Below the flatness test's size the solid share says nothing either: a
-  // sphere of 30 samples fills with 2 maxima, under a share of 0.125.
+  // sphere of 30 samples fills with 2 maxima, under a share of 0.125, and one
+  // of 150 can stay open (1 0 0, no maximum) over every t_r looked at.
   if (samples.size() < FlatnessMinimumPoints())
   {
-    choice.TooFew = maxima > 0;
+    choice.TooFew = choice.Window.Betti[2] == 0;
     return;
   }
+  // With voids too: the space between two nested surfaces fills as a solid
+  // shell (1 0 1 for two nested cubes of 1 500 samples each).
   if (static_cast<double>(maxima) < choice.Rule.SolidShare * static_cast<double>(samples.size()))
   {
     return;
@@ -289,9 +291,9 @@ void CheckFilled(ThresholdChoice& choice, const std::vector<Point3>& samples, Id
 namespace
 {
 
-/// The window with a void PreferSurface takes, and its candidate.
+/// The window with more voids than `voids` PreferSurface takes, and its candidate.
 StableWindow BestHollow(const ThresholdRule& rule, const std::vector<std::vector<TopologyStep>>& profiles,
-  double cap, std::size_t& candidate)
+  double cap, Id voids, std::size_t& candidate)
 {
   StableWindow best;
   candidate = 0;
@@ -300,7 +302,7 @@ StableWindow BestHollow(const ThresholdRule& rule, const std::vector<std::vector
   {
     for (const StableWindow& w : StableWindows(profiles[c], rule.Lowest, cap))
     {
-      if (w.Betti[2] == 0)
+      if (w.Betti[2] <= voids)
       {
         continue;
       }
@@ -328,35 +330,11 @@ bool PreferSurface(ThresholdChoice& choice, const std::vector<std::vector<Topolo
 {
   const ThresholdRule& rule = choice.Rule;
   std::size_t candidate = 0;
-  if (choice.TooFew)
-  {
-    std::vector<std::vector<TopologyStep>> others;
-    std::vector<std::size_t> index;
-    for (std::size_t c = 0; c < profiles.size(); ++c)
-    {
-      if (c == choice.Candidate)
-      {
-        choice.Hollow = BestHollow(rule, { profiles[c] }, cap, candidate);
-      }
-      else
-      {
-        others.push_back(profiles[c]);
-        index.push_back(c);
-      }
-    }
-    choice.HollowElsewhere = StableWindow();
-    if (choice.Hollow.Length() == 0 && !others.empty())
-    {
-      choice.HollowElsewhere = BestHollow(rule, others, cap, candidate);
-      choice.HollowCandidate = index[candidate];
-    }
-    return false;
-  }
-  if (!choice.Filled || choice.Resurfaced)
+  if (!(choice.Filled || choice.TooFew) || choice.Resurfaced)
   {
     return false;
   }
-  const StableWindow best = BestHollow(rule, profiles, cap, candidate);
+  const StableWindow best = BestHollow(rule, profiles, cap, choice.Window.Betti[2], candidate);
   if (best.Length() == 0)
   {
     return false;
@@ -412,7 +390,7 @@ void CheckRows(ThresholdChoice& choice, const std::vector<Node>& nodes, Id sampl
 
 bool ThresholdChoice::NeedsDepth() const
 {
-  return this->Window.Length() > 0 && this->Window.Betti[2] == 0 && !this->Filled &&
+  return this->Window.Length() > 0 && this->Window.Betti[2] == 0 && !this->Filled && !this->TooFew &&
     this->Samples > 0 &&
     static_cast<double>(this->Maxima) >= this->Rule.SolidShare * static_cast<double>(this->Samples);
 }

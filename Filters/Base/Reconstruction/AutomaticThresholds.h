@@ -114,24 +114,20 @@ struct ThresholdChoice
   /// cascade, a cavity filled together with its walls, which a surface sample
   /// with holes gives (warned).
   Id ChangesAtStart = 0;
-  /// A closed surface filled in (CheckFilled): no void in the answer, a
-  /// solid reconstruction, and samples that lie on a surface (warned).
+  /// A closed surface filled in (CheckFilled): a solid reconstruction
+  /// (with or without voids) of samples that lie on a surface (warned when
+  /// without a void, or when PreferSurface takes more voids: a noisy closed
+  /// surface is solid around its void too).
   bool Filled = false;
-  /// Filled, and PreferSurface then took a window with a void instead:
+  /// Filled, and PreferSurface then took a window with more voids instead:
   /// Solid is the window first chosen.
   bool Resurfaced = false;
   StableWindow Solid;
   /// Too few samples for RelativeFlatness (FlatnessMinimumPoints) and an
-  /// answer without a void that holds maxima (CheckFilled): whether a
-  /// surface was filled in cannot be told (warned, with Hollow).
+  /// answer without a void (CheckFilled): whether a surface was filled in,
+  /// or left open, cannot be told; PreferSurface then treats it as Filled
+  /// (warned either way).
   bool TooFew = false;
-  /// When TooFew: the window PreferSurface would take on the chosen
-  /// candidate's profile (Length 0: none), and, when there is none there, on
-  /// the others' (with the index of its profile): the first is a matter of
-  /// t_r, the second of t_p.
-  StableWindow Hollow;
-  StableWindow HollowElsewhere;
-  std::size_t HollowCandidate = 0;
   double Flatness = 1;   ///< RelativeFlatness of the samples (1: not measured)
   Id Maxima = 0;         ///< maxima in the reconstruction at t_r
   Id Samples = 0;
@@ -165,7 +161,7 @@ struct ThresholdChoice
   /// three components or more, after CheckFar.
   bool NeedsRows() const;
   /// Whether CheckShallow has something to measure: a solid answer (no void,
-  /// SolidShare maxima a sample, after CheckFilled) that is not Filled.
+  /// SolidShare maxima a sample, after CheckFilled) that is not Filled or TooFew.
   bool NeedsDepth() const;
   ThresholdRule Rule;
 };
@@ -188,26 +184,27 @@ ThresholdChoice ChooseThresholds(const std::vector<std::vector<TopologyStep>>& p
 ThresholdChoice ChoosePersistence(
   const std::vector<std::vector<TopologyStep>>& profiles, double tr, double cap);
 
-/// Sets choice.Filled when the chosen Betti numbers have no void (b2 = 0),
-/// the reconstruction at t_r holds at least Rule.SolidShare maxima per sample
+/// Sets choice.Filled when the reconstruction at t_r holds at least
+/// Rule.SolidShare maxima per sample
 /// (`maxima`: MaximaBelow) and the samples are locally flat at some scale
 /// (RelativeFlatness below Rule.SurfaceFlatness, measured only then): a surface sampled too
 /// sparsely or too noisily for its thickness closes only as a solid, which
-/// no topology profile tells from a volume sample. Under
-/// FlatnessMinimumPoints samples, sets TooFew instead when such an answer
-/// holds a maximum.
+/// no topology profile tells from a volume sample (so does the space between
+/// two nested surfaces, around a void). Under
+/// FlatnessMinimumPoints samples, where the flatness cannot be measured, sets
+/// TooFew instead for any answer without a void.
 void CheckFilled(ThresholdChoice& choice, const std::vector<Point3>& samples, Id maxima);
 
 /// After CheckFilled: when the answer is Filled, the window of `profiles`
-/// (those ChooseThresholds chose from, up to `cap`) with the most voids, the
-/// stable ones first, the longest on ties (the earlier candidate within
-/// Rule.Tie), replaces it, and t_r is set in it as ChooseThresholds does.
+/// (those ChooseThresholds chose from, up to `cap`) with more voids than the
+/// answer (the most, the stable ones first, the longest on ties, the earlier
+/// candidate within Rule.Tie) replaces it, and t_r is set in it as ChooseThresholds does.
 /// Samples that lie on a surface and a solid answer disagree; a surface
 /// closes with its void, so a window that has one is that surface, even when
 /// it is shorter than Rule.Stable (Data/EXPERIMENTS.md). Returns whether it
 /// changed the choice (Resurfaced); without such a window it keeps it.
-/// When TooFew instead, sets Hollow (or HollowElsewhere) to that window and
-/// changes nothing.
+/// TooFew is treated as Filled: volume samples of 30-190 points had no
+/// window with a void (60 clouds), surface samples that small often do.
 bool PreferSurface(ThresholdChoice& choice, const std::vector<std::vector<TopologyStep>>& profiles, double cap);
 
 /// Sets choice.Far from the Gabriel edges of `nodes` (a flow complex's over
