@@ -85,9 +85,9 @@ PartGaps FindPartGaps(const std::vector<Node>& nodes, Id samples, const CompactC
       // no numbering of the samples or the parts decides.
       if (n.Value < nearest[k] || (n.Value == nearest[k] && n.Location < where[k]))
       {
-        nearest[static_cast<std::size_t>(p)] = n.Value;
-        neighbour[static_cast<std::size_t>(p)] = q;
-        where[static_cast<std::size_t>(p)] = n.Location;
+        nearest[k] = n.Value;
+        neighbour[k] = q;
+        where[k] = n.Location;
       }
     }
   }
