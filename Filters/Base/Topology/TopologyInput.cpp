@@ -20,19 +20,23 @@ namespace
 /// none for those): its two samples.
 void AppendEdgeEnds(const FlowComplex& fc, std::vector<Arc>& raw)
 {
-  Id samples = 0;
-  for (const Node& v : fc.Nodes)
-  {
-    samples = std::max<Id>(samples, v.Index == 0 ? v.Simplex[0] + 1 : 0);
-  }
-  std::vector<std::int32_t> nodeOfSample(static_cast<std::size_t>(samples), -1);
+  // One pass for the samples' nodes: a pass over millions of nodes of 56
+  // bytes each costs more than the growing array.
+  std::vector<std::int32_t> nodeOfSample;
   for (std::size_t v = 0; v < fc.Nodes.size(); ++v)
   {
-    if (fc.Nodes[v].Index == 0)
+    const Node& node = fc.Nodes[v];
+    if (node.Index == 0 && node.Simplex[0] >= 0)
     {
-      nodeOfSample[fc.Nodes[v].Simplex[0]] = static_cast<std::int32_t>(v);
+      const std::size_t s = static_cast<std::size_t>(node.Simplex[0]);
+      if (s >= nodeOfSample.size())
+      {
+        nodeOfSample.resize(std::max(s + 1, 2 * nodeOfSample.size()), -1);
+      }
+      nodeOfSample[s] = static_cast<std::int32_t>(v);
     }
   }
+  const Id samples = static_cast<Id>(nodeOfSample.size());
   for (std::size_t v = 0; v < fc.Nodes.size(); ++v)
   {
     if (fc.Nodes[v].Index == 1)
@@ -57,15 +61,29 @@ std::vector<double> FirstAbove(const FlowComplex& fc, const std::vector<double>&
   double reached, int deepest)
 {
   std::vector<double> first(static_cast<std::size_t>(deepest) + 1, HUGE_VAL);
+  // The levels once (ldexp per node was half of this pass), and per node only
+  // the least level it exceeds: first[] is then a running minimum.
+  std::vector<double> levels(first.size());
+  for (int k = 0; k <= deepest; ++k)
+  {
+    levels[k] = std::ldexp(reached, -k);
+  }
   for (std::size_t v = 0; v < fc.Nodes.size(); ++v)
   {
-    if (presence[v] < HUGE_VAL)
+    const double value = fc.Nodes[v].Value;
+    if (presence[v] < HUGE_VAL && value > levels[deepest])
     {
-      for (int k = deepest; k >= 0 && fc.Nodes[v].Value > std::ldexp(reached, -k); --k)
+      int k = deepest;
+      while (k > 0 && value > levels[k - 1])
       {
-        first[k] = std::min(first[k], presence[v]);
+        --k;
       }
+      first[k] = std::min(first[k], presence[v]);
     }
+  }
+  for (int k = 1; k <= deepest; ++k)
+  {
+    first[k] = std::min(first[k], first[k - 1]);
   }
   return first;
 }
