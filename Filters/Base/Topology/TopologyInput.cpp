@@ -306,11 +306,12 @@ TopologyInput TopologyOfCappedRun(CappedReconstruction& r, std::unique_ptr<Exter
   }
   // Memory: the raw arcs (the 1-2 ones kept, two per edge, the cones), the
   // regions (9 bytes a cell while built: a flag, the union-find, the labels)
-  // and the topology's arrays after them (HasseBarcode: ~40 bytes a node).
+  // and the topology's arrays after them (HasseBarcode: ~48 bytes a node, its
+  // sort holding two copies of the present ones).
   const double cells = r.Triangulation ? static_cast<double>(r.Triangulation->Tri().NumberOfCells()) : 0;
   RequireMemory(static_cast<double>(sizeof(Arc)) *
         static_cast<double>(r.RawPatchArcs.size() + 2 * fc.CountByIndex()[1] + r.Cones.size()) +
-      9.0 * cells + 40.0 * static_cast<double>(fc.Nodes.size()),
+      9.0 * cells + 48.0 * static_cast<double>(fc.Nodes.size()),
     "the Betti numbers of a " + std::to_string(fc.CountByIndex()[0]) + "-point cloud's reconstructions",
     "turn the topology off with given thresholds, or use fewer points");
   TopologyInput t;
