@@ -52,11 +52,17 @@ void TakeBuild(CappedBuild& b, bool take, CappedReconstruction& r)
   if (!take)
   {
     // The nodes are lent, not copied (MoveNodes).
-    const double arcs = static_cast<double>(b.Complex.Arcs.size() + cones + raw);
-    RequireMemory(static_cast<double>(sizeof(Arc)) * arcs,
-      "a copy of the flow complex of a " + std::to_string(b.Complex.CountByIndex()[0]) +
-        "-point cloud for a second t_p",
-      "give t_p a value (one run), or use fewer points");
+    const double bytes = static_cast<double>(sizeof(Arc)) *
+      static_cast<double>(b.Complex.Arcs.size() + cones + raw);
+    // The message counts the samples, a pass over every node: only when it
+    // may be needed.
+    if (bytes > AvailableMemory())
+    {
+      RequireMemory(bytes,
+        "a copy of the flow complex of a " + std::to_string(b.Complex.CountByIndex()[0]) +
+          "-point cloud for a second t_p",
+        "give t_p a value (one run), or use fewer points");
+    }
   }
   r.Cones.reserve(cones);
   r.RawPatchArcs.reserve(raw);

@@ -7,6 +7,7 @@
 #include "MemoryGuard.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 
@@ -309,16 +310,17 @@ TopologyInput TopologyOfCappedRun(CappedReconstruction& r, std::unique_ptr<Exter
   // and the topology's arrays after them (HasseBarcode: ~48 bytes a node, its
   // sort holding two copies of the present ones).
   const double cells = r.Triangulation ? static_cast<double>(r.Triangulation->Tri().NumberOfCells()) : 0;
+  const std::array<Id, 4> count = fc.CountByIndex(); // a pass over every node: once
   RequireMemory(static_cast<double>(sizeof(Arc)) *
-        static_cast<double>(r.RawPatchArcs.size() + 2 * fc.CountByIndex()[1] + r.Cones.size()) +
+        static_cast<double>(r.RawPatchArcs.size() + 2 * count[1] + r.Cones.size()) +
       9.0 * cells + 48.0 * static_cast<double>(fc.Nodes.size()),
-    "the Betti numbers of a " + std::to_string(fc.CountByIndex()[0]) + "-point cloud's reconstructions",
+    "the Betti numbers of a " + std::to_string(count[0]) + "-point cloud's reconstructions",
     "turn the topology off with given thresholds, or use fewer points");
   TopologyInput t;
   std::vector<Arc>& raw = t.Arcs;
   raw.swap(r.RawPatchArcs);
   // One allocation for all (growing by doubling copied ~10^7 arcs twice).
-  ReserveHuge(raw, raw.size() + 2 * static_cast<std::size_t>(fc.CountByIndex()[1]) + r.Cones.size() +
+  ReserveHuge(raw, raw.size() + 2 * static_cast<std::size_t>(count[1]) + r.Cones.size() +
     (r.Lines ? 2 * r.Lines->Nodes().size() : 0));
   AppendEdgeEnds(fc, raw);
   std::size_t cones = raw.size(); // the 2-3 arcs are the tail, by lower node
