@@ -98,6 +98,14 @@ bool ReadNodes(vtkPolyData* cp, FlowComplex& fc, std::string& error)
       error = "block CriticalPoints: node " + std::to_string(id) + " has an index outside 0..3";
       return false;
     }
+    // A distance: finite and not negative, but at infinity (+inf). A NaN
+    // would leave every later order (queue, filtration) undefined.
+    if (node.IsInfinity() ? !(node.Value == HUGE_VAL) : !(std::isfinite(node.Value) && node.Value >= 0))
+    {
+      error = "block CriticalPoints: node " + std::to_string(id) + " has the critical value " +
+        std::to_string(node.Value) + (node.IsInfinity() ? " (the maximum at infinity needs inf)" : "");
+      return false;
+    }
     if (node.IsInfinity())
     {
       if (fc.InfinityNode >= 0)

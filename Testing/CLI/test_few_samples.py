@@ -10,8 +10,7 @@ seeds each:
   without a void it names is what t_r 4.5 gives at the chosen t_p; no other
   answer with a void is warned so;
 - no ball answer is taken for a surface (1 0 0, right, every one);
-- every wrong sphere answer is warned, and more sphere answers are right than
-  the answers without a void that the warnings name;
+- every wrong answer is warned;
 - at 200 and 300 points no such warning.
 Usage: test_few_samples.py FLOWRECON WORKDIR
 """

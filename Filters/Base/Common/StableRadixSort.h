@@ -1,6 +1,8 @@
 // A stable sort by an unsigned 64-bit key in linear time: the filtration of
 // the topology sorts millions of nodes by their presence (a double), and a
-// comparison sort of them was a tenth of the Betti numbers' time.
+// comparison sort of them was a tenth of the Betti numbers' time. Written
+// here because neither the standard library, TBB nor CGAL has a stable radix
+// sort (Boost's spreadsort is not stable).
 #ifndef flowrecon_StableRadixSort_h
 #define flowrecon_StableRadixSort_h
 

@@ -200,6 +200,21 @@ int main(int argc, char* argv[])
     CHECK(error.find("StableManifoldPointId") != std::string::npos && error.find('\n') == std::string::npos);
     point->SetComponent(node, 0, kept);
 
+    // Critical values that are no distance (NaN, negative, +inf off infinity,
+    // a finite one at infinity): one line naming them, no complex read.
+    vtkDataArray* value = cp->GetPointData()->GetArray(flowrecon::names::CriticalValue);
+    CHECK(value != nullptr && fc.InfinityNode >= 0);
+    for (const auto& [at, bad] : { std::make_pair(node, std::nan("")), std::make_pair(node, -0.5),
+           std::make_pair(node, HUGE_VAL), std::make_pair(fc.InfinityNode, 5.0) })
+    {
+      const double was = value->GetComponent(at, 0);
+      value->SetComponent(at, 0, bad);
+      CHECK(!flowrecon::FromMultiBlock(back, read, error));
+      CHECK(error.find("critical value") != std::string::npos && error.find('\n') == std::string::npos);
+      value->SetComponent(at, 0, was);
+    }
+    CHECK(flowrecon::FromMultiBlock(back, read, error));
+
     // A file written before the array: the samples' points alone.
     cp->GetPointData()->RemoveArray(flowrecon::names::StableManifoldPointId);
     CHECK(flowrecon::FromMultiBlock(back, read, error));
