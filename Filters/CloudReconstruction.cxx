@@ -62,10 +62,11 @@ void KeepEdgeArcs(FlowComplex& fc)
 }
 
 /// The run at `tp` from `build` (taken when `take`, else its nodes are given
-/// back); `regions`: shared by the runs of one build (TopologyOfCappedRun).
+/// back); `regions`: shared by the runs of one build (TopologyOfCappedRun),
+/// with the ends of the lines walked there.
 /// Without `topology` the bars are not computed (a run made again: it has them).
 Candidate Run(CappedBuild& build, double tp, bool take, const CloudReconstructionSettings& settings,
-  std::unique_ptr<ExteriorRegions>& regions, const Progress& progress, bool topology = true)
+  SharedRegions& regions, const Progress& progress, bool topology = true)
 {
   Candidate c;
   c.Tp = tp;
@@ -206,7 +207,7 @@ public:
 
 private:
   void BuildAndRun(bool defer);
-  std::vector<Candidate> RunEach(CappedBuild& build, std::unique_ptr<ExteriorRegions>& regions);
+  std::vector<Candidate> RunEach(CappedBuild& build, SharedRegions& regions);
   /// The share of the progress of run k.
   Progress RunRange(std::size_t k) const
   {
@@ -262,7 +263,7 @@ void CloudRun::BuildAndRun(bool defer)
   // reads the representatives: a copy of the cloud less until then.
   build.Complex.Points = std::vector<Point3>();
   build.Complex.Representative = std::vector<Id>();
-  std::unique_ptr<ExteriorRegions> regions;
+  SharedRegions regions;
   std::vector<Candidate> candidates = this->RunEach(build, regions);
   this->TopologyTimes = ListTopologyTimes(candidates);
   std::size_t pick = 0;
@@ -307,7 +308,7 @@ void CloudRun::BuildAndRun(bool defer)
 /// With several t_p, two runs (insertions, lines, arcs) held together were
 /// most of the peak: a run before the last keeps only its bars and is run
 /// again if chosen, so the build stays whole until the choice.
-std::vector<Candidate> CloudRun::RunEach(CappedBuild& build, std::unique_ptr<ExteriorRegions>& regions)
+std::vector<Candidate> CloudRun::RunEach(CappedBuild& build, SharedRegions& regions)
 {
   std::vector<Candidate> candidates;
   candidates.reserve(this->Tps.size());
@@ -377,7 +378,7 @@ void CloudRun::Draw()
       }
       CappedBuild eager = BuildBelow(this->Samples, this->Options, this->Chosen.Tp, this->Settings.Cap,
         false, this->Report.Range(0, 0.4), this->Settings.Topology);
-      std::unique_ptr<ExteriorRegions> regions;
+      SharedRegions regions;
       this->Chosen =
         Run(eager, this->Chosen.Tp, true, this->Settings, regions, this->Report.Range(0.4, 0.7));
     }

@@ -179,8 +179,16 @@ void DeferredFlowLines::MakeForest()
 }
 
 std::vector<DeferredFlowLines::Ends> DeferredFlowLines::EndsAbove(
-  double levelSq, const std::vector<char>* only)
+  double levelSq, const std::vector<char>* only, EndMemo* memo)
 {
+  const Triangulation& tri = this->Re.Tri();
+  if (memo && (memo->LevelSq != levelSq || memo->Triangulation != tri.Serial() ||
+                memo->End.size() != this->Lines.size()))
+  {
+    memo->LevelSq = levelSq;
+    memo->Triangulation = tri.Serial();
+    memo->End.assign(this->Lines.size(), -1);
+  }
   std::vector<Ends> out;
   std::vector<Id> todo; // line positions
   for (std::size_t k = 0; k < this->Pending.size(); ++k)
@@ -203,20 +211,29 @@ std::vector<DeferredFlowLines::Ends> DeferredFlowLines::EndsAbove(
     return out;
   }
   const CriticalSimplices& cs = this->Re.Critical();
-  const Triangulation& tri = this->Re.Tri();
   this->MakeForest();
   std::vector<Id> end(todo.size());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, todo.size()),
     [&](const tbb::blocked_range<std::size_t>& r) {
       for (std::size_t k = r.begin(); k != r.end(); ++k)
       {
-        const Line& line = this->Lines[static_cast<std::size_t>(todo[k])];
+        const std::size_t l = static_cast<std::size_t>(todo[k]);
+        if (memo && memo->End[l] != -1)
+        {
+          end[k] = memo->End[l];
+          continue;
+        }
+        const Line& line = this->Lines[l];
         const auto& facet = cs.Facets[static_cast<std::size_t>(line.Node - this->Re.Base2())];
         const CellHandle side = FlowLineSides(tri, facet.Cell, facet.Opposite)[line.Side];
         double boundSq = 0;
         Id stop = -1;
         const Id root = this->Forest->RootBelow(tri.CellId(side), levelSq, &boundSq, &stop);
         end[k] = root == SuccessorForest::Pending ? -2 - stop : root;
+        if (memo)
+        {
+          memo->End[l] = static_cast<std::int32_t>(end[k]); // one line, one thread
+        }
       }
     });
   std::size_t e = 0;

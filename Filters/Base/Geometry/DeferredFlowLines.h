@@ -26,6 +26,7 @@
 #include "Simplification.h"
 
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -73,13 +74,27 @@ public:
     std::array<Id, 2> End; ///< by side: a maximum, or -2 - c for the cell c of a stop
   };
 
+  /// Where lines end at one level (EndsAbove), by line position, -1 when not
+  /// walked yet: kept for the next object made from the same build's pending
+  /// lines (the run of another t_p), which has the same lines in the same
+  /// places and need not walk them again.
+  struct EndMemo
+  {
+    double LevelSq = 0;
+    std::uint64_t Triangulation = 0; ///< its Serial()
+    std::vector<std::int32_t> End;
+  };
+
   /// The nodes not followed yet (in increasing order), their lines walked only
   /// until a Voronoi vertex certainly farther than sqrt(levelSq) from the
   /// samples (the stop), or to their maximum when there is none on the way
   /// (their nodes stay pending). For the topology: where a line goes beyond a
   /// level no reconstruction reaches is said by ExteriorRegions. With `only`
-  /// (a flag per node), only the flagged nodes.
-  std::vector<Ends> EndsAbove(double levelSq, const std::vector<char>* only = nullptr);
+  /// (a flag per node), only the flagged nodes. With `memo`, the ends it
+  /// holds for this level are read, not walked, and the others are added
+  /// (it is reset when it was made for another level or triangulation).
+  std::vector<Ends> EndsAbove(
+    double levelSq, const std::vector<char>* only = nullptr, EndMemo* memo = nullptr);
 
   /// `arcs` (grouped by index of the lower node, the 2-3 ones by lower node)
   /// with the 2-3 arcs of the nodes followed so far replaced by their raw arcs.

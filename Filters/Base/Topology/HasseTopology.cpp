@@ -4,10 +4,12 @@
 #include "UnionFind.h"
 
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <exception>
 #include <string>
 
 namespace flowrecon
@@ -114,12 +116,43 @@ public:
     }
   }
 
-  /// Forwards: components by union-find over the edges' ends (H0), loops as
-  /// they close, and the 2-cells that do not separate fill a loop each (H1).
-  void Inside(const std::vector<Arc>& arcs)
+  /// Forwards, the components (H0): union-find over the edges' ends. Reads
+  /// what Outside does not write, so the two run side by side. Leaves, per
+  /// place of an edge, the place of the component it ends (-1: it closes a
+  /// loop) for Inside, and the components never ended.
+  void Components(const std::vector<Arc>& arcs)
   {
-    const std::vector<Int> ends = PairsOf(this->Index, arcs, this->Pos, 0, this->Order.size());
+    this->Joins = PairsOf(this->Index, arcs, this->Pos, 0, this->Order.size());
     UnionFind inside(this->Order.size());
+    for (std::size_t p = 0; p < this->Order.size(); ++p)
+    {
+      const Int v = this->Order[p];
+      if (this->Index[v] != 1)
+      {
+        continue;
+      }
+      const Int a = this->Joins[2 * p], b = this->Joins[2 * p + 1];
+      if ((a >= 0) != (b >= 0) ||
+        (a >= 0 && (this->Pos[a] < 0 || this->Pos[b] < 0 || this->After(a, p) || this->After(b, p))))
+      {
+        NotClosed("edge " + std::to_string(v) + " is inserted before its ends");
+      }
+      // A component is named by its oldest vertex: the younger one dies.
+      this->Joins[2 * p] = a >= 0 ? inside.Merge(this->Pos[a], this->Pos[b]) : -1;
+    }
+    for (std::size_t p = 0; p < this->Order.size(); ++p)
+    {
+      if (this->Index[this->Order[p]] == 0 && inside.Find(static_cast<Int>(p)) == static_cast<Int>(p))
+      {
+        this->Essential.push_back(this->Order[p]);
+      }
+    }
+  }
+
+  /// Forwards, after Outside and Components: the bars of H0, and the loops
+  /// as they close, each filled by a 2-cell that does not separate (H1).
+  void Inside()
+  {
     std::vector<Int> loops; // edges of the open loops, latest last
     for (std::size_t p = 0; p < this->Order.size(); ++p)
     {
@@ -127,14 +160,7 @@ public:
       const int dimension = this->Index[v];
       if (dimension == 1)
       {
-        const Int a = ends[2 * p], b = ends[2 * p + 1];
-        if ((a >= 0) != (b >= 0) ||
-          (a >= 0 && (this->Pos[a] < 0 || this->Pos[b] < 0 || this->After(a, p) || this->After(b, p))))
-        {
-          NotClosed("edge " + std::to_string(v) + " is inserted before its ends");
-        }
-        // A component is named by its oldest vertex: the younger one dies.
-        const Int dies = a >= 0 ? inside.Merge(this->Pos[a], this->Pos[b]) : -1;
+        const Int dies = this->Joins[2 * p];
         if (dies >= 0)
         {
           this->Make(0, this->Order[dies], v);
@@ -154,12 +180,10 @@ public:
         loops.pop_back();
       }
     }
-    for (std::size_t p = 0; p < this->Order.size(); ++p)
+    std::vector<Int>().swap(this->Joins);
+    for (const Int v : this->Essential)
     {
-      if (this->Index[this->Order[p]] == 0 && inside.Find(static_cast<Int>(p)) == static_cast<Int>(p))
-      {
-        this->Make(0, this->Order[p], -1);
-      }
+      this->Make(0, v, -1);
     }
     for (const Int e : loops)
     {
@@ -173,6 +197,8 @@ private:
   std::vector<Int> Order, Pos; ///< the inserted nodes in filtration order; a node's place in it or -1
   std::vector<Int> ElementOf, NodeOf; ///< maxima as elements of the complement's union-find
   std::vector<char> Separates; ///< by place: an index-2 node that joins two components outside
+  std::vector<Int> Joins;      ///< by place of an edge: its ends, then the place it ends (Components)
+  std::vector<Int> Essential;  ///< vertices whose component never ends
 
   bool Before(Int v, std::size_t p) const { return this->Pos[v] >= 0 && this->Pos[v] < static_cast<Int>(p); }
   bool After(Int v, std::size_t p) const { return this->Pos[v] > static_cast<Int>(p); }
@@ -346,8 +372,38 @@ std::vector<Bar> HasseBarcode(const std::vector<Node>& nodes, const std::vector<
     NotClosed("the presence times and the diagram have different nodes");
   }
   Barcode code(Indices(nodes), presence);
-  code.Outside(rawArcs, joined);
-  code.Inside(rawArcs);
+  // Two passes of union-find, each bound by its random reads: side by side.
+  // Their errors are reported in a fixed order (the output is deterministic).
+  std::exception_ptr outside, components;
+  tbb::parallel_invoke(
+    [&] {
+      try
+      {
+        code.Outside(rawArcs, joined);
+      }
+      catch (...)
+      {
+        outside = std::current_exception();
+      }
+    },
+    [&] {
+      try
+      {
+        code.Components(rawArcs);
+      }
+      catch (...)
+      {
+        components = std::current_exception();
+      }
+    });
+  for (const std::exception_ptr& e : { outside, components })
+  {
+    if (e)
+    {
+      std::rethrow_exception(e);
+    }
+  }
+  code.Inside();
   return std::move(code.Bars);
 }
 

@@ -93,14 +93,16 @@ std::vector<double> FirstAbove(const FlowComplex& fc, const std::vector<double>&
 /// a line's side is its maximum when the walk met it, else the first maximum
 /// of the region where it stopped. With `joined`, every maximum of a region is
 /// joined to its first and none may be present (the top level, r*). Appends
-/// the rows; returns whether a walk ended at a maximum some reconstruction holds.
+/// the rows; returns whether a walk ended at a maximum some reconstruction
+/// holds. `memo`: the ends at this level, kept across the runs of one build.
 bool EndAt(CappedReconstruction& r, TopologyInput& t, const ExteriorRegions& regions,
-  const std::vector<char>& only, bool joined, std::vector<Arc>& rows)
+  const std::vector<char>& only, bool joined, std::vector<Arc>& rows,
+  DeferredFlowLines::EndMemo* memo = nullptr)
 {
   const FlowComplex& fc = r.Complex;
   const Retriangulation& re = *r.Triangulation;
   const std::vector<DeferredFlowLines::Ends> ends =
-    r.Lines->EndsAbove(std::nextafter(regions.Level(), HUGE_VAL), &only);
+    r.Lines->EndsAbove(std::nextafter(regions.Level(), HUGE_VAL), &only, memo);
   // Each region's first maximum (infinity for the unbounded one): the others
   // join it. A bounded region holds the maximum of the distance over it.
   std::vector<Id> first(static_cast<std::size_t>(regions.Count()), -1);
@@ -171,9 +173,9 @@ bool EndAt(CappedReconstruction& r, TopologyInput& t, const ExteriorRegions& reg
 /// reused when its level is high enough); those of a node present at t at
 /// the least of a few lower levels (r* / 2^k) above every value present by t.
 /// Throws Degenerate when the proof's premises fail to be shown.
-void EndInRegions(CappedReconstruction& r, TopologyInput& t, std::size_t cones,
-  std::unique_ptr<ExteriorRegions>& regions)
+void EndInRegions(CappedReconstruction& r, TopologyInput& t, std::size_t cones, SharedRegions& shared)
 {
+  std::unique_ptr<ExteriorRegions>& regions = shared.Regions;
   const FlowComplex& fc = r.Complex;
   const std::size_t n = fc.Nodes.size();
   double reached = 0; // r*
@@ -273,7 +275,7 @@ void EndInRegions(CappedReconstruction& r, TopologyInput& t, std::size_t cones,
       regions.reset();
       regions = std::make_unique<ExteriorRegions>(re.Tri(), top);
     }
-    reachesPresent = EndAt(r, t, *regions, only, true, rows) || reachesPresent;
+    reachesPresent = EndAt(r, t, *regions, only, true, rows, &shared.Ends) || reachesPresent;
   }
   std::stable_sort(rows.begin(), rows.end(), [](const Arc& a, const Arc& b) { return a.Lower < b.Lower; });
   ReplaceRows(t.Arcs, cones, rows);
@@ -298,7 +300,7 @@ void EndInRegions(CappedReconstruction& r, TopologyInput& t, std::size_t cones,
 
 } // namespace
 
-TopologyInput TopologyOfCappedRun(CappedReconstruction& r, std::unique_ptr<ExteriorRegions>* shared)
+TopologyInput TopologyOfCappedRun(CappedReconstruction& r, SharedRegions* shared)
 {
   const FlowComplex& fc = r.Complex;
   if (r.Lines)
@@ -350,7 +352,7 @@ TopologyInput TopologyOfCappedRun(CappedReconstruction& r, std::unique_ptr<Exter
     return t;
   }
   const Id followed = r.Lines->LinesFollowed();
-  std::unique_ptr<ExteriorRegions> own;
+  SharedRegions own;
   try
   {
     EndInRegions(r, t, cones, shared ? *shared : own);

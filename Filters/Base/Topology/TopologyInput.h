@@ -55,12 +55,20 @@ struct TopologyInput
   std::int64_t CellsAbove = 0; ///< cells whose Voronoi vertex is in {d > r*}
 };
 
+/// What the runs of one build's t_p candidates share for their topology: they
+/// often have the same r*, so the regions at that level and where the pending
+/// lines end there serve each of them.
+struct SharedRegions
+{
+  std::unique_ptr<ExteriorRegions> Regions;
+  DeferredFlowLines::EndMemo Ends; ///< at Regions' level
+};
+
 /// Needs r from keepRawPatchArcs; moves RawPatchArcs out. The lines stay
-/// pending for the drawing (CompleteCones). `regions` (if given) keeps the
+/// pending for the drawing (CompleteCones). `shared` (if given) keeps the
 /// regions computed for another run of the same build, reused when their
-/// level is high enough (the runs of t_p candidates often share r*).
-TopologyInput TopologyOfCappedRun(
-  CappedReconstruction& r, std::unique_ptr<ExteriorRegions>* regions = nullptr);
+/// level is high enough, with the ends of the lines walked there.
+TopologyInput TopologyOfCappedRun(CappedReconstruction& r, SharedRegions* shared = nullptr);
 
 } // namespace flowrecon
 
