@@ -4,7 +4,8 @@
 // the alpha complex when it is Gabriel with R_f^2 <= alpha, or when a cell
 // incident to it is). So the regions must be the components of the exterior
 // cells joined across exterior facets, infinity being one exterior "cell":
-// the same partition of the cells, computed by another library's code.
+// the same partition of the cells, computed by another library's code. And
+// regions descended from a higher level must be those computed anew.
 #include "Check.h"
 #include "Clouds.h"
 #include "ExteriorRegions.h"
@@ -22,6 +23,7 @@
 #include <iostream>
 #include <map>
 #include <numeric>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -173,6 +175,60 @@ std::vector<double> Levels(const std::vector<Point3>& points, std::initializer_l
   return out;
 }
 
+/// Regions descended level by level (highest first) must be those computed
+/// anew at each level: the same region of every cell (their ids are given in
+/// one canonical order), count, infinity's region and cells above.
+void CompareDescent(const std::string& name, const std::vector<Point3>& points, std::vector<double> levels)
+{
+  std::sort(levels.rbegin(), levels.rend());
+  const Triangulation tri(points);
+  ExteriorRegions descended(tri, levels.front(), true);
+  for (std::size_t l = 1; l < levels.size(); ++l)
+  {
+    descended.Descend(levels[l]);
+    const ExteriorRegions fresh(tri, levels[l]);
+    Id differ = 0;
+    for (Id cell = 0; cell < tri.NumberOfCells(); ++cell)
+    {
+      differ += descended.RegionOf(cell) != fresh.RegionOf(cell) ? 1 : 0;
+    }
+    const std::string what = name + " descended from r^2 = " + std::to_string(levels[l - 1]) +
+      " to " + std::to_string(levels[l]);
+    if (differ != 0)
+    {
+      std::cout << what << ": " << differ << " cells in other regions than anew\n";
+      ++check::Failures();
+    }
+    CHECK(descended.Count() == fresh.Count());
+    CHECK(descended.InfiniteRegion() == fresh.InfiniteRegion());
+    CHECK(descended.CellsAbove() == fresh.CellsAbove());
+    CHECK(descended.Level() == levels[l]);
+    std::cout << what << ": " << descended.Count() << " regions, as anew\n";
+  }
+  // Only down, and only when kept for it.
+  bool refused = false;
+  try
+  {
+    descended.Descend(levels.front());
+  }
+  catch (const std::logic_error&)
+  {
+    refused = true;
+  }
+  CHECK(refused || levels.front() == levels.back());
+  ExteriorRegions once(tri, levels.back());
+  refused = false;
+  try
+  {
+    once.Descend(levels.back());
+  }
+  catch (const std::logic_error&)
+  {
+    refused = true;
+  }
+  CHECK(refused);
+}
+
 } // namespace
 
 int main()
@@ -201,6 +257,11 @@ int main()
   {
     Compare("grid", grid, level);
   }
+  for (const auto& [name, points] : clouds)
+  {
+    CompareDescent(name, points, Levels(points, { 0.02, 0.05, 0.1, 0.3, 0.6, 0.9 }));
+  }
+  CompareDescent("grid", grid, { 0.5, 0.6, 0.74, 0.75, 0.76 });
   // The levels are not all trivial: some split space in many regions.
   CHECK(most > 10);
   return check::Finish("TestExteriorRegions");

@@ -9,6 +9,7 @@
 
 #include <array>
 #include <atomic>
+#include <stdexcept>
 
 namespace flowrecon
 {
@@ -16,18 +17,20 @@ namespace flowrecon
 namespace
 {
 
-/// The Voronoi vertices in U_r: the cells of circumradius > r.
-std::vector<char> CellsOverLevel(const Triangulation& tri, double levelSq)
+/// The Voronoi vertices that enter U_r: the cells of circumradius > r not in
+/// it yet (flag 0), flagged 2.
+void MarkCellsOverLevel(const Triangulation& tri, double levelSq, std::vector<char>& above)
 {
   const Kernel kernel;
   const auto compare = kernel.compare_squared_radius_3_object();
-  const std::size_t n = static_cast<std::size_t>(tri.NumberOfCells());
-  std::vector<char> above;
-  ReserveHugePopulated(above, n);
-  above.resize(n);
+  const std::size_t n = above.size();
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n), [&](const tbb::blocked_range<std::size_t>& r) {
     for (std::size_t c = r.begin(); c != r.end(); ++c)
     {
+      if (above[c])
+      {
+        continue;
+      }
       // Memory-bound: fetch the cells ahead, then their vertices.
       if (c + 16 < r.end())
       {
@@ -43,15 +46,19 @@ std::vector<char> CellsOverLevel(const Triangulation& tri, double levelSq)
       }
       const CellHandle h = tri.Cell(static_cast<Id>(c));
       above[c] = compare(h->vertex(0)->point(), h->vertex(1)->point(), h->vertex(2)->point(),
-                   h->vertex(3)->point(), levelSq) == CGAL::LARGER;
+                   h->vertex(3)->point(), levelSq) == CGAL::LARGER
+        ? 2
+        : 0;
     }
   });
-  return above;
 }
 
-/// The components of U_r's graph: cells above joined across the facets whose
-/// Voronoi edge lies in U_r; element n is infinity.
-UnionFind JoinAcrossFacets(const Triangulation& tri, const std::vector<char>& above, double levelSq)
+/// Joins the components of U_r's graph (element n is infinity) across the
+/// facets of the cells that entered (flag 2) whose Voronoi edge lies in U_r,
+/// and across the facets that failed before (`failed`, which then records the
+/// facets that fail now; null: nothing is recorded).
+void JoinAcrossFacets(const Triangulation& tri, const std::vector<char>& above, double levelSq,
+  UnionFind& components, std::vector<std::uint8_t>* failed)
 {
   const Kernel kernel;
   const auto compare = kernel.compare_squared_radius_3_object();
@@ -84,12 +91,12 @@ UnionFind JoinAcrossFacets(const Triangulation& tri, const std::vector<char>& ab
     }
     return false;
   };
-  // Infinity is joined to every cell whose Voronoi ray lies in U_r.
-  UnionFind components(n + 1);
+  // Infinity is joined to every cell whose Voronoi ray lies in U_r. A facet
+  // is tested from one side: a cell that entered, or the smaller of two.
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n), [&](const tbb::blocked_range<std::size_t>& r) {
     for (std::size_t c = r.begin(); c != r.end(); ++c)
     {
-      if (c + 8 < r.end() && above[c + 8])
+      if (c + 8 < r.end() && above[c + 8] == 2)
       {
         const CellHandle a = tri.Cell(static_cast<Id>(c + 8));
         for (int i = 0; i < 4; ++i)
@@ -97,31 +104,50 @@ UnionFind JoinAcrossFacets(const Triangulation& tri, const std::vector<char>& ab
           __builtin_prefetch(&a->neighbor(i)->info());
         }
       }
-      if (!above[c])
+      const bool entered = above[c] == 2;
+      const std::uint8_t again = failed && above[c] == 1 ? (*failed)[c] : 0;
+      if (!entered && again == 0)
       {
         continue;
       }
       const CellHandle h = tri.Cell(static_cast<Id>(c));
+      std::uint8_t fails = 0;
       for (int i = 0; i < 4; ++i)
       {
+        if (!entered && !(again & (1u << i)))
+        {
+          continue;
+        }
         const Id d = tri.CellId(h->neighbor(i));
         const std::size_t other = d < 0 ? n : static_cast<std::size_t>(d);
+        const bool tested = !entered || d < 0 || above[other] == 1 || (above[other] == 2 && other > c);
         // Cells already joined need no predicate (most facets inside a region).
-        if ((d < 0 || (other > c && above[other])) &&
-          components.FindConcurrent(static_cast<std::int32_t>(c)) != components.FindConcurrent(static_cast<std::int32_t>(other)) &&
-          edgeAbove(h, i))
+        if (!tested ||
+          components.FindConcurrent(static_cast<std::int32_t>(c)) ==
+            components.FindConcurrent(static_cast<std::int32_t>(other)))
+        {
+          continue;
+        }
+        if (edgeAbove(h, i))
         {
           components.UnionConcurrent(static_cast<std::int32_t>(c), static_cast<std::int32_t>(other));
         }
+        else
+        {
+          fails = static_cast<std::uint8_t>(fails | (1u << i));
+        }
+      }
+      if (failed)
+      {
+        (*failed)[c] = fails; // this thread's cell only
       }
     }
   });
-  return components;
 }
 
 } // namespace
 
-ExteriorRegions::ExteriorRegions(const Triangulation& tri, double levelSq)
+ExteriorRegions::ExteriorRegions(const Triangulation& tri, double levelSq, bool lowerLater)
   : LevelSq(levelSq)
   , TriangulationSerial(tri.Serial())
 {
@@ -129,9 +155,51 @@ ExteriorRegions::ExteriorRegions(const Triangulation& tri, double levelSq)
   {
     throw Degenerate("exterior regions: the triangulation is not 3-dimensional");
   }
-  const std::vector<char> above = CellsOverLevel(tri, levelSq);
-  UnionFind components = JoinAcrossFacets(tri, above, levelSq);
+  const std::size_t n = static_cast<std::size_t>(tri.NumberOfCells());
+  std::vector<char> above;
+  ReserveHugePopulated(above, n);
+  above.assign(n, 0);
+  UnionFind components(n + 1);
+  this->Tri = &tri;
+  if (lowerLater)
+  {
+    this->Failed.assign(n, 0);
+  }
+  this->Enter(above, components, lowerLater ? &this->Failed : nullptr);
+  if (lowerLater)
+  {
+    this->InU = std::move(above);
+    this->Components = std::make_unique<UnionFind>(std::move(components));
+  }
+  else
+  {
+    this->Tri = nullptr;
+  }
+}
+
+ExteriorRegions::~ExteriorRegions() = default;
+
+void ExteriorRegions::Descend(double levelSq)
+{
+  if (!this->Components || !(levelSq <= this->LevelSq))
+  {
+    throw std::logic_error("exterior regions: descend below the level, on regions kept for it");
+  }
+  this->LevelSq = levelSq;
+  this->Enter(this->InU, *this->Components, &this->Failed);
+}
+
+void ExteriorRegions::Enter(
+  std::vector<char>& above, UnionFind& components, std::vector<std::uint8_t>* failed)
+{
+  MarkCellsOverLevel(*this->Tri, this->LevelSq, above);
+  JoinAcrossFacets(*this->Tri, above, this->LevelSq, components, failed);
   this->Label(above, components);
+  if (failed)
+  {
+    // Kept for a lower level: what entered now is in U from then on.
+    tbb::parallel_for(std::size_t(0), above.size(), [&](std::size_t c) { above[c] = above[c] ? 1 : 0; });
+  }
 }
 
 void ExteriorRegions::Label(const std::vector<char>& above, UnionFind& components)
@@ -141,6 +209,8 @@ void ExteriorRegions::Label(const std::vector<char>& above, UnionFind& component
   // last when it is alone), labels in place: a root, the smallest element of
   // its component, comes before the other members, so one scan numbers the
   // roots (as -2 - id) and the members then copy their root's label.
+  this->Count_ = 0;
+  this->Above = 0;
   ReserveHugePopulated(this->Region, n);
   this->Region.assign(n, -1);
   std::vector<std::int32_t>& region = this->Region;

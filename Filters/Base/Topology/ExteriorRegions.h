@@ -25,6 +25,7 @@
 #include "Triangulation.h"
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace flowrecon
@@ -34,11 +35,26 @@ class UnionFind;
 
 /// The components of U_r (r^2 = `levelSq`, triangulation units), computed
 /// over every cell in parallel; deterministic.
+///
+/// Why a lower level needs only what enters. As r goes down U_r grows, and so
+/// does its graph: a cell of circumradius > r stays above any lower level, and
+/// a facet whose Voronoi edge lies in U_r (not Gabriel, or R_f > r) lies in the
+/// U of any lower level. The components at a lower level are therefore those
+/// at r joined by the cells that enter and their facets, and by the facets
+/// that failed at r and pass now (Descend): the regions a new object at that
+/// level has, for the cost of what changed. The lower levels of a surface
+/// sample hold nearly the same cells (TopologyInput.h).
 class ExteriorRegions
 {
 public:
   /// Throws Degenerate when the triangulation is not 3-dimensional.
-  ExteriorRegions(const Triangulation& tri, double levelSq);
+  /// `lowerLater`: keeps what Descend needs (the cells' flags, the union-find
+  /// and the facets that did not join: 6 bytes a cell, and a reference to `tri`).
+  ExteriorRegions(const Triangulation& tri, double levelSq, bool lowerLater = false);
+  ~ExteriorRegions();
+
+  /// The regions at `levelSq` <= Level() (Why, above); needs lowerLater.
+  void Descend(double levelSq);
 
   double Level() const { return this->LevelSq; } ///< squared
   /// The triangulation's Serial(): regions of one do not fit another.
@@ -52,9 +68,19 @@ public:
 private:
   /// Dense region ids, in the order of the regions' smallest cells.
   void Label(const std::vector<char>& above, UnionFind& components);
+  /// The cells over `levelSq` not yet above enter U (flag 2), and are joined
+  /// across their facets, as are the facets that failed before; then every
+  /// flag is 1.
+  void Enter(std::vector<char>& above, UnionFind& components, std::vector<std::uint8_t>* failed);
 
   double LevelSq;
   std::uint64_t TriangulationSerial;
+  const Triangulation* Tri = nullptr; ///< with lowerLater
+  std::vector<char> InU;              ///< with lowerLater: per cell
+  std::unique_ptr<UnionFind> Components; ///< with lowerLater
+  /// With lowerLater: per cell, bit i for its facet i, tested with both sides
+  /// in U in different components and not in U (Gabriel, R_f <= r).
+  std::vector<std::uint8_t> Failed;
   std::vector<std::int32_t> Region;
   std::int32_t Count_ = 0, Infinite = -1;
   std::int64_t Above = 0;

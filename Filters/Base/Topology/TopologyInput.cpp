@@ -206,7 +206,9 @@ void EndInRegions(CappedReconstruction& r, TopologyInput& t, std::size_t cones, 
   // of a surface sample's patches end near the surface instead of at the
   // medial axis, once the run has inserted the inner maxima at t_p 0.
   constexpr int Deepest = 8;
-  constexpr int Passes = 3; // each level below r* costs a pass over the cells
+  // Levels below r*: the first costs a flood of the cells, each deeper one
+  // what enters U below the one before (ExteriorRegions::Descend).
+  constexpr int Passes = 3;
   const std::vector<Id>& nodes = r.Lines->Nodes();
   std::vector<char> pending(nodes.size());
   for (std::size_t i = 0; i < nodes.size(); ++i)
@@ -253,22 +255,39 @@ void EndInRegions(CappedReconstruction& r, TopologyInput& t, std::size_t cones, 
   std::vector<Arc> rows;
   bool reachesPresent = false;
   std::vector<char> only(n, 0);
-  for (int k = Deepest; k >= 0; --k)
+  auto flag = [&](int k) {
+    for (std::size_t i = 0; i < nodes.size(); ++i)
+    {
+      only[nodes[i]] = pending[i] && level[i] == k;
+    }
+  };
+  // The lower levels from the highest down: one set of regions, each level's
+  // from the one above (ExteriorRegions::Descend), where a flood each cost
+  // the same again (they hold nearly the same cells).
+  int lowerLeft = static_cast<int>(std::count(kept.begin() + 1, kept.end(), 1));
+  std::unique_ptr<ExteriorRegions> lower;
+  for (int k = 1; k <= Deepest; ++k)
   {
     if (!kept[k])
     {
       continue;
     }
-    for (std::size_t i = 0; i < nodes.size(); ++i)
+    flag(k);
+    const double sq = levelSq(std::ldexp(reached, -k));
+    --lowerLeft;
+    if (!lower)
     {
-      only[nodes[i]] = pending[i] && level[i] == k;
+      lower = std::make_unique<ExteriorRegions>(re.Tri(), sq, lowerLeft > 0);
     }
-    if (k > 0)
+    else
     {
-      const ExteriorRegions lower(re.Tri(), levelSq(std::ldexp(reached, -k)));
-      reachesPresent = EndAt(r, t, lower, only, false, rows) || reachesPresent;
-      continue;
+      lower->Descend(sq);
     }
+    reachesPresent = EndAt(r, t, *lower, only, false, rows) || reachesPresent;
+  }
+  lower.reset();
+  {
+    flag(0);
     const double top = levelSq(reached);
     if (!regions || regions->Of() != re.Tri().Serial() || !(regions->Level() >= top))
     {
@@ -308,14 +327,15 @@ TopologyInput TopologyOfCappedRun(CappedReconstruction& r, SharedRegions* shared
     r.Lines->CompleteRawArcs(r.Cones); // what the run followed
   }
   // Memory: the raw arcs (the 1-2 ones kept, two per edge, the cones), the
-  // regions (9 bytes a cell while built: a flag, the union-find, the labels)
+  // regions (10 bytes a cell while built or kept for a lower level: the flags,
+  // the union-find, the labels, the failed facets)
   // and the topology's arrays after them (HasseBarcode: ~48 bytes a node, its
   // sort holding two copies of the present ones).
   const double cells = r.Triangulation ? static_cast<double>(r.Triangulation->Tri().NumberOfCells()) : 0;
   const std::array<Id, 4> count = fc.CountByIndex(); // a pass over every node: once
   RequireMemory(static_cast<double>(sizeof(Arc)) *
         static_cast<double>(r.RawPatchArcs.size() + 2 * count[1] + r.Cones.size()) +
-      9.0 * cells + 48.0 * static_cast<double>(fc.Nodes.size()),
+      10.0 * cells + 48.0 * static_cast<double>(fc.Nodes.size()),
     "the Betti numbers of a " + std::to_string(count[0]) + "-point cloud's reconstructions",
     "turn the topology off with given thresholds, or use fewer points");
   TopologyInput t;
