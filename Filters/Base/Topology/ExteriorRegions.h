@@ -68,9 +68,9 @@ public:
 private:
   /// Dense region ids, in the order of the regions' smallest cells.
   void Label(const std::vector<char>& above, UnionFind& components);
-  /// The cells over `levelSq` not yet above enter U (flag 2), and are joined
-  /// across their facets, as are the facets that failed before; then every
-  /// flag is 1.
+  /// The cells over Level() not yet in U enter it (flag 2) and are joined
+  /// across their facets, as are the facets that failed before (`failed`);
+  /// kept for a lower level (`failed` given), every flag is then 1.
   void Enter(std::vector<char>& above, UnionFind& components, std::vector<std::uint8_t>* failed);
 
   double LevelSq;
@@ -78,8 +78,9 @@ private:
   const Triangulation* Tri = nullptr; ///< with lowerLater
   std::vector<char> InU;              ///< with lowerLater: per cell
   std::unique_ptr<UnionFind> Components; ///< with lowerLater
-  /// With lowerLater: per cell, bit i for its facet i, tested with both sides
-  /// in U in different components and not in U (Gabriel, R_f <= r).
+  /// With lowerLater: per cell, bit i for its facet i when it was tested (both
+  /// sides in U, in different components) and its Voronoi edge is not in U
+  /// (a Gabriel facet with R_f <= r): a lower level tests it again.
   std::vector<std::uint8_t> Failed;
   std::vector<std::int32_t> Region;
   std::int32_t Count_ = 0, Infinite = -1;
