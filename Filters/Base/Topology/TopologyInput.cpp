@@ -206,6 +206,7 @@ void EndInRegions(CappedReconstruction& r, TopologyInput& t, std::size_t cones, 
   // of a surface sample's patches end near the surface instead of at the
   // medial axis, once the run has inserted the inner maxima at t_p 0.
   constexpr int Deepest = 8;
+  constexpr std::int8_t Shared = -1; // the level of another candidate's r*
   // Levels below r*: the first costs a flood of the cells, each deeper one
   // what enters U below the one before (ExteriorRegions::Descend).
   constexpr int Passes = 3;
@@ -233,6 +234,24 @@ void EndInRegions(CappedReconstruction& r, TopologyInput& t, std::size_t cones, 
       ++present;
     }
   }
+  // A lower r* of another candidate, whose regions and line ends are made
+  // already, is a level like the others for the nodes present before any
+  // value above it (Shared): those within two halvings of their own level
+  // take it, and only the others count for the levels below.
+  const bool share = regions && regions->Of() == re.Tri().Serial() && shared.Reached > 0 &&
+    shared.Reached < reached;
+  const double sharedReached = shared.Reached; // the top may replace the regions below
+  const double firstShared = share ? FirstAbove(fc, t.Presence, sharedReached, 0)[0] : -HUGE_VAL;
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+  {
+    if (share && pending[i] && t.Presence[nodes[i]] < firstShared &&
+      shared.Reached <= 4 * std::ldexp(reached, -level[i]))
+    {
+      --count[level[i]];
+      --present;
+      level[i] = Shared;
+    }
+  }
   // The levels holding an eighth of those nodes or more, the deepest
   // `Passes`; a node of another level goes up to the next one kept.
   std::vector<char> kept(Deepest + 1, 0);
@@ -247,7 +266,7 @@ void EndInRegions(CappedReconstruction& r, TopologyInput& t, std::size_t cones, 
   }
   for (std::int8_t& k : level)
   {
-    while (!kept[k])
+    while (k != Shared && !kept[k])
     {
       --k;
     }
@@ -261,6 +280,11 @@ void EndInRegions(CappedReconstruction& r, TopologyInput& t, std::size_t cones, 
       only[nodes[i]] = pending[i] && level[i] == k;
     }
   };
+  if (share)
+  {
+    flag(Shared);
+    reachesPresent = EndAt(r, t, *regions, only, false, rows, &shared.Ends) || reachesPresent;
+  }
   // The lower levels from the highest down: one set of regions, each level's
   // from the one above (ExteriorRegions::Descend), where a flood each cost
   // the same again (they hold nearly the same cells).
@@ -293,6 +317,7 @@ void EndInRegions(CappedReconstruction& r, TopologyInput& t, std::size_t cones, 
     {
       regions.reset();
       regions = std::make_unique<ExteriorRegions>(re.Tri(), top);
+      shared.Reached = reached;
     }
     reachesPresent = EndAt(r, t, *regions, only, true, rows, &shared.Ends) || reachesPresent;
   }
@@ -305,9 +330,11 @@ void EndInRegions(CappedReconstruction& r, TopologyInput& t, std::size_t cones, 
     // no value present by any t grows: the levels stand (checked).
     t.Presence = PresenceTimes(fc.Nodes, t.Arcs, r.Carriers, r.Run);
     const std::vector<double> after = FirstAbove(fc, t.Presence, reached, Deepest);
+    const double afterShared = share ? FirstAbove(fc, t.Presence, sharedReached, 0)[0] : -HUGE_VAL;
     for (std::size_t i = 0; i < nodes.size(); ++i)
     {
-      if (level[i] > 0 && !(t.Presence[nodes[i]] < after[level[i]]))
+      if ((level[i] > 0 && !(t.Presence[nodes[i]] < after[level[i]])) ||
+        (level[i] == Shared && !(t.Presence[nodes[i]] < afterShared)))
       {
         throw Degenerate("topology: a level below r* no longer holds");
       }

@@ -62,6 +62,7 @@ struct SharedRegions
 {
   std::unique_ptr<ExteriorRegions> Regions;
   DeferredFlowLines::EndMemo Ends; ///< at Regions' level
+  double Reached = -1; ///< the r* Regions were made for (their level, before the margins)
 };
 
 /// Needs r from keepRawPatchArcs; moves RawPatchArcs out. The lines stay
