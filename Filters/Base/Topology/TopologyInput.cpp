@@ -283,7 +283,9 @@ void EndInRegions(CappedReconstruction& r, TopologyInput& t, std::size_t cones, 
   if (share)
   {
     flag(Shared);
+    const Id before = t.LinesToLowerLevels;
     reachesPresent = EndAt(r, t, *regions, only, false, rows, &shared.Ends) || reachesPresent;
+    t.LinesToSharedLevel = t.LinesToLowerLevels - before;
   }
   // The lower levels from the highest down: one set of regions, each level's
   // from the one above (ExteriorRegions::Descend), where a flood each cost
@@ -408,7 +410,8 @@ TopologyInput TopologyOfCappedRun(CappedReconstruction& r, SharedRegions* shared
   {
     // Not shown: every line is followed (a tie there is the caller's Degenerate).
     t.Joined.clear();
-    t.LinesToRegions = t.LinesToLowerLevels = t.Regions = t.CellsAbove = 0;
+    t.LinesToRegions = t.LinesToLowerLevels = t.LinesToSharedLevel = t.Regions = t.CellsAbove = 0;
+    t.FollowedEveryLine = true;
     r.Lines->Follow(r.Lines->Nodes());
     ReplaceRows(raw, cones, r.Lines->FollowedRawArcs());
     t.Presence = PresenceTimes(fc.Nodes, raw, r.Carriers, r.Run);

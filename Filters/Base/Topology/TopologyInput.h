@@ -51,6 +51,11 @@ struct TopologyInput
   /// Of those, the lines ended below r*: of nodes present at some t, at a
   /// level above the values present by t.
   Id LinesToLowerLevels = 0;
+  /// Of those, the lines ended at another candidate's r* (SharedRegions).
+  Id LinesToSharedLevel = 0;
+  /// A level's premise failed to be shown: every line was followed instead
+  /// (right, but the walks the regions spare are all made).
+  bool FollowedEveryLine = false;
   Id Regions = 0;
   std::int64_t CellsAbove = 0; ///< cells whose Voronoi vertex is in {d > r*}
 };
