@@ -35,6 +35,9 @@ struct Candidate
   std::string TopologyError;
   double Tp = 0;
   double TopologySeconds = 0; ///< following the lines, the raw arcs and the bars
+  /// The levels' premise failed to be shown: every pending line was followed
+  /// (right, but slow; said in the work report).
+  bool FollowedEveryLine = false;
   Id LinesDeferred = 0, LinesFollowed = 0;
   Id LinesToRegions = 0; ///< ended by the topology at a region of {d > r*} (TopologyInput.h)
   Id LinesToLowerLevels = 0; ///< of those, at a level below r*
@@ -90,6 +93,7 @@ Candidate Run(CappedBuild& build, double tp, bool take, const CloudReconstructio
     c.LinesToLowerLevels = input.LinesToLowerLevels;
     c.Regions = input.Regions;
     c.CellsAbove = input.CellsAbove;
+    c.FollowedEveryLine = input.FollowedEveryLine;
     try
     {
       c.Bars = HasseBarcode(c.R.Complex.Nodes, input.Arcs, input.Presence, input.Joined);
@@ -162,7 +166,8 @@ std::string ListTopologyTimes(const std::vector<Candidate>& candidates)
   for (const Candidate& c : candidates)
   {
     each << (each.tellp() > 0 ? ", " : "") << "t_p " << c.Tp << ": " << std::fixed
-         << std::setprecision(3) << c.TopologySeconds << std::defaultfloat;
+         << std::setprecision(3) << c.TopologySeconds << std::defaultfloat
+         << (c.FollowedEveryLine ? " (every line followed)" : "");
   }
   return each.str();
 }
@@ -297,6 +302,7 @@ void CloudRun::BuildAndRun(bool defer)
     again.LinesToLowerLevels = first.LinesToLowerLevels;
     again.Regions = first.Regions;
     again.CellsAbove = first.CellsAbove;
+    again.FollowedEveryLine = first.FollowedEveryLine;
   }
   this->PhaseDone(this->Tps.size() > 1
       ? "simplification, reconstruction queue, Betti numbers (each t_p)"

@@ -168,6 +168,9 @@ void Compare(const std::string& name, const std::vector<Point3>& cloud, double t
   Expect(low != std::string::npos, what + ": the work report does not count the lines ended at a lower level");
   const long below = low == std::string::npos ? 0 : std::stol(report.Work.substr(low + lower.size()));
   LinesEndedLower() += below;
+  // The levels' premises hold by construction: never a fallback to every line.
+  Expect(report.Work.find("every line followed") == std::string::npos,
+    what + ": the topology followed every line (a level's premise failed)");
   if (below > 0)
   {
     std::cout << what << ": " << below << " flow lines ended at a lower level\n";
