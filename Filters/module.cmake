@@ -29,6 +29,7 @@ vtk_module_add_module(FlowRecon::Filters
     ${_flowrecon_filters_dir}/ReconstructionReport.h
     ${_flowrecon_filters_dir}/Conversion/SamplesFromVTK.h
     ${_flowrecon_filters_dir}/Conversion/SimplificationConversion.h
+    ${_flowrecon_filters_dir}/IO/StlPoints.h
     ${_flowrecon_filters_dir}/Conversion/SurvivingBlocks.h
     ${_flowrecon_filters_dir}/Conversion/TopologyConversion.h
     ${_flowrecon_filters_dir}/IO/VtkFilePoints.h
@@ -49,6 +50,7 @@ vtk_module_add_module(FlowRecon::Filters
     ${_flowrecon_filters_dir}/ReconstructionReport.cxx
     ${_flowrecon_filters_dir}/Conversion/SamplesFromVTK.cxx
     ${_flowrecon_filters_dir}/Conversion/SimplificationConversion.cxx
+    ${_flowrecon_filters_dir}/IO/StlPoints.cxx
     ${_flowrecon_filters_dir}/Conversion/SurvivingBlocks.cxx
     ${_flowrecon_filters_dir}/Conversion/TopologyConversion.cxx
     ${_flowrecon_filters_dir}/IO/VtkFilePoints.cxx

@@ -9,6 +9,7 @@
 #include "PlyPoints.h"
 #include "PointCloudParsing.h"
 #include "PointCloudTextFormats.h"
+#include "StlPoints.h"
 #include "VtkFilePoints.h"
 
 #include "vtkCellArray.h"
@@ -58,6 +59,7 @@ enum class Format
   Off,
   Obj,
   Ply,
+  Stl,
   LegacyVtk,
   XmlVtk
 };
@@ -65,8 +67,9 @@ enum class Format
 Format FormatOf(const std::string& extension)
 {
   static const std::pair<const char*, Format> formats[] = { { ".xyz", Format::Xyz },
-    { ".txt", Format::Xyz }, { ".pts", Format::Pts }, { ".csv", Format::Csv },
-    { ".off", Format::Off }, { ".ply", Format::Ply }, { ".obj", Format::Obj },
+    { ".txt", Format::Xyz }, { ".pwn", Format::Xyz }, { ".pts", Format::Pts },
+    { ".csv", Format::Csv }, { ".off", Format::Off }, { ".ply", Format::Ply },
+    { ".obj", Format::Obj }, { ".stl", Format::Stl },
     { ".vtk", Format::LegacyVtk }, { ".vtp", Format::XmlVtk }, { ".vtu", Format::XmlVtk },
     { ".vts", Format::XmlVtk }, { ".vtr", Format::XmlVtk }, { ".vti", Format::XmlVtk },
     { ".vtm", Format::XmlVtk }, { ".vthb", Format::XmlVtk }, { ".pvtp", Format::XmlVtk },
@@ -83,7 +86,7 @@ Format FormatOf(const std::string& extension)
 }
 
 const char* const SupportedExtensions =
-  ".xyz .txt .pts .csv .off .ply .obj .vtk .vtp .vtu .vts .vtr .vti .vtm .vthb .pvtp .pvtu "
+  ".xyz .txt .pwn .pts .csv .off .ply .obj .stl .vtk .vtp .vtu .vts .vtr .vti .vtm .vthb .pvtp .pvtu "
   ".pvts .pvtr .pvti";
 
 void ReadCloud(const std::string& file, std::vector<double>& xyz, vtkPointData* pointData)
@@ -133,6 +136,9 @@ void ReadCloud(const std::string& file, std::vector<double>& xyz, vtkPointData* 
       break;
     case Format::Ply:
       ReadPly(file, ReadWholeFile(file), xyz, pointData);
+      break;
+    case Format::Stl:
+      ReadStl(file, ReadWholeFile(file), xyz);
       break;
     case Format::LegacyVtk:
       ReadLegacyVtk(file, xyz, pointData);

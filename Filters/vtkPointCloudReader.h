@@ -3,9 +3,9 @@
  * @brief   Read the points of a point cloud from a text, mesh or VTK file.
  *
  * The format is chosen by the file extension (case-insensitive):
- * - `.xyz`, `.txt`, `.pts`: one point per line, `x y z` separated by blanks or
- *   commas; further columns are ignored. Blank lines and lines starting with `#`
- *   or `//` are skipped. A `.pts` file may start with a line holding only the
+ * - `.xyz`, `.txt`, `.pts`, `.pwn` (CGAL's points with normals): one point per
+ *   line, `x y z` separated by blanks or commas; further columns are ignored.
+ *   Blank lines and lines starting with `#` or `//` are skipped. A `.pts` file may start with a line holding only the
  *   point count, which is skipped.
  * - `.csv`: comma (or semicolon, or tab) separated, with an optional header row.
  *   Columns named `x`, `y`, `z` (or `Points:0..2`, `coordinates:0..2`, any
@@ -13,6 +13,8 @@
  *   numeric columns of the first data row.
  * - `.off`: the vertices of an (ST)(C)(N)OFF file; faces are ignored.
  * - `.obj`: the `v x y z` lines; everything else is ignored.
+ * - `.stl` (binary or ASCII): the distinct vertices of the triangles, in the
+ *   order of their first appearance.
  * - `.ply` (ASCII or binary): the vertex element; its scalar properties other
  *   than x, y, z become point data arrays (nx/ny/nz as `Normals`,
  *   red/green/blue[/alpha] as `RGB`/`RGBA`).

@@ -3,9 +3,9 @@
 Usage: /usr/bin/python3 Testing/Fuzz/make_corpus.py [FUZZ_STORED_COMPLEX]
 
 point_cloud_reader: byte 0 picks the extension (.xyz .csv .ply .off .obj .vtk
-.vtp = 0..6), the rest is the file: the clouds of Testing/Data and small
-clouds in every format (ASCII and binary PLY, legacy VTK ASCII and binary,
-VTK XML ASCII, raw appended, LZ4 and zlib compressed).
+.vtp .stl = 0..7), the rest is the file: the clouds of Testing/Data and small
+clouds in every format (ASCII and binary PLY and STL, legacy VTK ASCII and
+binary, VTK XML ASCII, raw appended, LZ4 and zlib compressed).
 core: byte 0 = flags (coordinate mode | eager << 2 | t_p choice << 3), byte 1 =
 scale, then coordinates (see FuzzCore.cxx).
 stored_complex: written by the fuzz_stored_complex binary itself
@@ -22,7 +22,7 @@ import tempfile
 HERE = os.path.dirname(os.path.abspath(__file__))
 CORPUS = os.path.join(HERE, "corpus")
 DATA = os.path.join(HERE, "..", "Data")
-EXT = [".xyz", ".csv", ".ply", ".off", ".obj", ".vtk", ".vtp"]
+EXT = [".xyz", ".csv", ".ply", ".off", ".obj", ".vtk", ".vtp", ".stl"]
 
 
 def put(target, name, data):
@@ -70,6 +70,12 @@ def reader_corpus():
         "%r %r %r 255 0 0 255\n" % p for p in pts)).encode())
     reader_seed("mesh.obj", ".obj", ("# obj\no thing\n" + "".join("v %r %r %r\n" % p for p in pts) +
                                     "vn 0 0 1\nf 1 2 3\n").encode())
+    tris = [pts[i:i + 3] for i in range(0, len(pts) - 2, 3)]
+    reader_seed("ascii.stl", ".stl", ("solid cloud\n" + "".join(
+        " facet normal 0 0 1\n  outer loop\n" + "".join("   vertex %r %r %r\n" % p for p in t) +
+        "  endloop\n endfacet\n" for t in tris) + "endsolid cloud\n").encode())
+    reader_seed("binary.stl", ".stl", b"solid binary".ljust(80) + struct.pack("<I", len(tris)) + b"".join(
+        struct.pack("<12fH", 0, 0, 1, *[c for p in t for c in p], 0) for t in tris))
     try:
         from vtkmodules.vtkCommonCore import vtkPoints, vtkDoubleArray
         from vtkmodules.vtkCommonDataModel import vtkPolyData, vtkCellArray

@@ -2,7 +2,8 @@
 
     pvpython test_reader_proxy.py PLUGIN CLOUD.xyz WORKDIR
 
-After LoadPlugin, OpenDataFile on .xyz and .pts files picks the plugin's reader
+After LoadPlugin, OpenDataFile on .xyz, .pts and .pwn (CGAL's points with
+normals, which ParaView has no reader for) files picks the plugin's reader
 and yields one point per data line of the file (counted here independently); a
 CSV file read by ParaView's own CSV reader (a vtkTable) goes straight into Flow
 Complex, without a Table To Points step, and gives the same node counts as the
@@ -24,13 +25,16 @@ def main():
     with open(pts, "w") as f:  # .pts: a count line, then x y z per line
         f.write("%d\n" % len(lines))
         f.writelines(lines)
+    pwn = os.path.join(work, "cloud.pwn")
+    with open(pwn, "w") as f:  # .pwn: x y z nx ny nz per line
+        f.writelines(" ".join(l.split()[:3]) + " 0 0 1\n" for l in lines)
     csv = os.path.join(work, "cloud.csv")
     with open(csv, "w") as f:
         f.write("x,y,z\n")
         f.writelines(",".join(l.split()[:3]) + "\n" for l in lines)
 
     counts = []
-    for path in (cloud, pts):
+    for path in (cloud, pts, pwn):
         reader = OpenDataFile(path)
         assert reader.GetXMLName() == "FlowReconPointCloudReader", reader.GetXMLName()
         reader.UpdatePipeline()
@@ -45,8 +49,8 @@ def main():
     fc.UpdatePipeline()
     counts.append(tuple(servermanager.Fetch(fc).GetFieldData()
                         .GetArray("NodeCountByIndex").GetTuple(0)))
-    print("node counts (xyz, pts, csv):", counts)
-    assert counts[0] == counts[1] == counts[2] and counts[0][0] == len(lines), counts
+    print("node counts (xyz, pts, pwn, csv):", counts)
+    assert counts[0] == counts[1] == counts[2] == counts[3] and counts[0][0] == len(lines), counts
     print("PASS")
 
 

@@ -1,6 +1,6 @@
 // Why vtkPointCloudReader keeps its own point parsers: each case
 // runs a point reader this machine's libraries provide (CGAL 5.5's; VTK 9.2's
-// PLY, OBJ, simple-points, PTS and delimited-text readers) on a bad file that
+// PLY, OBJ, STL, simple-points, PTS and delimited-text readers) on a bad file that
 // vtkPointCloudReader refuses or reads right (see TestPointCloudReader's
 // TestWhatLibraryReadersMisread), and checks that the library still gets it
 // wrong. A failed check here means the library was fixed:
@@ -14,6 +14,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/OBJ.h>
 #include <CGAL/IO/OFF.h>
+#include <CGAL/IO/STL.h>
 #include <CGAL/IO/read_off_points.h>
 #include <CGAL/IO/read_ply_points.h>
 #include <CGAL/IO/read_xyz_points.h>
@@ -24,12 +25,16 @@
 #include "vtkOBJReader.h"
 #include "vtkPLYReader.h"
 #include "vtkPTSReader.h"
+#include "vtkSTLReader.h"
 #include "vtkPoints.h"
 #include "vtkSimplePointsReader.h"
 #include "vtkPolyData.h"
 #include "vtkTable.h"
 
 #include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -205,6 +210,80 @@ void CgalPly()
     p.size() == 1 && p[0].x() == static_cast<double>(0.1f));
 }
 
+// A binary STL of one triangle with these vertices (9 floats), announcing
+// `announced` triangles; little-endian, as the format is.
+std::string BinaryStl(const std::array<float, 9>& vertices, std::uint32_t announced)
+{
+  std::string bytes(80, ' ');
+  const auto append = [&bytes](std::uint32_t bits) {
+    for (int k = 0; k < 4; ++k)
+    {
+      bytes += static_cast<char>((bits >> (8 * k)) & 0xff);
+    }
+  };
+  const auto appendFloat = [&append](float f) {
+    std::uint32_t bits;
+    std::memcpy(&bits, &f, 4);
+    append(bits);
+  };
+  append(announced);
+  for (const float f : { 0.0f, 0.0f, 1.0f })
+  {
+    appendFloat(f);
+  }
+  for (const float f : vertices)
+  {
+    appendFloat(f);
+  }
+  return bytes + std::string(2, '\0');
+}
+
+const std::string DotsStl = "solid d\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
+                            "vertex 0 1.2.3 0\nendloop\nendfacet\nendsolid d\n";
+
+void CgalStl()
+{
+  QuietCerr quiet;
+  using Triangles = std::vector<std::array<int, 3>>;
+  std::vector<std::array<double, 3>> p;
+  Triangles t;
+  // "1.2.3 0" is read as (1.2, 0.3), the 0 skipped as an unknown word.
+  std::ifstream dots(Write("dots.stl", DotsStl), std::ios::binary);
+  CHECK(CGAL::IO::read_STL(dots, p, t) && p.size() == 3 && p[2][1] == 1.2 && p[2][2] == 0.3);
+  // A NaN breaks its map's ordering: a binary triangle with one NaN keeps 2 of
+  // its 3 distinct vertices, and the read succeeds.
+  p.clear();
+  t.clear();
+  std::ifstream nan(
+    Write("nan.stl", BinaryStl({ std::nanf(""), 0, 0, 1, 0, 0, 0, 1, 0 }, 1)), std::ios::binary);
+  CHECK(CGAL::IO::read_STL(nan, p, t) && p.size() == 2);
+}
+
+void VtkStl()
+{
+  {
+    vtkNew<vtkSTLReader> reader;
+    VtkErrors errors(reader);
+    // Two triangles announced, one given: read without an error.
+    reader->SetFileName(Write("truncated.stl", BinaryStl({ 0, 0, 0, 1, 0, 0, 0, 1, 0 }, 2)).c_str());
+    reader->Update();
+    CHECK(errors.Count == 0 && reader->GetOutput()->GetNumberOfPoints() == 3);
+  }
+  {
+    vtkNew<vtkSTLReader> reader;
+    VtkErrors errors(reader);
+    // "1.2.3 0" is read as (1.2, 0.3) in float, without an error.
+    reader->SetFileName(Write("dots.stl", DotsStl).c_str());
+    reader->Update();
+    vtkPolyData* out = reader->GetOutput();
+    CHECK(errors.Count == 0 && out->GetNumberOfPoints() == 3);
+    if (out->GetNumberOfPoints() == 3)
+    {
+      CHECK(out->GetPoint(2)[1] == static_cast<double>(1.2f) && out->GetPoint(2)[2] == static_cast<double>(0.3f));
+    }
+  }
+}
+
 void VtkObj()
 {
   vtkNew<vtkOBJReader> reader;
@@ -319,8 +398,10 @@ int main(int argc, char* argv[])
   CgalOff();
   CgalObj();
   CgalPly();
+  CgalStl();
   VtkObj();
   VtkPly();
+  VtkStl();
   VtkXyzPts();
   VtkDelimitedText();
   return check::Finish("TestLibraryReaderDefects");

@@ -39,6 +39,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -407,6 +408,103 @@ void TestWhatLibraryReadersMisread()
                  "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
                  "property float z\nend_header\n0.1 0.2 0.3\n"),
     { { 0.1, 0.2, 0.3 } });
+}
+
+// Little-endian bytes of a float and of a 32-bit count (binary STL).
+std::string LittleEndian(float value)
+{
+  std::uint32_t bits;
+  std::memcpy(&bits, &value, 4);
+  std::string bytes(4, '\0');
+  for (int k = 0; k < 4; ++k)
+  {
+    bytes[k] = static_cast<char>((bits >> (8 * k)) & 0xff);
+  }
+  return bytes;
+}
+
+std::string LittleEndianCount(std::uint32_t n)
+{
+  std::string bytes(4, '\0');
+  for (int k = 0; k < 4; ++k)
+  {
+    bytes[k] = static_cast<char>((n >> (8 * k)) & 0xff);
+  }
+  return bytes;
+}
+
+// A binary STL of `triangles` (9 coordinates each) announcing `announced` of
+// them, its header starting with "solid" as many exporters write it.
+std::string BinaryStl(const std::vector<std::array<float, 9>>& triangles, std::uint32_t announced)
+{
+  std::string header = "solid written by a binary exporter";
+  header.resize(80, ' ');
+  std::string body = header + LittleEndianCount(announced);
+  for (const auto& t : triangles)
+  {
+    body += LittleEndian(0) + LittleEndian(0) + LittleEndian(1);
+    for (const float c : t)
+    {
+      body += LittleEndian(c);
+    }
+    body += std::string(2, '\0');
+  }
+  return body;
+}
+
+std::string AsciiFacet(const char* a, const char* b, const char* c)
+{
+  return std::string(" facet normal 0 0 1\n  outer loop\n   vertex ") + a + "\n   vertex " + b +
+    "\n   vertex " + c + "\n  endloop\n endfacet\n";
+}
+
+// STL (binary and ASCII) and CGAL's points-with-normals (.pwn). An STL file
+// repeats a vertex in every triangle around it: each comes once, in the order
+// of its first appearance. vtkSTLReader reads ASCII coordinates as floats,
+// "1.2.3" as (1.2, 0.3) and a binary file announcing more triangles than it
+// holds; CGAL's read_STL also misreads "1.2.3" and loses a vertex beside a NaN
+// (TestLibraryReaderDefects).
+void TestStlAndPwn()
+{
+  // Two triangles sharing an edge; 0.1 stays the double 0.1, and -0 is 0.
+  const Points square = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0.1 }, { 1, 1, 0 } };
+  ExpectPoints(Write("square.stl",
+                 "solid square\n" + AsciiFacet("0 0 0", "1 0 0", "0 1 0.1") +
+                   AsciiFacet("1 0 0", "1 1 0", "0 1 0.1") + "endsolid square\n"),
+    square);
+  ExpectPoints(Write("two_solids.stl",
+                 "SOLID a\n" + AsciiFacet("0 0 0", "1 0 0", "0 1 0.1") + "ENDSOLID a\n\n# b\nsolid b\n" +
+                   AsciiFacet("-0 0 0", "1 1 0", "0 1 0.1") + "endsolid\n"),
+    square);
+  const std::array<float, 9> first = { 0, 0, 0, 1, 0, 0, 0, 1, 0.5f };
+  const std::array<float, 9> second = { 1, 0, 0, 1, 1, 0, 0, 1, 0.5f };
+  ExpectPoints(Write("square_binary.stl", BinaryStl({ first, second }, 2)),
+    { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0.5 }, { 1, 1, 0 } });
+  ExpectError(Write("no_triangles.stl", BinaryStl({}, 0)), 0, "no points found");
+  ExpectError(Write("truncated_binary.stl", BinaryStl({ first }, 2)), 0,
+    "binary STL: 2 triangles announced take 184 bytes, the file has 134 (truncated");
+  ExpectError(Write("nan_binary.stl",
+                BinaryStl({ { 0, 0, 0, 1, 0, 0, 0, std::nanf(""), 0 } }, 1)),
+    0, "triangle 1, vertex 3: non-finite y coordinate");
+  ExpectError(Write("dots.stl", "solid d\n" + AsciiFacet("0 0 0", "1 0 0", "0 1.2.3 0") + "endsolid\n"),
+    6, "cannot parse '1.2.3' as a number (y coordinate)");
+  ExpectError(Write("typo.stl",
+                "solid t\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n   vertx 1 0 0\n"),
+    5, "expected 'vertex' or 'endloop', found 'vertx 1 0 0'");
+  ExpectError(Write("short_vertex.stl", "solid s\n facet normal 0 0 1\n outer loop\n vertex 1 2\n"),
+    4, "expected 3 coordinates after 'vertex', found 2");
+  ExpectError(Write("quad.stl",
+                "solid q\n facet normal 0 0 1\n outer loop\n vertex 0 0 0\n vertex 1 0 0\n"
+                "vertex 1 1 0\n vertex 0 1 0\n endloop\n endfacet\nendsolid\n"),
+    8, "a facet with 4 vertices (STL facets are triangles)");
+  ExpectError(Write("unended.stl", "solid u\n" + AsciiFacet("0 0 0", "1 0 0", "0 1 0")), 8,
+    "file ends inside a solid (no 'endsolid'): truncated");
+  ExpectError(Write("trailing.stl", "solid u\n" + AsciiFacet("0 0 0", "1 0 0", "0 1 0") + "endsolid\nvertex 1 2 3\n"),
+    10, "expected 'solid' (or the end of the file after 'endsolid')");
+  ExpectError(Write("not.stl", "0 0 0\n"), 0, "not an STL file");
+
+  // .pwn: x y z nx ny nz per line, read as .xyz.
+  ExpectPoints(Write("normals.pwn", "1 2 3 0 0 1\n4 5 6 0 1 0\n"), { { 1, 2, 3 }, { 4, 5, 6 } });
 }
 
 vtkSmartPointer<vtkPolyData> Cloud(const Points& points, const char* arrayName, double first)
@@ -1006,6 +1104,7 @@ int main(int argc, char* argv[])
   TestTextFormats();
   TestBadInput();
   TestWhatLibraryReadersMisread();
+  TestStlAndPwn();
   TestFieldBlocks();
   TestVtkWrittenFiles();
   TestPointDataKept();
