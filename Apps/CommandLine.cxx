@@ -18,8 +18,8 @@ namespace
 
 const char* const InputHelp =
   "INPUT: .xyz .txt .pts .pwn (x y z per line, extra columns ignored), .csv,\n"
-  "       .off, .ply, .obj, .stl, legacy .vtk, VTK XML (.vtp .vtu .vts .vtr .vti\n"
-  "       .vtm ...): the points are used.";
+  "       .off, .ply, .obj, .stl, .las, legacy .vtk, VTK XML (.vtp .vtu .vts .vtr\n"
+  "       .vti .vtm ...): the points are used.";
 
 const char* const ExitHelp =
   "Exit status: 0 success, 1 bad input or failed computation, 2 usage error,\n"

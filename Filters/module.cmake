@@ -20,6 +20,7 @@ vtk_module_add_module(FlowRecon::Filters
     ${_flowrecon_filters_dir}/Conversion/FlowComplexToVTK.h
     ${_flowrecon_filters_dir}/FlowReconNames.h
     ${_flowrecon_filters_dir}/IO/IsolatedRead.h
+    ${_flowrecon_filters_dir}/IO/LasPoints.h
     ${_flowrecon_filters_dir}/IO/PackedPoints.h
     ${_flowrecon_filters_dir}/Conversion/PersistenceDiagramConversion.h
     ${_flowrecon_filters_dir}/IO/PlyPoints.h
@@ -41,6 +42,7 @@ vtk_module_add_module(FlowRecon::Filters
     ${_flowrecon_filters_dir}/Conversion/FlowComplexFromVTK.cxx
     ${_flowrecon_filters_dir}/Conversion/FlowComplexToVTK.cxx
     ${_flowrecon_filters_dir}/IO/IsolatedRead.cxx
+    ${_flowrecon_filters_dir}/IO/LasPoints.cxx
     ${_flowrecon_filters_dir}/IO/PackedPoints.cxx
     ${_flowrecon_filters_dir}/Conversion/PersistenceDiagramConversion.cxx
     ${_flowrecon_filters_dir}/IO/PlyPoints.cxx

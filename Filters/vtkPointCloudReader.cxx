@@ -8,6 +8,7 @@
 #include "PipelinePorts.h"
 #include "PlyPoints.h"
 #include "PointCloudParsing.h"
+#include "LasPoints.h"
 #include "PointCloudTextFormats.h"
 #include "StlPoints.h"
 #include "VtkFilePoints.h"
@@ -60,6 +61,8 @@ enum class Format
   Obj,
   Ply,
   Stl,
+  Las,
+  Laz,
   LegacyVtk,
   XmlVtk
 };
@@ -69,7 +72,8 @@ Format FormatOf(const std::string& extension)
   static const std::pair<const char*, Format> formats[] = { { ".xyz", Format::Xyz },
     { ".txt", Format::Xyz }, { ".pwn", Format::Xyz }, { ".pts", Format::Pts },
     { ".csv", Format::Csv }, { ".off", Format::Off }, { ".ply", Format::Ply },
-    { ".obj", Format::Obj }, { ".stl", Format::Stl },
+    { ".obj", Format::Obj }, { ".stl", Format::Stl }, { ".las", Format::Las },
+    { ".laz", Format::Laz },
     { ".vtk", Format::LegacyVtk }, { ".vtp", Format::XmlVtk }, { ".vtu", Format::XmlVtk },
     { ".vts", Format::XmlVtk }, { ".vtr", Format::XmlVtk }, { ".vti", Format::XmlVtk },
     { ".vtm", Format::XmlVtk }, { ".vthb", Format::XmlVtk }, { ".pvtp", Format::XmlVtk },
@@ -86,7 +90,7 @@ Format FormatOf(const std::string& extension)
 }
 
 const char* const SupportedExtensions =
-  ".xyz .txt .pwn .pts .csv .off .ply .obj .stl .vtk .vtp .vtu .vts .vtr .vti .vtm .vthb .pvtp .pvtu "
+  ".xyz .txt .pwn .pts .csv .off .ply .obj .stl .las .vtk .vtp .vtu .vts .vtr .vti .vtm .vthb .pvtp .pvtu "
   ".pvts .pvtr .pvti";
 
 void ReadCloud(const std::string& file, std::vector<double>& xyz, vtkPointData* pointData)
@@ -140,6 +144,13 @@ void ReadCloud(const std::string& file, std::vector<double>& xyz, vtkPointData* 
     case Format::Stl:
       ReadStl(file, ReadWholeFile(file), xyz);
       break;
+    case Format::Las:
+      ReadLas(file, ReadWholeFile(file), xyz);
+      break;
+    case Format::Laz:
+      Fail(file, 0,
+        "compressed LAS (LAZ) is not supported: decompress it to .las first (laszip, "
+        "pdal translate)");
     case Format::LegacyVtk:
       ReadLegacyVtk(file, xyz, pointData);
       break;
@@ -173,7 +184,8 @@ vtkPointCloudReader::~vtkPointCloudReader()
 bool vtkPointCloudReader::CanReadFile(const char* fileName)
 {
   using namespace flowrecon::reader;
-  return fileName && FormatOf(Extension(fileName)) != Format::Unknown;
+  const Format format = fileName ? FormatOf(Extension(fileName)) : Format::Unknown;
+  return format != Format::Unknown && format != Format::Laz;
 }
 
 //------------------------------------------------------------------------------

@@ -15,6 +15,9 @@
  * - `.obj`: the `v x y z` lines; everything else is ignored.
  * - `.stl` (binary or ASCII): the distinct vertices of the triangles, in the
  *   order of their first appearance.
+ * - `.las` (ASPRS LAS 1.0-1.4, point formats 0-10): each record's integer
+ *   coordinates times the header's scale plus its offset. Compressed `.laz`
+ *   files are refused with one line.
  * - `.ply` (ASCII or binary): the vertex element; its scalar properties other
  *   than x, y, z become point data arrays (nx/ny/nz as `Normals`,
  *   red/green/blue[/alpha] as `RGB`/`RGBA`).

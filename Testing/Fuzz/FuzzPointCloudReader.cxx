@@ -1,7 +1,7 @@
 // libFuzzer target: vtkPointCloudReader on arbitrary bytes.
 //
-// Input layout: byte 0 picks the extension (byte % 8 of .xyz .csv .ply .off
-// .obj .vtk .vtp .stl: 0-6 pick what they picked before .stl), the remaining
+// Input layout: byte 0 picks the extension (byte % 9 of .xyz .csv .ply .off
+// .obj .vtk .vtp .stl .las: 0-6 pick what they picked before .stl), the remaining
 // bytes are the file, written to a temporary directory of this process and
 // read. Any outcome is fine (points, or a failed request with one line in
 // GetErrorMessage()) except a crash, a sanitizer report, a hang (-timeout) or a
@@ -31,7 +31,7 @@ namespace
 {
 std::string Directory;
 
-const char* const Extensions[] = { ".xyz", ".csv", ".ply", ".off", ".obj", ".vtk", ".vtp", ".stl" };
+const char* const Extensions[] = { ".xyz", ".csv", ".ply", ".off", ".obj", ".vtk", ".vtp", ".stl", ".las" };
 
 void RemoveDirectory()
 {
@@ -68,7 +68,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   {
     return 0;
   }
-  const std::string path = Directory + "/input" + Extensions[data[0] % 8];
+  const std::string path = Directory + "/input" + Extensions[data[0] % 9];
   {
     std::ofstream out(path, std::ios::binary | std::ios::trunc);
     out.write(reinterpret_cast<const char*>(data + 1), static_cast<std::streamsize>(size - 1));

@@ -3,9 +3,10 @@
 Usage: /usr/bin/python3 Testing/Fuzz/make_corpus.py [FUZZ_STORED_COMPLEX]
 
 point_cloud_reader: byte 0 picks the extension (.xyz .csv .ply .off .obj .vtk
-.vtp .stl = 0..7), the rest is the file: the clouds of Testing/Data and small
-clouds in every format (ASCII and binary PLY and STL, legacy VTK ASCII and
-binary, VTK XML ASCII, raw appended, LZ4 and zlib compressed).
+.vtp .stl .las = 0..8), the rest is the file: the clouds of Testing/Data and
+small clouds in every format (ASCII and binary PLY and STL, LAS 1.2 and 1.4,
+legacy VTK ASCII and binary, VTK XML ASCII, raw appended, LZ4 and zlib
+compressed).
 core: byte 0 = flags (coordinate mode | eager << 2 | t_p choice << 3), byte 1 =
 scale, then coordinates (see FuzzCore.cxx).
 stored_complex: written by the fuzz_stored_complex binary itself
@@ -22,7 +23,7 @@ import tempfile
 HERE = os.path.dirname(os.path.abspath(__file__))
 CORPUS = os.path.join(HERE, "corpus")
 DATA = os.path.join(HERE, "..", "Data")
-EXT = [".xyz", ".csv", ".ply", ".off", ".obj", ".vtk", ".vtp", ".stl"]
+EXT = [".xyz", ".csv", ".ply", ".off", ".obj", ".vtk", ".vtp", ".stl", ".las"]
 
 
 def put(target, name, data):
@@ -76,6 +77,15 @@ def reader_corpus():
         "  endloop\n endfacet\n" for t in tris) + "endsolid cloud\n").encode())
     reader_seed("binary.stl", ".stl", b"solid binary".ljust(80) + struct.pack("<I", len(tris)) + b"".join(
         struct.pack("<12fH", 0, 0, 1, *[c for p in t for c in p], 0) for t in tris))
+    for name, minor, fmt, length in (("v12.las", 2, 1, 28), ("v14.las", 4, 6, 30)):
+        size = 375 if minor == 4 else 227
+        head = bytearray(b"LASF" + bytes(20) + bytes([1, minor]) + bytes(size - 26))
+        struct.pack_into("<HIIBHI", head, 94, size, size, 0, fmt, length, 0 if minor == 4 else len(pts))
+        struct.pack_into("<6d", head, 131, 0.001, 0.001, 0.001, 10.0, 20.0, 30.0)
+        if minor == 4:
+            struct.pack_into("<Q", head, 247, len(pts))
+        body = b"".join(struct.pack("<3i", *(int(c * 1000) for c in p)) + bytes(length - 12) for p in pts)
+        reader_seed(name, ".las", bytes(head) + body)
     try:
         from vtkmodules.vtkCommonCore import vtkPoints, vtkDoubleArray
         from vtkmodules.vtkCommonDataModel import vtkPolyData, vtkCellArray

@@ -507,6 +507,121 @@ void TestStlAndPwn()
   ExpectPoints(Write("normals.pwn", "1 2 3 0 0 1\n4 5 6 0 1 0\n"), { { 1, 2, 3 }, { 4, 5, 6 } });
 }
 
+// Little-endian bytes of an integer of `size` bytes, and of a double.
+std::string LittleEndianBytes(std::uint64_t value, int size)
+{
+  std::string bytes(static_cast<std::size_t>(size), '\0');
+  for (int k = 0; k < size; ++k)
+  {
+    bytes[k] = static_cast<char>((value >> (8 * k)) & 0xff);
+  }
+  return bytes;
+}
+
+std::string LittleEndianDouble(double value)
+{
+  std::uint64_t bits;
+  std::memcpy(&bits, &value, 8);
+  return LittleEndianBytes(bits, 8);
+}
+
+// A LAS 1.`minor` file (header of 227 bytes, or 375 for 1.4) of these integer
+// coordinates in point `format`, records of `length` bytes (filled with 0x55
+// after the coordinates), scaled by 0.01 and offset by (1000, 2000, -5); with
+// `legacy` and `count64` the header's two point counts.
+struct LasSpec
+{
+  int Minor = 2;
+  int Format = 1;
+  int Length = 28;
+  std::vector<std::array<std::int32_t, 3>> Points;
+  std::uint64_t Legacy = ~std::uint64_t(0); // the number of points
+  std::uint64_t Count64 = ~std::uint64_t(0);
+  double Scale = 0.01;
+};
+
+std::string LasFile(const LasSpec& spec)
+{
+  const std::size_t header = spec.Minor >= 4 ? 375 : 227;
+  std::string h = "LASF" + std::string(20, '\0');
+  h += static_cast<char>(1);
+  h += static_cast<char>(spec.Minor);
+  h += std::string(94 - h.size(), '\0');
+  const std::uint64_t n = spec.Points.size();
+  h += LittleEndianBytes(header, 2);
+  h += LittleEndianBytes(header, 4); // points right after the header, no VLR
+  h += LittleEndianBytes(0, 4);
+  h += static_cast<char>(spec.Format);
+  h += LittleEndianBytes(static_cast<std::uint64_t>(spec.Length), 2);
+  h += LittleEndianBytes(spec.Legacy == ~std::uint64_t(0) ? n : spec.Legacy, 4);
+  h += std::string(20, '\0');
+  for (const double s : { spec.Scale, 0.01, 0.01 })
+  {
+    h += LittleEndianDouble(s);
+  }
+  for (const double o : { 1000.0, 2000.0, -5.0 })
+  {
+    h += LittleEndianDouble(o);
+  }
+  h += std::string(header - h.size(), '\0');
+  if (header == 375)
+  {
+    h.replace(247, 8, LittleEndianBytes(spec.Count64 == ~std::uint64_t(0) ? n : spec.Count64, 8));
+  }
+  for (const auto& p : spec.Points)
+  {
+    for (const std::int32_t c : p)
+    {
+      h += LittleEndianBytes(static_cast<std::uint32_t>(c), 4);
+    }
+    h += std::string(static_cast<std::size_t>(spec.Length - 12), '\x55');
+  }
+  return h;
+}
+
+// ASPRS LAS, the format of laser scans: integer coordinates times the header's
+// scale plus its offset, from the first 12 bytes of every record.
+void TestLas()
+{
+  LasSpec spec;
+  spec.Points = { { 0, 0, 0 }, { 150, -250, 1000 }, { -2147483647 - 1, 2147483647, 7 } };
+  const Points expected = { { 1000, 2000, -5 }, { 1000 + 150 * 0.01, 2000 - 250 * 0.01, -5 + 1000 * 0.01 },
+    { 1000 + -2147483648.0 * 0.01, 2000 + 2147483647.0 * 0.01, -5 + 7 * 0.01 } };
+  ExpectPoints(Write("scan.las", LasFile(spec)), expected);
+  // LAS 1.4, point format 6 (30-byte records and more), the legacy count 0.
+  LasSpec modern = spec;
+  modern.Minor = 4;
+  modern.Format = 6;
+  modern.Length = 34;
+  modern.Legacy = 0;
+  ExpectPoints(Write("modern.las", LasFile(modern)), expected);
+  LasSpec twoCounts = modern;
+  twoCounts.Legacy = 2;
+  ExpectError(Write("two_counts.las", LasFile(twoCounts)), 0, "two point counts, 2 and 3");
+  LasSpec many = spec;
+  many.Legacy = 4000000000u;
+  ExpectError(Write("many.las", LasFile(many)), 0,
+    "4000000000 points of 28 bytes from byte 227 need more than the file's 311 bytes (truncated)");
+  ExpectError(Write("cut.las", LasFile(spec).substr(0, 300)), 0, "3 points of 28 bytes");
+  ExpectError(Write("header.las", LasFile(spec).substr(0, 200)), 0,
+    "the LAS header needs 227 bytes, the file has 200 (truncated)");
+  LasSpec compressed = spec;
+  compressed.Format = 0x81;
+  ExpectError(Write("compressed.las", LasFile(compressed)), 0, "compressed LAS (LAZ) is not supported");
+  ExpectError(Write("scan.laz", LasFile(spec)), 0, "compressed LAS (LAZ) is not supported");
+  LasSpec shortRecords = spec;
+  shortRecords.Length = 20;
+  ExpectError(Write("short.las", LasFile(shortRecords)), 0,
+    "LAS point format 1 needs records of at least 28 bytes, the header says 20");
+  LasSpec flat = spec;
+  flat.Scale = 0;
+  ExpectError(Write("flat.las", LasFile(flat)), 0, "the LAS header's x scale");
+  LasSpec huge = spec;
+  huge.Scale = 1e305;
+  ExpectError(Write("huge.las", LasFile(huge)), 0, "point 3: x coordinate out of the range of doubles");
+  ExpectError(Write("not.las", "LASX" + LasFile(spec).substr(4)), 0, "not a LAS file");
+}
+
 vtkSmartPointer<vtkPolyData> Cloud(const Points& points, const char* arrayName, double first)
 {
   auto cloud = vtkSmartPointer<vtkPolyData>::New();
@@ -1105,6 +1220,7 @@ int main(int argc, char* argv[])
   TestBadInput();
   TestWhatLibraryReadersMisread();
   TestStlAndPwn();
+  TestLas();
   TestFieldBlocks();
   TestVtkWrittenFiles();
   TestPointDataKept();
