@@ -48,6 +48,11 @@ flowrecon_add_cli_test(CommaLineOff EXIT 1 STDERR_LINES 1
 flowrecon_add_cli_test(CommaLineObj EXIT 1 STDERR_LINES 1
   STDERR "comma_line\\.obj: no points found" ARGS info "${_d}/comma_line.obj")
 
+# A compressed LAS scan: one line saying what to do, not "unknown extension".
+flowrecon_add_cli_test(CompressedLas EXIT 1 STDERR_LINES 1
+  STDERR "compressed_scan\\.laz: compressed LAS \\(LAZ\\) is not supported: decompress it to \\.las first"
+  ARGS info "${_d}/compressed_scan.laz")
+
 # Spacing some 1e-200 of the extent (found by fuzzing): the double constructions of
 # critical points underflow; one line instead of a silently wrong complex (builds
 # with CGAL's assertions on, as the sanitizer job's, stop at CGAL's check first).
