@@ -55,7 +55,6 @@ enum class Format
 {
   Unknown,
   Xyz,
-  Pts,
   Csv,
   Off,
   Obj,
@@ -70,7 +69,7 @@ enum class Format
 Format FormatOf(const std::string& extension)
 {
   static const std::pair<const char*, Format> formats[] = { { ".xyz", Format::Xyz },
-    { ".txt", Format::Xyz }, { ".pwn", Format::Xyz }, { ".pts", Format::Pts },
+    { ".txt", Format::Xyz }, { ".pwn", Format::Xyz }, { ".pts", Format::Xyz },
     { ".csv", Format::Csv }, { ".off", Format::Off }, { ".ply", Format::Ply },
     { ".obj", Format::Obj }, { ".stl", Format::Stl }, { ".las", Format::Las },
     { ".laz", Format::Laz },
@@ -126,8 +125,7 @@ void ReadCloud(const std::string& file, std::vector<double>& xyz, vtkPointData* 
   switch (format)
   {
     case Format::Xyz:
-    case Format::Pts:
-      ReadXyz(file, ReadWholeFile(file), format == Format::Pts, xyz);
+      ReadXyz(file, ReadWholeFile(file), xyz);
       break;
     case Format::Csv:
       ReadCsv(file, ReadWholeFile(file), xyz);

@@ -5,8 +5,9 @@
  * The format is chosen by the file extension (case-insensitive):
  * - `.xyz`, `.txt`, `.pts`, `.pwn` (CGAL's points with normals): one point per
  *   line, `x y z` separated by blanks or commas; further columns are ignored.
- *   Blank lines and lines starting with `#` or `//` are skipped. A `.pts` file may start with a line holding only the
- *   point count, which is skipped.
+ *   Blank lines and lines starting with `#` or `//` are skipped. The first line
+ *   may hold only the point count (as `.pts` files and CGAL's XYZ format allow),
+ *   which is skipped.
  * - `.csv`: comma (or semicolon, or tab) separated, with an optional header row.
  *   Columns named `x`, `y`, `z` (or `Points:0..2`, `coordinates:0..2`, any
  *   case) are used when the header names all three; otherwise the first three

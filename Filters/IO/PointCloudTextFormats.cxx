@@ -90,8 +90,7 @@ int AxisOfHeader(std::string_view name)
 
 } // namespace
 
-void ReadXyz(
-  const std::string& file, std::string_view text, bool countLine, std::vector<double>& xyz)
+void ReadXyz(const std::string& file, std::string_view text, std::vector<double>& xyz)
 {
   Lines lines(file, text);
   std::string_view line;
@@ -100,10 +99,10 @@ void ReadXyz(
   while (lines.NextData(line))
   {
     SplitLoose(line, fields, 3);
-    if (first && countLine && fields.size() == 1 &&
+    if (first && fields.size() == 1 &&
       fields[0].find_first_not_of("0123456789") == std::string_view::npos)
     {
-      first = false; // the point count of a .pts file
+      first = false; // the point count
       continue;
     }
     first = false;

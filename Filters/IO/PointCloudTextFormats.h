@@ -20,9 +20,9 @@ namespace reader
 {
 
 /// One point per line, `x y z` separated by blanks or commas, further columns
-/// ignored; with `countLine` (.pts) a first line holding only a count is skipped.
-void ReadXyz(
-  const std::string& file, std::string_view text, bool countLine, std::vector<double>& xyz);
+/// ignored; a first line holding only the point count (.pts files, and CGAL's
+/// XYZ format) is skipped.
+void ReadXyz(const std::string& file, std::string_view text, std::vector<double>& xyz);
 
 /// Delimited columns (`;`, tab, `,` or blanks) with an optional header naming x, y, z.
 void ReadCsv(const std::string& file, std::string_view text, std::vector<double>& xyz);

@@ -286,8 +286,14 @@ void TestBadInput()
   ExpectError(Write("comments.xyz", "# only\n\n// comments\n"), 0, "no points found");
   ExpectError(Write("word.xyz", "1 2 3\n4 5 6\n7 eight 9\n"), 3, "cannot parse 'eight'");
   ExpectError(Write("two.xyz", "1 2 3\n\n4 5\n"), 3, "expected 3 coordinates (x y z), found 2");
-  ExpectError(Write("count.xyz", "2\n1 2 3\n"), 1, "found 1"); // a count line only in .pts
+  // A first line holding only the point count: CGAL's XYZ format allows it, as
+  // .pts files have it; once only, and as a whole non-negative integer.
+  ExpectPoints(Write("count.xyz", "2\n1 2 3 0 0 1\n4 5 6 0 0 1\n"), { { 1, 2, 3 }, { 4, 5, 6 } });
+  ExpectPoints(Write("count.pwn", "# normals\n1\n1 2 3 0 0 1\n"), { { 1, 2, 3 } });
   ExpectError(Write("count.pts", "2\n3\n"), 2, "found 1");
+  ExpectError(Write("counts.xyz", "2\n1 2 3\n2\n"), 3, "found 1");
+  ExpectError(Write("negative_count.xyz", "-2\n1 2 3\n"), 1, "found 1");
+  ExpectError(Write("real_count.txt", "2.0\n1 2 3\n"), 1, "found 1");
   ExpectError(Write("nan.xyz", "1 2 3\nnan 1 2\n"), 2, "non-finite x coordinate 'nan'");
   ExpectError(Write("inf.txt", "1 2 3\n4 5 6\n1 -inf 2\n"), 3, "non-finite y coordinate");
   ExpectError(Write("overflow.xyz", "1e999 0 0\n"), 1, "out of range");
