@@ -5,6 +5,7 @@
 
 #include "PointCloudParsing.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -90,13 +91,13 @@ void ReadLas(const std::string& file, std::string_view bytes, std::vector<double
   }
   std::uint64_t count = LittleEndian(bytes, LegacyCount, 4);
   // LAS 1.4 keeps a 64-bit count; the legacy one is 0 beyond 2^32 points or
-  // for the formats 6-10.
+  // for the formats 6-10 (and some writers leave the new one 0).
   if (minor >= 4 && headerSize >= Header14Bytes && bytes.size() >= Header14Bytes)
   {
     const std::uint64_t count64 = LittleEndian(bytes, Count64, 8);
-    if (count == 0 || count == count64)
+    if (count == 0 || count64 == 0 || count == count64)
     {
-      count = count64;
+      count = std::max(count, count64);
     }
     else
     {

@@ -601,6 +601,11 @@ void TestLas()
   modern.Length = 34;
   modern.Legacy = 0;
   ExpectPoints(Write("modern.las", LasFile(modern)), expected);
+  LasSpec legacyOnly = modern;
+  legacyOnly.Format = 1;
+  legacyOnly.Legacy = 3;
+  legacyOnly.Count64 = 0;
+  ExpectPoints(Write("legacy_only.las", LasFile(legacyOnly)), expected);
   LasSpec twoCounts = modern;
   twoCounts.Legacy = 2;
   ExpectError(Write("two_counts.las", LasFile(twoCounts)), 0, "two point counts, 2 and 3");
