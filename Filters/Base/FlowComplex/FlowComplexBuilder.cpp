@@ -157,16 +157,11 @@ void Builder::LowerPendingBounds()
 void Builder::ScaleBack()
 {
   const int e = this->ScaleExponent;
-  if (e == 0)
+  if (e == 0 && this->In.Translation == Point3{ { 0, 0, 0 } })
   {
     return;
   }
-  auto back = [e](Point3& p) {
-    for (double& x : p)
-    {
-      x = std::ldexp(x, e);
-    }
-  };
+  auto back = [this](Point3& p) { p = this->In.BackScaled(p); };
   FlowComplex& fc = this->FC;
   for (Node& n : fc.Nodes)
   {

@@ -129,6 +129,38 @@ PreparedInput PrepareForTriangulation(const std::vector<Point3>& points)
 {
   PreparedInput in = PrepareInput(points);
   SpatialOrder(in);
+  // A cloud far from the origin next to its extent (a georeferenced scan: 10^6
+  // m away, 100 m wide) leaves the floating-point filters of the predicates
+  // little precision, and nearly every test of a degenerate sample falls back
+  // to exact arithmetic (the flow lines of a 2 * 10^4-point quantized terrain
+  // took 30 times longer). An axis whose coordinates all lie in [lo, 2 lo]
+  // (or [2 hi, hi] below 0) is moved by lo (hi), which is exact (Sterbenz):
+  // the triangulated cloud is the input's, translated.
+  Point3 lo{ { HUGE_VAL, HUGE_VAL, HUGE_VAL } }, hi{ { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL } };
+  for (const Point3& p : in.Unique)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      lo[k] = std::min(lo[k], p[k]);
+      hi[k] = std::max(hi[k], p[k]);
+    }
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    in.Translation[k] = lo[k] > 0 && hi[k] <= 2 * lo[k] ? lo[k]
+      : hi[k] < 0 && lo[k] >= 2 * hi[k]                  ? hi[k]
+                                                          : 0.0;
+  }
+  if (in.Translation != Point3{ { 0, 0, 0 } })
+  {
+    for (Point3& p : in.Unique)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        p[k] -= in.Translation[k];
+      }
+    }
+  }
   // The constructions square and multiply coordinates, which would overflow or
   // underflow for clouds measured in units near 1e+-60 and beyond: work at
   // magnitudes about 1 (outputs are scaled back by the caller).
@@ -141,7 +173,8 @@ PreparedInput PrepareForTriangulation(const std::vector<Point3>& points)
     }
   }
   in.ScaleExponent = largest > 0 ? std::ilogb(largest) : 0;
-  Point3 lo{ { HUGE_VAL, HUGE_VAL, HUGE_VAL } }, hi{ { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL } };
+  lo = { { HUGE_VAL, HUGE_VAL, HUGE_VAL } };
+  hi = { { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL } };
   for (Point3& p : in.Unique)
   {
     for (int k = 0; k < 3; ++k)

@@ -6,6 +6,7 @@
 
 #include "FlowComplex.h"
 
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -19,18 +20,32 @@ struct PreparedInput
   std::vector<Id> Representative; ///< per input point: the input id standing for it
   double Diagonal = 0;         ///< bounding-box diagonal (BuildFlowComplex rescales it with Unique)
   Point3 Centre{ { 0, 0, 0 } };
-  /// Unique and Diagonal are in units of 2^ScaleExponent (see PrepareForTriangulation).
+  /// Unique and Diagonal are in units of 2^ScaleExponent, Unique moved by
+  /// -Translation first (see PrepareForTriangulation): a point of the cloud is
+  /// ldexp(u, ScaleExponent) + Translation.
   int ScaleExponent = 0;
+  Point3 Translation{ { 0, 0, 0 } };
+
+  /// A point of the triangulation's frame in the cloud's.
+  Point3 BackScaled(Point3 p) const
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      p[k] = std::ldexp(p[k], this->ScaleExponent) + this->Translation[k];
+    }
+    return p;
+  }
 };
 
 /// Checks coordinates (finite), merges exact duplicates and requires at least 4
 /// distinct points. Throws InputError with a one-line message.
 PreparedInput PrepareInput(const std::vector<Point3>& points);
 
-/// PrepareInput, then the distinct points renumbered along a Hilbert curve and
-/// scaled by a power of two (exact) to magnitudes about 1: what every attempt of
-/// the builder triangulates, and what a later stage recomputes from the same
-/// samples (geometry on demand), so both must come from this one function.
+/// PrepareInput, then the distinct points renumbered along a Hilbert curve,
+/// moved next to the origin where that is exact, and scaled by a power of two
+/// (exact) to magnitudes about 1: what every attempt of the builder
+/// triangulates, and what a later stage recomputes from the same samples
+/// (geometry on demand), so both must come from this one function.
 PreparedInput PrepareForTriangulation(const std::vector<Point3>& points);
 
 /// The coordinates triangulated by attempt `attempt` (1: the points themselves;

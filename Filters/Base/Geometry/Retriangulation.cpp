@@ -156,11 +156,7 @@ bool Retriangulation::SameSimplex(const FlowComplex& fc, Id node, const Id* vert
 
 Point3 Retriangulation::BackScaled(Point3 p) const
 {
-  for (double& x : p)
-  {
-    x = std::ldexp(x, this->In.ScaleExponent);
-  }
-  return p;
+  return this->In.BackScaled(p);
 }
 
 } // namespace flowrecon
