@@ -11,14 +11,21 @@
 //   values and arcs, the same walks redone exactly, and its points (critical
 //   points, patches, flow lines) the other's moved by the offset. Without the
 //   move the far terrain's walks fall back to exact arithmetic thousands of
-//   times more (and its build took 30 times longer).
+//   times more (and its build took 30 times longer);
+// - from the triangulation kept for the later stages (Retriangulation, which
+//   prepares the samples again), the far terrain's compact reconstruction is
+//   the near one's, cell for cell.
 #include "Check.h"
+#include "CompactReconstruction.h"
 #include "FlowComplexBuilder.h"
 #include "InputPreparation.h"
+#include "Reconstruction.h"
+#include "Retriangulation.h"
 
 #include <cmath>
 #include <cstdint>
 #include <iostream>
+#include <memory>
 #include <random>
 #include <vector>
 
@@ -173,11 +180,50 @@ void TestSameComplex()
   CHECK(geometry);
 }
 
+/// The compact reconstruction at t_r 2.5 without simplification (as
+/// `reconstruct --tp 0 --tr 2.5` writes it), on the kept triangulation.
+CompactComplex Compact(const std::vector<Point3>& points)
+{
+  BuildOptions options;
+  options.StableManifolds = false;
+  options.UnstableManifolds = false;
+  std::unique_ptr<Retriangulation> re;
+  const FlowComplex fc = BuildFlowComplex(points, options, Progress(), &re);
+  const std::vector<bool> all(fc.Nodes.size(), true);
+  const std::vector<Id> init =
+    InitializationEdges(fc.Nodes, NearestNeighboursFromDiagram(fc.Nodes, fc.Arcs));
+  const ReconstructionResult run = Reconstruct(fc.Nodes, fc.Arcs, all, init, HUGE_VAL, Progress());
+  const std::vector<Id> carriers = CellCarriers(run, nullptr);
+  std::vector<Id> selected;
+  for (std::size_t i = 0; i < fc.Nodes.size(); ++i)
+  {
+    if (carriers[i] >= 0 && run.Contains(carriers[i], 2.5))
+    {
+      selected.push_back(static_cast<Id>(i));
+    }
+  }
+  return CompactReconstruction(*re, fc.Nodes, selected);
+}
+
+void TestSameCompactOutput()
+{
+  std::cout << "-- the compact reconstruction, far and near\n";
+  const std::vector<Point3> near = Terrain(3000, 9);
+  const CompactComplex a = Compact(near);
+  const CompactComplex b = Compact(Moved(near, { { 4194304, 8388608, 4194304 } }));
+  std::cout << "   " << a.Triangles.size() << " triangles, " << a.Tetrahedra.size()
+            << " tetrahedra; Betti " << a.Betti[0] << " " << a.Betti[1] << " " << a.Betti[2] << "\n";
+  CHECK(a.Triangles.size() > 1000);
+  CHECK(a.Triangles == b.Triangles && a.Tetrahedra == b.Tetrahedra && a.Edges == b.Edges &&
+    a.Vertices == b.Vertices && a.Betti == b.Betti);
+}
+
 } // namespace
 
 int main()
 {
   TestExactMove();
   TestSameComplex();
+  TestSameCompactOutput();
   return check::Finish("TestFarFromOrigin");
 }
