@@ -31,7 +31,11 @@ struct PreparedInput
   {
     for (int k = 0; k < 3; ++k)
     {
-      p[k] = std::ldexp(p[k], this->ScaleExponent) + this->Translation[k];
+      p[k] = std::ldexp(p[k], this->ScaleExponent);
+      if (this->Translation[k] != 0)
+      {
+        p[k] += this->Translation[k]; // not when 0: -0 + 0 would be +0
+      }
     }
     return p;
   }
