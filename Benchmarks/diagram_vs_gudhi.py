@@ -24,12 +24,12 @@ GUDHI needs about 10 GB at 10^6 points.
 import argparse
 import json
 import os
-import subprocess
 import sys
 import tempfile
-import time
 
 import numpy as np
+
+from process_measure import run_measured
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REL = 1e-9
@@ -52,17 +52,6 @@ for d in range(3):
 np.savez(sys.argv[2], **out)
 print(json.dumps({"complex": t1 - t0, "persistence": t2 - t1, "simplices": st.num_simplices()}))
 """
-
-
-def run_measured(cmd, stdout_path):
-    """Runs cmd; returns (exit code, wall seconds, CPU seconds, peak RSS in MB)."""
-    with open(stdout_path, "w") as out:
-        t0 = time.perf_counter()
-        p = subprocess.Popen(cmd, stdout=out, stderr=subprocess.STDOUT)
-        _, status, usage = os.wait4(p.pid, 0)
-        wall = time.perf_counter() - t0
-    p.returncode = os.waitstatus_to_exitcode(status)
-    return p.returncode, wall, usage.ru_utime + usage.ru_stime, usage.ru_maxrss / 1024.0
 
 
 def read_flowrecon_csv(path):

@@ -23,12 +23,12 @@ import argparse
 import os
 import re
 import struct
-import subprocess
 import sys
 import tempfile
-import time
 
 import numpy as np
+
+from process_measure import run_measured
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 OFFSET = (500000.0, 4000000.0, 100.0)
@@ -54,16 +54,6 @@ def terrain(n, seed):
     y = rng.uniform(0, side, n)
     z = 5 * np.sin(x / 10) * np.cos(y / 13) + 2 * np.sin(x / 3 + y / 5)
     return np.round(np.stack([x, y, z], axis=1) / STEP).astype(np.int64)
-
-
-def run_measured(cmd, log_path):
-    """Runs cmd; returns (exit code, wall seconds, CPU seconds, peak RSS in MB)."""
-    with open(log_path, "w") as out:
-        t0 = time.perf_counter()
-        p = subprocess.Popen(cmd, stdout=out, stderr=subprocess.STDOUT)
-        _, status, usage = os.wait4(p.pid, 0)
-        wall = time.perf_counter() - t0
-    return os.waitstatus_to_exitcode(status), wall, usage.ru_utime + usage.ru_stime, usage.ru_maxrss / 1024.0
 
 
 def betti(log_path):

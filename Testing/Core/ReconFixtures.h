@@ -1,10 +1,13 @@
-// Fixtures shared by TestSimplification and TestReconstruction: hand-made Hasse
-// diagrams, quasi-uniform clouds, and small helpers over nodes and arcs.
+// Fixtures shared by the core's tests of simplification, reconstruction and
+// compact output: hand-made Hasse diagrams, quasi-uniform clouds, and small
+// helpers over nodes and arcs.
 #ifndef flowrecon_ReconFixtures_h
 #define flowrecon_ReconFixtures_h
 
 #include "Clouds.h"
 #include "FlowComplex.h"
+#include "Progress.h"
+#include "Reconstruction.h"
 
 #include <algorithm>
 #include <array>
@@ -157,6 +160,26 @@ inline std::vector<Point3> GridTorus(int nu, std::uint64_t seed)
     }
   }
   return c;
+}
+
+/// The nodes of the reconstruction at t_r (no simplification): what
+/// `reconstruct --tp 0 --tr T` writes.
+inline std::vector<Id> ReconstructionNodes(const FlowComplex& fc, double tr)
+{
+  const std::vector<bool> all(fc.Nodes.size(), true);
+  const std::vector<Id> init =
+    InitializationEdges(fc.Nodes, NearestNeighboursFromDiagram(fc.Nodes, fc.Arcs));
+  const ReconstructionResult run = Reconstruct(fc.Nodes, fc.Arcs, all, init, HUGE_VAL, Progress());
+  const std::vector<Id> carriers = CellCarriers(run, nullptr);
+  std::vector<Id> selected;
+  for (std::size_t i = 0; i < fc.Nodes.size(); ++i)
+  {
+    if (carriers[i] >= 0 && run.Contains(carriers[i], tr))
+    {
+      selected.push_back(static_cast<Id>(i));
+    }
+  }
+  return selected;
 }
 
 } // namespace fixtures

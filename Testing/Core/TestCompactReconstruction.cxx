@@ -50,25 +50,7 @@ Built Build(const std::vector<Point3>& points)
   return b;
 }
 
-/// The nodes of the reconstruction at t_r (no simplification): what
-/// `reconstruct --tp 0 --tr T` writes.
-std::vector<Id> ReconstructionNodes(const FlowComplex& fc, double tr)
-{
-  const std::vector<bool> all(fc.Nodes.size(), true);
-  const std::vector<Id> init =
-    InitializationEdges(fc.Nodes, NearestNeighboursFromDiagram(fc.Nodes, fc.Arcs));
-  const ReconstructionResult run = Reconstruct(fc.Nodes, fc.Arcs, all, init, HUGE_VAL, Progress());
-  const std::vector<Id> carriers = CellCarriers(run, nullptr);
-  std::vector<Id> selected;
-  for (std::size_t i = 0; i < fc.Nodes.size(); ++i)
-  {
-    if (carriers[i] >= 0 && run.Contains(carriers[i], tr))
-    {
-      selected.push_back(static_cast<Id>(i));
-    }
-  }
-  return selected;
-}
+using fixtures::ReconstructionNodes;
 
 /// Checks that the cells are a closed 2-manifold surface (triangles only, each
 /// edge in exactly two, the link of every vertex one cycle) of Euler

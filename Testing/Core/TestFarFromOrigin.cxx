@@ -19,7 +19,7 @@
 #include "CompactReconstruction.h"
 #include "FlowComplexBuilder.h"
 #include "InputPreparation.h"
-#include "Reconstruction.h"
+#include "ReconFixtures.h"
 #include "Retriangulation.h"
 
 #include <cmath>
@@ -189,19 +189,7 @@ CompactComplex Compact(const std::vector<Point3>& points)
   options.UnstableManifolds = false;
   std::unique_ptr<Retriangulation> re;
   const FlowComplex fc = BuildFlowComplex(points, options, Progress(), &re);
-  const std::vector<bool> all(fc.Nodes.size(), true);
-  const std::vector<Id> init =
-    InitializationEdges(fc.Nodes, NearestNeighboursFromDiagram(fc.Nodes, fc.Arcs));
-  const ReconstructionResult run = Reconstruct(fc.Nodes, fc.Arcs, all, init, HUGE_VAL, Progress());
-  const std::vector<Id> carriers = CellCarriers(run, nullptr);
-  std::vector<Id> selected;
-  for (std::size_t i = 0; i < fc.Nodes.size(); ++i)
-  {
-    if (carriers[i] >= 0 && run.Contains(carriers[i], 2.5))
-    {
-      selected.push_back(static_cast<Id>(i));
-    }
-  }
+  const std::vector<Id> selected = fixtures::ReconstructionNodes(fc, 2.5);
   return CompactReconstruction(*re, fc.Nodes, selected);
 }
 
