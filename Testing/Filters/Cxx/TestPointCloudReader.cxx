@@ -544,6 +544,7 @@ struct LasSpec
   std::uint64_t Legacy = ~std::uint64_t(0); // the number of points
   std::uint64_t Count64 = ~std::uint64_t(0);
   double Scale = 0.01;
+  std::size_t Records = 0; ///< bytes of variable-length records before the points
 };
 
 std::string LasFile(const LasSpec& spec)
@@ -555,8 +556,8 @@ std::string LasFile(const LasSpec& spec)
   h += std::string(94 - h.size(), '\0');
   const std::uint64_t n = spec.Points.size();
   h += LittleEndianBytes(header, 2);
-  h += LittleEndianBytes(header, 4); // points right after the header, no VLR
-  h += LittleEndianBytes(0, 4);
+  h += LittleEndianBytes(header + spec.Records, 4); // the points, after the records
+  h += LittleEndianBytes(spec.Records > 0 ? 1 : 0, 4);
   h += static_cast<char>(spec.Format);
   h += LittleEndianBytes(static_cast<std::uint64_t>(spec.Length), 2);
   h += LittleEndianBytes(spec.Legacy == ~std::uint64_t(0) ? n : spec.Legacy, 4);
@@ -574,6 +575,7 @@ std::string LasFile(const LasSpec& spec)
   {
     h.replace(247, 8, LittleEndianBytes(spec.Count64 == ~std::uint64_t(0) ? n : spec.Count64, 8));
   }
+  h += std::string(spec.Records, '\x7f'); // a georeferencing record, say
   for (const auto& p : spec.Points)
   {
     for (const std::int32_t c : p)
@@ -601,6 +603,11 @@ void TestLas()
   modern.Length = 34;
   modern.Legacy = 0;
   ExpectPoints(Write("modern.las", LasFile(modern)), expected);
+  // Variable-length records (projection, metadata) between the header and the
+  // points, as nearly every scanner's file has.
+  LasSpec georeferenced = spec;
+  georeferenced.Records = 54 + 200;
+  ExpectPoints(Write("georeferenced.las", LasFile(georeferenced)), expected);
   LasSpec legacyOnly = modern;
   legacyOnly.Format = 1;
   legacyOnly.Legacy = 3;
