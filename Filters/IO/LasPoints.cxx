@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 
 namespace flowrecon
 {
@@ -27,24 +26,6 @@ constexpr std::size_t Offsets = 155;
 constexpr std::size_t Count64 = 247;           // uint64, LAS 1.4
 constexpr std::size_t SharedHeaderBytes = 227; // versions 1.0-1.2
 constexpr std::size_t Header14Bytes = 375;
-
-std::uint64_t LittleEndian(std::string_view bytes, std::size_t at, int size)
-{
-  std::uint64_t value = 0;
-  for (int k = size - 1; k >= 0; --k)
-  {
-    value = (value << 8) | static_cast<unsigned char>(bytes[at + static_cast<std::size_t>(k)]);
-  }
-  return value;
-}
-
-double LittleEndianDouble(std::string_view bytes, std::size_t at)
-{
-  const std::uint64_t bits = LittleEndian(bytes, at, 8);
-  double d = 0;
-  std::memcpy(&d, &bits, sizeof d);
-  return d;
-}
 
 /// The shortest record of each point format (LAS 1.4, table of point formats).
 constexpr unsigned MinimumRecord[11] = { 20, 28, 26, 34, 57, 63, 30, 36, 38, 59, 67 };
@@ -70,10 +51,10 @@ void ReadLas(const std::string& file, std::string_view bytes, std::vector<double
   {
     Fail(file, 0, "LAS version " + version + " is not supported (1.0 to 1.4 are)");
   }
-  const std::uint64_t headerSize = LittleEndian(bytes, HeaderSize, 2);
-  const std::uint64_t start = LittleEndian(bytes, PointOffset, 4);
+  const std::uint64_t headerSize = LittleEndianAt<std::uint16_t>(bytes, HeaderSize);
+  const std::uint64_t start = LittleEndianAt<std::uint32_t>(bytes, PointOffset);
   const unsigned format = static_cast<unsigned char>(bytes[PointFormat]);
-  const std::uint64_t length = LittleEndian(bytes, RecordLength, 2);
+  const std::uint64_t length = LittleEndianAt<std::uint16_t>(bytes, RecordLength);
   if (format & 0xC0)
   {
     Fail(file, 0,
@@ -89,12 +70,12 @@ void ReadLas(const std::string& file, std::string_view bytes, std::vector<double
       "LAS point format " + std::to_string(format) + " needs records of at least " +
         std::to_string(MinimumRecord[format]) + " bytes, the header says " + std::to_string(length));
   }
-  std::uint64_t count = LittleEndian(bytes, LegacyCount, 4);
+  std::uint64_t count = LittleEndianAt<std::uint32_t>(bytes, LegacyCount);
   // LAS 1.4 keeps a 64-bit count; the legacy one is 0 beyond 2^32 points or
   // for the formats 6-10 (and some writers leave the new one 0).
   if (minor >= 4 && headerSize >= Header14Bytes && bytes.size() >= Header14Bytes)
   {
-    const std::uint64_t count64 = LittleEndian(bytes, Count64, 8);
+    const std::uint64_t count64 = LittleEndianAt<std::uint64_t>(bytes, Count64);
     if (count == 0 || count64 == 0 || count == count64)
     {
       count = std::max(count, count64);
@@ -123,8 +104,8 @@ void ReadLas(const std::string& file, std::string_view bytes, std::vector<double
   double scale[3], offset[3];
   for (int k = 0; k < 3; ++k)
   {
-    scale[k] = LittleEndianDouble(bytes, Scales + 8 * static_cast<std::size_t>(k));
-    offset[k] = LittleEndianDouble(bytes, Offsets + 8 * static_cast<std::size_t>(k));
+    scale[k] = LittleEndianAt<double>(bytes, Scales + 8 * static_cast<std::size_t>(k));
+    offset[k] = LittleEndianAt<double>(bytes, Offsets + 8 * static_cast<std::size_t>(k));
     if (!std::isfinite(scale[k]) || scale[k] == 0 || !std::isfinite(offset[k]))
     {
       Fail(file, 0,
@@ -138,8 +119,7 @@ void ReadLas(const std::string& file, std::string_view bytes, std::vector<double
     const std::size_t at = static_cast<std::size_t>(start + i * length);
     for (int k = 0; k < 3; ++k)
     {
-      const auto raw = static_cast<std::int32_t>(
-        static_cast<std::uint32_t>(LittleEndian(bytes, at + 4 * static_cast<std::size_t>(k), 4)));
+      const auto raw = LittleEndianAt<std::int32_t>(bytes, at + 4 * static_cast<std::size_t>(k));
       const double c = static_cast<double>(raw) * scale[k] + offset[k];
       if (!std::isfinite(c))
       {

@@ -5,7 +5,10 @@
 #ifndef PointCloudParsing_h
 #define PointCloudParsing_h
 
+#include "vtkByteSwap.h"
+
 #include <cstddef>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -86,6 +89,17 @@ private:
 
 /// The first `maxFields` fields of a line separated by runs of blanks and commas.
 void SplitLoose(std::string_view line, std::vector<std::string_view>& fields, std::size_t maxFields);
+
+/// The little-endian value of type T (an arithmetic type vtkByteSwap knows) at
+/// byte `at` of `bytes`, which must hold it: binary STL and LAS are little-endian.
+template <class T>
+T LittleEndianAt(std::string_view bytes, std::size_t at)
+{
+  T value;
+  std::memcpy(&value, bytes.data() + at, sizeof(T));
+  vtkByteSwap::SwapLE(&value);
+  return value;
+}
 
 /// The bytes of a file; with `stopAfter`, reading may stop a little after that text.
 std::string ReadWholeFile(const std::string& file, std::string_view stopAfter = {});

@@ -8,7 +8,6 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <numeric>
 
 namespace flowrecon
@@ -20,20 +19,6 @@ namespace
 
 constexpr std::uint64_t HeaderBytes = 84;   // 80 free bytes, then the triangle count
 constexpr std::uint64_t TriangleBytes = 50; // normal, 3 vertices (12 floats), 2 attribute bytes
-
-std::uint32_t LittleEndian32(const char* p)
-{
-  const auto b = [p](int k) { return static_cast<std::uint32_t>(static_cast<unsigned char>(p[k])); };
-  return b(0) | (b(1) << 8) | (b(2) << 16) | (b(3) << 24);
-}
-
-float LittleEndianFloat(const char* p)
-{
-  const std::uint32_t bits = LittleEndian32(p);
-  float f = 0;
-  std::memcpy(&f, &bits, sizeof f);
-  return f;
-}
 
 /// "solid" as the first word (after a byte order mark and blanks).
 bool StartsWithSolid(std::string_view text)
@@ -65,12 +50,12 @@ void ReadBinary(const std::string& file, std::string_view text, std::uint32_t tr
   for (std::uint32_t t = 0; t < triangles; ++t)
   {
     // Skip the normal: only the vertices are points.
-    const char* vertex = text.data() + HeaderBytes + TriangleBytes * t + 12;
+    const std::size_t vertex = HeaderBytes + TriangleBytes * t + 12;
     for (int v = 0; v < 3; ++v)
     {
       for (int k = 0; k < 3; ++k)
       {
-        const float c = LittleEndianFloat(vertex + 12 * v + 4 * k);
+        const float c = LittleEndianAt<float>(text, vertex + 12 * v + 4 * k);
         if (!std::isfinite(c))
         {
           Fail(file, 0,
@@ -213,7 +198,7 @@ void AppendDistinct(const std::vector<double>& all, std::vector<double>& xyz)
 void ReadStl(const std::string& file, std::string_view text, std::vector<double>& xyz)
 {
   const std::uint64_t size = text.size();
-  const std::uint32_t announced = size >= HeaderBytes ? LittleEndian32(text.data() + 80) : 0;
+  const std::uint32_t announced = size >= HeaderBytes ? LittleEndianAt<std::uint32_t>(text, 80) : 0;
   std::vector<double> all;
   // Many binary files start with "solid" too: the size decides first.
   if (size >= HeaderBytes && size == HeaderBytes + TriangleBytes * announced)
