@@ -137,6 +137,7 @@ void CompactFromStored(
     // The cells' ids are the stored complex's samples: its Gabriel edges, not
     // the light block's (numbered as the input), give their gaps.
     CheckRows(*rows, stored.Nodes, stored.NumberOfInputPoints, r.Compact);
+    CheckJoins(*rows, r.Samples, r.Compact);
   }
   if (r.Nodes.empty())
   {
@@ -565,7 +566,8 @@ int RunReconstruct(const Arguments& args)
       CheckShallow(r.Choice, r.Compact.Tetrahedra); // as on a cloud
     }
   }
-  else if (complex && r.Automatic && (r.Choice.NeedsDepth() || r.Choice.NeedsRows()))
+  else if (complex && r.Automatic &&
+    (r.Choice.NeedsDepth() || r.Choice.NeedsRows() || r.Choice.NeedsJoins()))
   {
     // --exact of a solid answer: the compact tetrahedra of the same cells,
     // made for this measure only (as on a cloud).
@@ -583,13 +585,13 @@ int RunReconstruct(const Arguments& args)
       {
         throw; // Ctrl-C stops the command, as anywhere else
       }
-      std::cerr << "warning: the answer's cells on the samples are not made (no shallow-solid or side-by-side check): "
+      std::cerr << "warning: the answer's cells on the samples are not made (no shallow-solid, side-by-side or long-join check): "
                 << e.what() << "\n";
     }
     catch (const std::exception& e)
     {
       // Only a warning needed them: the exact output is still written.
-      std::cerr << "warning: the answer's cells on the samples are not made (no shallow-solid or side-by-side check): "
+      std::cerr << "warning: the answer's cells on the samples are not made (no shallow-solid, side-by-side or long-join check): "
                 << e.what() << "\n";
     }
   }

@@ -395,8 +395,10 @@ void CloudRun::Draw()
   ThresholdChoice& choice = this->Result.Choice;
   const bool rows = this->Automatic && choice.NeedsRows();
   const bool depth = this->Automatic && choice.NeedsDepth();
+  // The compact output is at hand: CheckJoins gates itself on its cells.
+  const bool joins = this->Automatic && (this->Settings.Compact || choice.NeedsJoins());
   CompactComplex probe;
-  bool measurable = depth || rows;
+  bool measurable = depth || rows || joins;
   if (measurable && !this->Settings.Compact)
   {
     try
@@ -426,6 +428,10 @@ void CloudRun::Draw()
   if (measurable && rows)
   {
     CheckRows(choice, r.Complex.Nodes, static_cast<Id>(this->Samples.size()), cells);
+  }
+  if (measurable && joins)
+  {
+    CheckJoins(choice, this->Samples, cells);
   }
   if (!this->Settings.Compact)
   {

@@ -237,6 +237,28 @@ std::vector<std::string> ReconstructionChoiceWarnings(const ThresholdChoice& cho
       "close as curves of their own long before they join; an even spacing across and along "
       "(the rows thinned, or more of them) lets the surface close");
   }
+  if (!choice.Joined.empty())
+  {
+    std::string sizes;
+    const std::size_t shown = std::min<std::size_t>(choice.Joined.size(), 4);
+    for (std::size_t k = 0; k < shown; ++k)
+    {
+      sizes += (k == 0 ? "" : k + 1 == shown && shown == choice.Joined.size() ? " and " : ", ") +
+        std::to_string(choice.Joined[k]);
+    }
+    if (shown < choice.Joined.size())
+    {
+      sizes += ", ...";
+    }
+    const std::string where = choice.JoinRatio > 0
+      ? " (the shortest " + Number(choice.JoinRatio, 1) + " times, near " +
+        PlaceText(choice.JoinPlace, choice.Far.Median) + ")"
+      : "";
+    lines.push_back("the answer's " + std::to_string(choice.Joined.size()) + " parts of " + sizes +
+      " samples are held together only by edges over " + Number(choice.Rule.JoinFactor, 0) +
+      " times the sample spacing at an end" + where + ": separate closed surfaces a few spacings "
+      "apart may have been joined across the gap, or the space between them filled");
+  }
   // A resurfaced answer has said which solid lasts longer.
   if (choice.Longest.Length() > choice.Window.Length() && choice.Longest.Betti != choice.Window.Betti &&
     !(choice.Resurfaced && choice.Longest.Betti == choice.Solid.Betti))

@@ -287,7 +287,8 @@ int vtkFlowReconstruction::RequestData(
   // output is still given, unmeasured.
   const bool compactGeometry = this->Geometry == GEOMETRY_COMPACT;
   if ((compactGeometry ||
-        (selection.Chosen && (selection.Choice.NeedsDepth() || selection.Choice.NeedsRows()))) &&
+        (selection.Chosen && (selection.Choice.NeedsDepth() || selection.Choice.NeedsRows() ||
+                                 selection.Choice.NeedsJoins()))) &&
     !this->PrepareCompact(tmax, !compactGeometry))
   {
     flowrecon::EmptyOutputs(outputVector);
@@ -536,7 +537,8 @@ void vtkFlowReconstruction::FillOutputs(vtkMultiBlockDataSet* input, double tmax
   flowrecon::CompactComplex& compact = c.Shown;
   std::vector<double>& thresholds = c.NodeThresholds;
   const bool withCompact = this->Geometry == GEOMETRY_COMPACT && c.Compact;
-  const bool measure = choice && c.Compact && (choice->NeedsDepth() || choice->NeedsRows());
+  const bool measure = choice && c.Compact &&
+    (choice->NeedsDepth() || choice->NeedsRows() || withCompact || choice->NeedsJoins());
   if (withCompact || measure)
   {
     try
@@ -559,6 +561,11 @@ void vtkFlowReconstruction::FillOutputs(vtkMultiBlockDataSet* input, double tmax
     measured = *choice;
     flowrecon::CheckShallow(measured, compact.Tetrahedra);
     flowrecon::CheckRows(measured, fc.Nodes, fc.NumberOfInputPoints, compact);
+    if (measured.Window.Betti[2] >= 1) // CheckJoins measures nothing else
+    {
+      flowrecon::CheckJoins(measured,
+        std::vector<flowrecon::Point3>(fc.Points.begin(), fc.Points.begin() + fc.NumberOfInputPoints), compact);
+    }
     choice = &measured;
   }
   std::string why; // no Betti numbers

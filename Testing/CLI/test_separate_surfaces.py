@@ -7,10 +7,14 @@ i.i.d. points), alone and joined by a rod of points. Their Betti numbers are
 known by construction; at defaults each must print them. Two spheres apart over
 a stable range of t_r and joined by a bridge later (1 0 2, a longer range) are
 two surfaces: the rule that took the longest range answered 1 0 2 on three of
-these clouds, one of them without a warning.
+these clouds, one of them without a warning. Two spheres of unequal density
+and two nested cube surfaces that join before they close are answered as one
+part and must be warned as held together by long edges; two spheres touching at
+a point, and every right answer above, must not.
 Usage: test_separate_surfaces.py FLOWRECON WORKDIR
 """
 import os
+import subprocess
 import sys
 
 import numpy as np
@@ -20,6 +24,15 @@ import held_out_shapes as ho  # noqa: E402
 import separate_surfaces as ss  # noqa: E402
 
 FLOWRECON, WORK = sys.argv[1:3]
+
+
+def held_together(cloud):
+    """Whether the defaults' answer on `cloud` is warned as parts held together
+    only by long edges."""
+    p = subprocess.run([FLOWRECON, "reconstruct", cloud, "-o", cloud[:-4] + ".vtu"], capture_output=True, text=True)
+    return any(line.startswith("warning:") and "held together only by edges" in line for line in p.stderr.splitlines())
+
+
 os.makedirs(WORK, exist_ok=True)
 failures = []
 for k, (name, n, points, truth) in enumerate(ss.clouds(ss.GRIDS[:2], ss.PAIRS[:2], False)):
@@ -30,6 +43,28 @@ for k, (name, n, points, truth) in enumerate(ss.clouds(ss.GRIDS[:2], ss.PAIRS[:2
     print("%s (%d points): Betti %s, truth %s%s" % (name, n, betti, truth, "" if ok else "  <- WRONG"))
     if not ok:
         failures.append(name)
+    if ok and held_together(cloud):
+        failures.append(name + " (right, yet warned as parts joined across a gap)")
+
+# Two closed surfaces that join before they close, so that no t_r has them
+# apart: the answer is one part (wrong) and must say that only edges far
+# longer than the spacing hold it together. Two spheres touching at a point
+# are one part (right) and must not.
+JOINED = {"two spheres 0.5 apart, 6000 and 600 points": True,
+          "two nested cube surfaces, sides 2 and 1, 1500 points each": True,
+          "two spheres touching at a point": False}
+for name, n, points, truth in ss.mixed():
+    short = name.replace(", i.i.d.", "")
+    if short not in JOINED:
+        continue
+    cloud = os.path.join(WORK, "joined%d.xyz" % len(points))
+    np.savetxt(cloud, points, fmt="%.17g")
+    betti, warned, choice = ho.run(FLOWRECON, cloud, [])
+    said = held_together(cloud)
+    print("%s (%d points): Betti %s, truth %s, %s" % (name, n, betti, truth,
+                                                     "warned as joined" if said else "not warned as joined"))
+    if said != JOINED[short] or (betti != truth) != JOINED[short]:
+        failures.append(name + (" (not warned as joined)" if JOINED[short] else " (warned as joined)"))
 if len(failures) > 0:
     raise SystemExit("automatic thresholds wrong on: " + "; ".join(failures))
-print("right on all %d clouds" % (k + 1))
+print("right on all %d clouds, joined surfaces warned" % (k + 1))

@@ -11,6 +11,7 @@
 #include "Check.h"
 #include "Clouds.h"
 #include "LocalFlatness.h"
+#include "LongJoins.h"
 #include "PartGaps.h"
 #include "SolidDepth.h"
 
@@ -643,6 +644,117 @@ int main()
     c.Window.Betti = { { 1, 0, 1 } }; // a void: a surface
     CheckShallow(c, shallow);
     CHECK(!c.Shallow && c.Depth == -1);
+  }
+  // Parts held together only by long edges. The spacing is the k-th nearest
+  // other place: on a unit grid an inner sample's 6th is sqrt(2) (4 at 1, 4
+  // at sqrt(2)), a corner's sqrt(5) (1, 1, sqrt(2), 2, 2, sqrt(5)).
+  {
+    std::vector<Point3> line;
+    for (int x = 0; x < 10; ++x)
+    {
+      line.push_back({ { static_cast<double>(x), 0, 0 } });
+    }
+    line.push_back(line[0]); // a duplicate is no neighbour
+    const std::vector<double> s = NeighbourSpacing(line, {}, 2);
+    CHECK(s[0] == 2 && s[5] == 1 && s[9] == 2 && s[10] == 2);
+    CHECK(NeighbourSpacing(line, {}, 50)[0] == 9); // fewer places than k: the farthest
+    std::vector<char> wanted(line.size(), 0);
+    wanted[3] = 1;
+    const std::vector<double> only = NeighbourSpacing(line, wanted, 2);
+    CHECK(only[3] == 1 && only[0] == 0);
+
+    // Two 10 x 10 unit grids, triangulated, `gap` apart along z, and a
+    // triangle from the first's (5, 5) to the second's (5, 5) and (6, 5).
+    const auto grids = [](double gap, std::vector<Point3>& points, CompactComplex& cells) {
+      points.clear();
+      cells = CompactComplex();
+      for (int g = 0; g < 2; ++g)
+      {
+        for (int y = 0; y < 10; ++y)
+        {
+          for (int x = 0; x < 10; ++x)
+          {
+            points.push_back({ { static_cast<double>(x), static_cast<double>(y), g * gap } });
+          }
+        }
+        for (Id y = 0; y < 9; ++y)
+        {
+          for (Id x = 0; x < 9; ++x)
+          {
+            const Id v = 100 * g + 10 * y + x;
+            cells.Triangles.push_back({ { v, v + 1, v + 11 } });
+            cells.Triangles.push_back({ { v, v + 10, v + 11 } });
+          }
+        }
+      }
+      cells.Triangles.push_back({ { 55, 155, 156 } });
+    };
+    std::vector<Point3> points;
+    CompactComplex cells;
+    grids(10, points, cells);
+    LongJoins j = FindLongJoins(points, cells, 3, 6, 0.01, 10);
+    CHECK(j.Parts == std::vector<Id>({ 100, 100 }));
+    CHECK(std::abs(j.Ratio - 10 / std::sqrt(2.0)) < 1e-12 && j.Where[0] == 5 && j.Where[2] == 5);
+    CHECK(FindLongJoins(points, cells, 7.5, 6, 0.01, 10).Parts.empty()); // 7.07 is short then
+    CHECK(FindLongJoins(points, cells, 3, 6, 0.01, 101).Parts.empty()); // parts too small
+    CHECK(FindLongJoins(points, cells, 3, 6, 0.6, 10).Parts.empty());   // under 60 % each
+    grids(4, points, cells); // 4 / sqrt(2) = 2.83: held by the bridge
+    CHECK(FindLongJoins(points, cells, 3, 6, 0.01, 10).Parts.empty());
+    // A small piece hung on a long edge is not a part.
+    grids(10, points, cells);
+    cells.Triangles.pop_back();
+    cells.Triangles.push_back({ { 55, 56, 155 } }); // the grids' bridge
+    for (int k = 0; k < 3; ++k)
+    {
+      points.push_back({ { 40.0 + k, 0, 0 } });
+    }
+    cells.Triangles.push_back({ { 0, 200, 201 } });
+    cells.Triangles.push_back({ { 200, 201, 202 } });
+    j = FindLongJoins(points, cells, 3, 6, 0.01, 10);
+    CHECK(j.Parts == std::vector<Id>({ 100, 100 }) && std::abs(j.Ratio - 10 / std::sqrt(2.0)) < 1e-12);
+    // Another long edge, between the corners (10 / sqrt(5) = 4.5): still apart.
+    cells.Edges.push_back({ { 99, 199 } });
+    CHECK(FindLongJoins(points, cells, 3, 6, 0.01, 10).Parts.size() == 2);
+    CHECK(FindLongJoins(points, cells, 4.5, 6, 0.01, 10).Parts.empty()); // short at 4.5
+
+    // A sparser second grid (spacing 3): the edge is long against the finer
+    // end (17.3 / sqrt(2) = 12.2), though not against the coarser (17.3 /
+    // (3 sqrt(2)) = 4.1), as a dense surface bridged to a sparse one is.
+    grids(10, points, cells);
+    for (std::size_t v = 100; v < 200; ++v)
+    {
+      points[v][0] *= 3;
+      points[v][1] *= 3;
+    }
+    CHECK(FindLongJoins(points, cells, 5, 6, 0.01, 10).Parts.size() == 2);
+    CHECK(FindLongJoins(points, cells, 13, 6, 0.01, 10).Parts.empty());
+
+    // CheckJoins measures only where the profile cannot tell: voids that share
+    // a part, or a solid answer.
+    grids(10, points, cells);
+    ThresholdChoice c = ChooseThresholds({ Torus }, 6);
+    c.Window.Betti = { { 1, 0, 2 } };
+    CheckJoins(c, points, cells);
+    CHECK(c.Joined == std::vector<Id>({ 100, 100 }) && c.JoinPlace[2] == 5);
+    c.Window.Betti = { { 2, 0, 2 } }; // each part with its void
+    CheckJoins(c, points, cells);
+    CHECK(c.Joined.empty() && c.JoinRatio == 0);
+    c.Window.Betti = { { 1, 0, 1 } };
+    CheckJoins(c, points, cells);
+    CHECK(c.Joined.empty());
+    c.Filled = true; // solid around its void
+    CheckJoins(c, points, cells);
+    CHECK(c.Joined.size() == 2);
+    c.Filled = false;
+    for (int k = 0; k < 25; ++k) // 25 tetrahedra for 200 samples: SolidShare
+    {
+      cells.Tetrahedra.push_back({ { k, k + 1, k + 10, k + 11 } });
+    }
+    CheckJoins(c, points, cells);
+    CHECK(c.Joined.size() == 2);
+    c.Window.Betti = { { 1, 0, 0 } }; // no void
+    CheckJoins(c, points, cells);
+    CHECK(c.Joined.empty());
   }
   return check::Finish("TestAutomaticThresholds");
 }

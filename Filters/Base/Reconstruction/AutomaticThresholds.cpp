@@ -388,6 +388,34 @@ void CheckRows(ThresholdChoice& choice, const std::vector<Node>& nodes, Id sampl
   }
 }
 
+bool ThresholdChoice::NeedsJoins() const
+{
+  const auto& b = this->Window.Betti;
+  return this->Window.Length() > 0 && b[2] >= 1 && (b[2] > b[0] || this->Filled);
+}
+
+void CheckJoins(ThresholdChoice& choice, const std::vector<Point3>& samples, const CompactComplex& cells)
+{
+  const ThresholdRule& rule = choice.Rule;
+  choice.Joined.clear();
+  choice.JoinRatio = 0;
+  choice.JoinPlace = { { 0, 0, 0 } };
+  const auto& b = choice.Window.Betti;
+  // Only where the profile cannot tell (voids sharing a part, a solid around
+  // voids): elsewhere the search for the spacing would cost a k-NN pass.
+  const bool solid = static_cast<double>(cells.Tetrahedra.size()) >=
+    rule.SolidShare * static_cast<double>(samples.size());
+  if (choice.Window.Length() == 0 || b[2] < 1 || !(b[2] > b[0] || choice.Filled || solid))
+  {
+    return;
+  }
+  LongJoins joins = FindLongJoins(samples, cells, rule.JoinFactor, rule.JoinNeighbours, rule.JoinShare,
+    rule.JoinSmallest);
+  choice.Joined = std::move(joins.Parts);
+  choice.JoinRatio = joins.Ratio;
+  choice.JoinPlace = joins.Where;
+}
+
 bool ThresholdChoice::NeedsDepth() const
 {
   return this->Window.Length() > 0 && this->Window.Betti[2] == 0 && !this->Filled && !this->TooFew &&

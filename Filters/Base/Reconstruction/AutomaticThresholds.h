@@ -19,6 +19,7 @@
 #include "CellHomology.h"
 #include "CompactReconstruction.h"
 #include "FarSamples.h"
+#include "LongJoins.h"
 #include "Reconstruction.h"
 
 #include <array>
@@ -91,6 +92,20 @@ struct ThresholdRule
   /// 0.18 on the rings of a mesh's open cylinder, 0.25 apart and 1.41 across,
   /// 20 and 64 spacings apart; 0.71 on three unit circles 4 apart.
   double RowExtent = 0.25;
+  /// An answer with voids, where a part holds several (b2 > b0) or a solid
+  /// (Filled, or SolidShare tetrahedra a sample), is warned as surfaces
+  /// joined across a gap when, without its edges longer than JoinFactor times
+  /// the spacing (the JoinNeighbours-th nearest sample's distance) at one of
+  /// their ends, it has more parts of JoinShare of its samples (and
+  /// JoinSmallest) than with them (LongJoins.h): two spheres of 6 000 and 600
+  /// i.i.d. points 0.5 apart, joined by a lump of tetrahedra, and two nested
+  /// cube surfaces whose shell filled, fall into their two surfaces at 2.5-4
+  /// (6 misses the cubes); no right answer of 282 clouds does at 2.5-4 (2
+  /// parts a rod-joined pair, Data/EXPERIMENTS.md).
+  double JoinFactor = 3;
+  int JoinNeighbours = 6;
+  double JoinShare = 0.01;
+  Id JoinSmallest = 10;
 };
 
 struct ThresholdChoice
@@ -157,6 +172,17 @@ struct ThresholdChoice
   /// (and not within RowFactor spacings): the widest gap over that extent;
   /// RowGap and RowPlace are then that gap's.
   double RowGapOfExtent = 0;
+  /// Parts joined across a gap (CheckJoins; warned): the sizes of the parts
+  /// that the answer's short edges hold together, largest first, when its
+  /// long edges join more of them than it has parts (Rule.JoinFactor); else
+  /// empty.
+  std::vector<Id> Joined;
+  double JoinRatio = 0; ///< the least long edge between two of them, over the spacing at its finer end
+  Point3 JoinPlace{ { 0, 0, 0 } }; ///< that edge's midpoint
+  /// Whether CheckJoins may have something to measure: a window with voids,
+  /// where a part holds several of them or the answer is Filled (CheckJoins
+  /// also measures answers whose cells are solid enough).
+  bool NeedsJoins() const;
   /// Whether CheckRows has something to measure: a window with no void and
   /// three components or more, after CheckFar.
   bool NeedsRows() const;
@@ -227,6 +253,13 @@ void CheckShallow(ThresholdChoice& choice, const std::vector<std::array<Id, 4>>&
 /// surface sampled far more finely along lines than across gives such parts,
 /// each line a curve of its own over the whole range of t_r looked at.
 void CheckRows(ThresholdChoice& choice, const std::vector<Node>& nodes, Id samples, const CompactComplex& cells);
+
+/// With the reconstruction at t_r as cells on `samples` (the compact output):
+/// sets Joined, JoinRatio and JoinPlace (FindLongJoins with the Rule's Join
+/// constants) when the window has voids and a part of it holds several
+/// (b2 > b0), or it is Filled, or `cells` has Rule.SolidShare tetrahedra per
+/// sample in it; clears them otherwise.
+void CheckJoins(ThresholdChoice& choice, const std::vector<Point3>& samples, const CompactComplex& cells);
 
 /// The Threshold of the carrier of every maximum with cells in `run`, sorted:
 /// MaximaBelow at any t (the count below t) once the run is gone.
