@@ -394,7 +394,7 @@ bool ThresholdChoice::NeedsJoins() const
   return this->Window.Length() > 0 && b[2] >= 1 && (b[2] > b[0] || this->Filled);
 }
 
-void CheckJoins(ThresholdChoice& choice, const std::vector<Point3>& samples, const CompactComplex& cells)
+bool CheckJoins(ThresholdChoice& choice, const std::vector<Point3>& samples, const CompactComplex& cells)
 {
   const ThresholdRule& rule = choice.Rule;
   choice.Joined.clear();
@@ -407,13 +407,14 @@ void CheckJoins(ThresholdChoice& choice, const std::vector<Point3>& samples, con
     rule.SolidShare * static_cast<double>(samples.size());
   if (choice.Window.Length() == 0 || b[2] < 1 || !(b[2] > b[0] || choice.Filled || solid))
   {
-    return;
+    return false;
   }
   LongJoins joins = FindLongJoins(samples, cells, rule.JoinFactor, rule.JoinNeighbours, rule.JoinShare,
     rule.JoinSmallest);
   choice.Joined = std::move(joins.Parts);
   choice.JoinRatio = joins.Ratio;
   choice.JoinPlace = joins.Where;
+  return true;
 }
 
 bool ThresholdChoice::NeedsDepth() const

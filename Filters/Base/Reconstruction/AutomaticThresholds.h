@@ -258,8 +258,8 @@ void CheckRows(ThresholdChoice& choice, const std::vector<Node>& nodes, Id sampl
 /// sets Joined, JoinRatio and JoinPlace (FindLongJoins with the Rule's Join
 /// constants) when the window has voids and a part of it holds several
 /// (b2 > b0), or it is Filled, or `cells` has Rule.SolidShare tetrahedra per
-/// sample in it; clears them otherwise.
-void CheckJoins(ThresholdChoice& choice, const std::vector<Point3>& samples, const CompactComplex& cells);
+/// sample in it; clears them otherwise. Returns whether it measured.
+bool CheckJoins(ThresholdChoice& choice, const std::vector<Point3>& samples, const CompactComplex& cells);
 
 /// The Threshold of the carrier of every maximum with cells in `run`, sorted:
 /// MaximaBelow at any t (the count below t) once the run is gone.
