@@ -169,6 +169,9 @@ struct vtkFlowReconstruction::Cache
   /// t_r refills them instead of faulting in new memory.
   std::vector<double> NodeThresholds;
   flowrecon::CompactComplex Shown;
+  /// Each sample's spacing (NeighbourSpacing), made when a t_r's answer is
+  /// first checked for parts held by long edges: a new t_r reuses it.
+  std::vector<double> Spacing;
 
   const std::vector<flowrecon::TopologyStep>& StepsBelow(double tmax)
   {
@@ -564,7 +567,8 @@ void vtkFlowReconstruction::FillOutputs(vtkMultiBlockDataSet* input, double tmax
     if (measured.Window.Betti[2] >= 1) // CheckJoins measures nothing else
     {
       flowrecon::CheckJoins(measured,
-        std::vector<flowrecon::Point3>(fc.Points.begin(), fc.Points.begin() + fc.NumberOfInputPoints), compact);
+        std::vector<flowrecon::Point3>(fc.Points.begin(), fc.Points.begin() + fc.NumberOfInputPoints), compact,
+        &c.Spacing);
     }
     choice = &measured;
   }

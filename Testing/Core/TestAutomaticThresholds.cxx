@@ -696,6 +696,13 @@ int main()
     CHECK(j.Parts == std::vector<Id>({ 100, 100 }));
     CHECK(std::abs(j.Ratio - 10 / std::sqrt(2.0)) < 1e-12 && j.Where[0] == 5 && j.Where[2] == 5);
     CHECK(FindLongJoins(points, cells, 7.5, 6, 0.01, 10).Parts.empty()); // 7.07 is short then
+    {
+      // The spacing given, as a filter measuring many t_r does: the same.
+      const std::vector<double> spacing = NeighbourSpacing(points, {}, 6);
+      CHECK(spacing[55] == std::sqrt(2.0) && spacing[0] == std::sqrt(5.0));
+      const LongJoins given = FindLongJoins(points, spacing, cells, 3, 0.01, 10);
+      CHECK(given.Parts == j.Parts && given.Ratio == j.Ratio && given.Where == j.Where);
+    }
     CHECK(FindLongJoins(points, cells, 3, 6, 0.01, 101).Parts.empty()); // parts too small
     CHECK(FindLongJoins(points, cells, 3, 6, 0.6, 10).Parts.empty());   // under 60 % each
     grids(4, points, cells); // 4 / sqrt(2) = 2.83: held by the bridge
@@ -736,6 +743,10 @@ int main()
     c.Window.Betti = { { 1, 0, 2 } };
     CheckJoins(c, points, cells);
     CHECK(c.Joined == std::vector<Id>({ 100, 100 }) && c.JoinPlace[2] == 5);
+    std::vector<double> kept; // filled on the first measure, then read
+    CHECK(CheckJoins(c, points, cells, &kept) && kept.size() == points.size() && c.Joined.size() == 2);
+    kept.assign(points.size(), 100.0); // every edge short against this spacing
+    CHECK(CheckJoins(c, points, cells, &kept) && c.Joined.empty());
     c.Window.Betti = { { 2, 0, 2 } }; // each part with its void
     CheckJoins(c, points, cells);
     CHECK(c.Joined.empty() && c.JoinRatio == 0);

@@ -394,7 +394,8 @@ bool ThresholdChoice::NeedsJoins() const
   return this->Window.Length() > 0 && b[2] >= 1 && (b[2] > b[0] || this->Filled);
 }
 
-bool CheckJoins(ThresholdChoice& choice, const std::vector<Point3>& samples, const CompactComplex& cells)
+bool CheckJoins(ThresholdChoice& choice, const std::vector<Point3>& samples, const CompactComplex& cells,
+  std::vector<double>* spacing)
 {
   const ThresholdRule& rule = choice.Rule;
   choice.Joined.clear();
@@ -409,8 +410,13 @@ bool CheckJoins(ThresholdChoice& choice, const std::vector<Point3>& samples, con
   {
     return false;
   }
-  LongJoins joins = FindLongJoins(samples, cells, rule.JoinFactor, rule.JoinNeighbours, rule.JoinShare,
-    rule.JoinSmallest);
+  if (spacing && spacing->size() != samples.size())
+  {
+    *spacing = NeighbourSpacing(samples, {}, rule.JoinNeighbours);
+  }
+  LongJoins joins = spacing
+    ? FindLongJoins(samples, *spacing, cells, rule.JoinFactor, rule.JoinShare, rule.JoinSmallest)
+    : FindLongJoins(samples, cells, rule.JoinFactor, rule.JoinNeighbours, rule.JoinShare, rule.JoinSmallest);
   choice.Joined = std::move(joins.Parts);
   choice.JoinRatio = joins.Ratio;
   choice.JoinPlace = joins.Where;

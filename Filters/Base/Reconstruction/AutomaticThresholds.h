@@ -259,7 +259,11 @@ void CheckRows(ThresholdChoice& choice, const std::vector<Node>& nodes, Id sampl
 /// constants) when the window has voids and a part of it holds several
 /// (b2 > b0), or it is Filled, or `cells` has Rule.SolidShare tetrahedra per
 /// sample in it; clears them otherwise. Returns whether it measured.
-bool CheckJoins(ThresholdChoice& choice, const std::vector<Point3>& samples, const CompactComplex& cells);
+/// `spacing`, when given, keeps every sample's NeighbourSpacing across calls
+/// on one cloud (filled on the first measure); else only the samples in
+/// `cells` are measured.
+bool CheckJoins(ThresholdChoice& choice, const std::vector<Point3>& samples, const CompactComplex& cells,
+  std::vector<double>* spacing = nullptr);
 
 /// The Threshold of the carrier of every maximum with cells in `run`, sorted:
 /// MaximaBelow at any t (the count below t) once the run is gone.

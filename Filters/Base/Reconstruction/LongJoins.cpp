@@ -133,12 +133,13 @@ std::vector<Id> LargeParts(UnionFind& parts, const std::vector<char>& used, Id l
 
 } // namespace
 
-LongJoins FindLongJoins(const std::vector<Point3>& samples, const CompactComplex& cells, double factor, int k,
-  double share, Id smallest)
+namespace
 {
-  LongJoins joins;
-  const Id n = static_cast<Id>(samples.size());
-  std::vector<char> used(samples.size(), 0);
+
+/// Which samples `cells` hold.
+std::vector<char> InCells(const CompactComplex& cells, Id n)
+{
+  std::vector<char> used(static_cast<std::size_t>(n), 0);
   for (const Id v : cells.Vertices)
   {
     if (v >= 0 && v < n)
@@ -147,16 +148,33 @@ LongJoins FindLongJoins(const std::vector<Point3>& samples, const CompactComplex
     }
   }
   ForEachEdge(cells, n, [&](Id a, Id b) { used[static_cast<std::size_t>(a)] = used[static_cast<std::size_t>(b)] = 1; });
+  return used;
+}
+
+} // namespace
+
+LongJoins FindLongJoins(const std::vector<Point3>& samples, const CompactComplex& cells, double factor, int k,
+  double share, Id smallest)
+{
+  return FindLongJoins(samples, NeighbourSpacing(samples, InCells(cells, static_cast<Id>(samples.size())), k), cells,
+    factor, share, smallest);
+}
+
+LongJoins FindLongJoins(const std::vector<Point3>& samples, const std::vector<double>& spacing,
+  const CompactComplex& cells, double factor, double share, Id smallest)
+{
+  LongJoins joins;
+  const Id n = static_cast<Id>(std::min(samples.size(), spacing.size()));
+  const std::vector<char> used = InCells(cells, n);
   const Id inCells = static_cast<Id>(std::count(used.begin(), used.end(), 1));
   const Id least = std::max(smallest, static_cast<Id>(std::ceil(share * static_cast<double>(inCells))));
-  const std::vector<double> spacing = NeighbourSpacing(samples, used, k);
   const auto ratio = [&](Id a, Id b) {
     const double s = std::min(spacing[static_cast<std::size_t>(a)], spacing[static_cast<std::size_t>(b)]);
     const double d = Distance(samples[static_cast<std::size_t>(a)], samples[static_cast<std::size_t>(b)]);
     return s > 0 ? d / s : (d > 0 ? HUGE_VAL : 0.0);
   };
-  UnionFind all(samples.size());
-  UnionFind held(samples.size());
+  UnionFind all(used.size());
+  UnionFind held(used.size());
   ForEachEdge(cells, n, [&](Id a, Id b) {
     all.Merge(static_cast<std::int32_t>(a), static_cast<std::int32_t>(b));
     if (ratio(a, b) <= factor)
