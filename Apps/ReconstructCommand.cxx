@@ -152,7 +152,9 @@ bool CheckFilledOnGrid(vtkUnstructuredGrid* grid, vtkMultiBlockDataSet* complex,
 {
   FlowComplex stored;
   std::string error;
-  if (!grid || choice.Window.Betti[2] != 0 || !FromMultiBlock(complex, stored, error, true) ||
+  // Answers with voids too: a solid around voids takes a window with more
+  // (PreferSurface), as on a cloud.
+  if (!grid || !FromMultiBlock(complex, stored, error, true) ||
     !ReadSamples(complex, stored, error))
   {
     return false;
