@@ -22,24 +22,18 @@ std::vector<double> NeighbourSpacing(const std::vector<Point3>& samples, const s
   using Traits = CGAL::Search_traits_3<K>;
   using Search = CGAL::Orthogonal_k_neighbor_search<Traits>;
   std::vector<double> spacing(samples.size(), 0.0);
-  // Each place once: a duplicate is not a neighbour.
-  std::vector<Point3> places(samples);
-  std::sort(places.begin(), places.end());
-  places.erase(std::unique(places.begin(), places.end()), places.end());
-  if (places.size() < 2 || k < 1)
+  if (samples.size() < 2 || k < 1)
   {
     return spacing;
   }
   std::vector<K::Point_3> pts;
-  pts.reserve(places.size());
-  for (const Point3& p : places)
+  pts.reserve(samples.size());
+  for (const Point3& p : samples)
   {
     pts.emplace_back(p[0], p[1], p[2]);
   }
-  places = std::vector<Point3>();
   Search::Tree tree(pts.begin(), pts.end());
   tree.build(); // before the concurrent searches, which would each build it
-  const unsigned asked = static_cast<unsigned>(std::min<std::size_t>(static_cast<std::size_t>(k) + 1, pts.size()));
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, samples.size()), [&](const tbb::blocked_range<std::size_t>& r) {
     for (std::size_t i = r.begin(); i != r.end(); ++i)
     {
@@ -47,23 +41,33 @@ std::vector<double> NeighbourSpacing(const std::vector<Point3>& samples, const s
       {
         continue;
       }
-      const Point3& p = samples[i];
-      const Search search(tree, K::Point_3(p[0], p[1], p[2]), asked);
-      // Sorted by distance, the sample's own place first (at 0).
-      double last = 0;
-      int found = 0;
-      for (const auto& hit : search)
+      // Sorted by distance, the sample's own place first; duplicates (at 0)
+      // are no neighbours, so ask for more while they fill the answer.
+      std::size_t asked = static_cast<std::size_t>(k) + 1;
+      for (;;)
       {
-        if (hit.second > 0)
+        asked = std::min(asked, pts.size());
+        const Search search(tree, pts[i], static_cast<unsigned>(asked));
+        double last = 0;
+        int found = 0;
+        for (const auto& hit : search)
         {
-          last = hit.second;
-          if (++found == k)
+          if (hit.second > 0)
           {
-            break;
+            last = hit.second;
+            if (++found == k)
+            {
+              break;
+            }
           }
         }
+        if (found == k || asked == pts.size())
+        {
+          spacing[i] = std::sqrt(last);
+          break;
+        }
+        asked *= 2;
       }
-      spacing[i] = std::sqrt(last);
     }
   });
   return spacing;
