@@ -135,11 +135,6 @@ std::vector<Id> LargeParts(UnionFind& parts, const std::vector<char>& used, Id l
   return large;
 }
 
-} // namespace
-
-namespace
-{
-
 /// Which samples `cells` hold.
 std::vector<char> InCells(const CompactComplex& cells, Id n)
 {
