@@ -25,7 +25,8 @@ Flow Reconstruction, every property at its default, in pvpython.
   too few to tell a surface from a volume, both take the sphere that closes
   briefly before the ball and warn so; on two nested spheres whose gap fills
   into a solid shell, both take the two closed surfaces that hold briefly
-  before it, and say so.
+  before it, and say so; on two spheres of unequal density joined before the
+  sparse one closes, both warn that only long edges hold the parts together.
 - Turning Automatic t_r off shows the Reconstruction Threshold (2) instead,
   and its Betti numbers are the profile's at 2.
 Usage: pvpython test_automatic_pipeline.py PLUGIN FLOWRECON WORKDIR
@@ -213,6 +214,16 @@ def main():
     c = check(name, nested, truth)
     expect(any("are taken instead" in w for w in c["warnings"]),
            "%s: no warning that the closed surfaces were taken in %s" % (name, c["warnings"]))
+    # Two spheres of 6 000 and 600 points joined before the sparse one closes
+    # (1 0 2; no t_r has them apart): warned in ParaView as on the command line
+    # that only edges far longer than the spacing hold the two parts together.
+    name, _, points, truth = next(c for c in ss.mixed() if c[0].startswith("two spheres 0.5 apart, 6000"))
+    unequal = os.path.join(WORK, "unequal_spheres.xyz")
+    with open(unequal, "w") as f:
+        f.write(gc.to_xyz_text(points))
+    c = check(name, unequal, None)
+    expect(c["betti"] != truth and any("held together only by edges" in w for w in c["warnings"]),
+           "%s: answered %s, truth %s, without the long-edge warning in %s" % (name, c["betti"], truth, c["warnings"]))
     grid, table = pipeline(torus, automatic=False)
     fd = grid.GetFieldData()
     fixed = tuple(int(v) for v in values(fd, "BettiNumbers"))
