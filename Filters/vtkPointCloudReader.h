@@ -6,7 +6,8 @@
  * - `.xyz`, `.txt`, `.pts`, `.pwn` (CGAL's points with normals): one point per
  *   line, `x y z` separated by blanks or commas; further columns are ignored.
  *   Blank lines and lines starting with `#` or `//` are skipped. The first line
- *   may hold only the point count (as `.pts` files and CGAL's XYZ format allow),
+ *   may hold only the point count (as `.pts` files and CGAL's XYZ format allow;
+ *   a count other than the number of points that follow is an error),
  *   which is skipped.
  * - `.csv`: comma (or semicolon, or tab) separated, with an optional header row.
  *   Columns named `x`, `y`, `z` (or `Points:0..2`, `coordinates:0..2`, any

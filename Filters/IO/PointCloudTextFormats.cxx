@@ -88,6 +88,13 @@ int AxisOfHeader(std::string_view name)
   return -1;
 }
 
+/// A whole number without its leading zeros ("0" stays).
+std::string TrimZeros(std::string_view digits)
+{
+  const std::size_t nonzero = digits.find_first_not_of('0');
+  return nonzero == std::string_view::npos ? "0" : std::string(digits.substr(nonzero));
+}
+
 } // namespace
 
 void ReadXyz(const std::string& file, std::string_view text, std::vector<double>& xyz)
@@ -96,6 +103,8 @@ void ReadXyz(const std::string& file, std::string_view text, std::vector<double>
   std::string_view line;
   std::vector<std::string_view> fields;
   bool first = true;
+  std::string_view announced; // the count on the first line, if any
+  std::size_t countLine = 0;
   while (lines.NextData(line))
   {
     SplitLoose(line, fields, 3);
@@ -103,10 +112,21 @@ void ReadXyz(const std::string& file, std::string_view text, std::vector<double>
       fields[0].find_first_not_of("0123456789") == std::string_view::npos)
     {
       first = false; // the point count
+      announced = fields[0];
+      countLine = lines.Number;
       continue;
     }
     first = false;
     AppendPoint(file, lines.Number, fields, 0, "expected 3 coordinates (x y z)", xyz);
+  }
+  // A count that disagrees with the points read: a truncated file, or lines
+  // the count does not cover; either way not the cloud that was written.
+  const std::size_t read = xyz.size() / 3;
+  if (!announced.empty() && std::to_string(read) != TrimZeros(announced))
+  {
+    Fail(file, countLine,
+      "the first line announces " + std::string(announced) + " points, the file holds " + std::to_string(read) +
+        " (truncated?)");
   }
 }
 

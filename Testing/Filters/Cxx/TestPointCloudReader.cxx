@@ -287,10 +287,17 @@ void TestBadInput()
   ExpectError(Write("word.xyz", "1 2 3\n4 5 6\n7 eight 9\n"), 3, "cannot parse 'eight'");
   ExpectError(Write("two.xyz", "1 2 3\n\n4 5\n"), 3, "expected 3 coordinates (x y z), found 2");
   // A first line holding only the point count: CGAL's XYZ format allows it, as
-  // .pts files have it; once only, and as a whole non-negative integer.
+  // .pts files have it; once only, as a whole non-negative integer, and equal
+  // to the number of points that follow.
   ExpectPoints(Write("count.xyz", "2\n1 2 3 0 0 1\n4 5 6 0 0 1\n"), { { 1, 2, 3 }, { 4, 5, 6 } });
   ExpectPoints(Write("count.pwn", "# normals\n1\n1 2 3 0 0 1\n"), { { 1, 2, 3 } });
   ExpectError(Write("count.pts", "2\n3\n"), 2, "found 1");
+  // The count must be the number of points: a truncated file is not read as
+  // a smaller cloud (leading zeros are the same count).
+  ExpectError(Write("truncated.xyz", "3\n1 2 3\n4 5 6\n"), 1, "announces 3 points, the file holds 2");
+  ExpectError(Write("undercount.pts", "1\n1 2 3\n4 5 6\n"), 1, "announces 1 points, the file holds 2");
+  ExpectError(Write("hugecount.xyz", "123456789012345678901234567890\n1 2 3\n"), 1, "the file holds 1");
+  ExpectPoints(Write("zeros.xyz", "002\n1 2 3\n4 5 6\n"), { { 1, 2, 3 }, { 4, 5, 6 } });
   ExpectError(Write("counts.xyz", "2\n1 2 3\n2\n"), 3, "found 1");
   ExpectError(Write("negative_count.xyz", "-2\n1 2 3\n"), 1, "found 1");
   ExpectError(Write("real_count.txt", "2.0\n1 2 3\n"), 1, "found 1");
