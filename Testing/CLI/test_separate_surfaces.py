@@ -50,7 +50,7 @@ for k, (name, n, points, truth) in enumerate(ss.clouds(ss.GRIDS[:2], ss.PAIRS[:2
 # apart: the answer is one part (wrong) and must say that only edges far
 # longer than the spacing hold it together. Two spheres touching at a point
 # are one part (right) and must not.
-JOINED = {"two spheres 0.5 apart, 6000 and 600 points": True,
+JOINED = {"two spheres 0.5 apart, 6000 and 600 points": True,  # True: joined today
           "two nested cube surfaces, sides 2 and 1, 1500 points each": True,
           "two spheres touching at a point": False}
 for name, n, points, truth in ss.mixed():
@@ -63,8 +63,14 @@ for name, n, points, truth in ss.mixed():
     said = held_together(cloud)
     print("%s (%d points): Betti %s, truth %s, %s" % (name, n, betti, truth,
                                                      "warned as joined" if said else "not warned as joined"))
-    if said != JOINED[short] or (betti != truth) != JOINED[short]:
-        failures.append(name + (" (not warned as joined)" if JOINED[short] else " (warned as joined)"))
+    # Today the joined pairs are answered wrong and must be warned; a right
+    # answer must not be (should they ever come out right, that passes too).
+    if betti != truth and not said:
+        failures.append(name + " (answered %s, truth %s, not warned as joined)" % (betti, truth))
+    elif betti == truth and said:
+        failures.append(name + " (right, yet warned as joined)")
+    elif not JOINED[short] and betti != truth:
+        failures.append(name + " (answered %s, truth %s)" % (betti, truth))
 
 # Two nested spheres whose shell fills (a solid around a void) are answered by
 # the window where they are apart; the same from their stored flow complex
