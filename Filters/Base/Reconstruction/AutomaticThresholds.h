@@ -99,9 +99,10 @@ struct ThresholdRule
   /// their ends, it has more parts of JoinShare of its samples (and
   /// JoinSmallest) than with them (LongJoins.h): two spheres of 6 000 and 600
   /// i.i.d. points 0.5 apart, joined by a lump of tetrahedra, and two nested
-  /// cube surfaces whose shell filled, fall into their two surfaces at 2.5-4
-  /// (6 misses the cubes); no right answer of 282 clouds does at 2.5-4 (2
-  /// parts a rod-joined pair, Data/EXPERIMENTS.md).
+  /// cube surfaces whose shell filled, fall into their two surfaces at any
+  /// factor from 2.5 to 4 (6 misses the cubes); no right answer of 282 clouds
+  /// falls apart at 2.5-4 (at 2, two spheres joined by a rod do;
+  /// Data/EXPERIMENTS.md).
   double JoinFactor = 3;
   int JoinNeighbours = 6;
   double JoinShare = 0.01;
