@@ -259,6 +259,16 @@ std::vector<std::string> ReconstructionChoiceWarnings(const ThresholdChoice& cho
       " times the sample spacing at an end" + where + ": separate closed surfaces a few spacings "
       "apart may have been joined across the gap, or the space between them filled");
   }
+  if (choice.NoisyJoin)
+  {
+    const auto& b = choice.Window.Betti;
+    lines.push_back("the answer's " + std::to_string(b[2]) + " voids share " +
+      (b[0] == 1 ? std::string("one part") : std::to_string(b[0]) + " parts") +
+      ", and the samples are noisy (local flatness at " + std::to_string(flowrecon::FlatnessScales().front().K) +
+      " neighbours " + Number(choice.NoiseFlatness, 2) +
+      " of a volume sample's): closed surfaces closer than their noise cannot be told "
+      "from touching ones, so separate surfaces may have been joined");
+  }
   // A resurfaced answer has said which solid lasts longer.
   if (choice.Longest.Length() > choice.Window.Length() && choice.Longest.Betti != choice.Window.Betti &&
     !(choice.Resurfaced && choice.Longest.Betti == choice.Solid.Betti))

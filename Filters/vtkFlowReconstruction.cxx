@@ -172,6 +172,7 @@ struct vtkFlowReconstruction::Cache
   /// Each sample's spacing (NeighbourSpacing), made when a t_r's answer is
   /// first checked for parts held by long edges: a new t_r reuses it.
   std::vector<double> Spacing;
+  double Noise = -1; ///< the samples' NoiseFlatness, kept the same way (-1: not yet)
 
   const std::vector<flowrecon::TopologyStep>& StepsBelow(double tmax)
   {
@@ -568,7 +569,7 @@ void vtkFlowReconstruction::FillOutputs(vtkMultiBlockDataSet* input, double tmax
     {
       flowrecon::CheckJoins(measured,
         std::vector<flowrecon::Point3>(fc.Points.begin(), fc.Points.begin() + fc.NumberOfInputPoints), compact,
-        &c.Spacing);
+        &c.Spacing, &c.Noise);
     }
     choice = &measured;
   }

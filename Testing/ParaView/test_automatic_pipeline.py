@@ -26,7 +26,9 @@ Flow Reconstruction, every property at its default, in pvpython.
   briefly before the ball and warn so; on two nested spheres whose gap fills
   into a solid shell, both take the two closed surfaces that hold briefly
   before it, and say so; on two spheres of unequal density joined before the
-  sparse one closes, both warn that only long edges hold the parts together.
+  sparse one closes, both warn that only long edges hold the parts together;
+  on two noisy spheres joined where their noise is as wide as their gap, both
+  warn that the samples are noisy.
 - Turning Automatic t_r off shows the Reconstruction Threshold (2) instead,
   and its Betti numbers are the profile's at 2.
 Usage: pvpython test_automatic_pipeline.py PLUGIN FLOWRECON WORKDIR
@@ -224,6 +226,17 @@ def main():
     c = check(name, unequal, None)
     expect(c["betti"] == truth or any("held together only by edges" in w for w in c["warnings"]),
            "%s: answered %s, truth %s, without the long-edge warning in %s" % (name, c["betti"], truth, c["warnings"]))
+    # Two spheres 0.2 apart with noise of the grid spacing, joined where the
+    # noise is as wide as the gap (1 0 2), with no long edge across it: warned
+    # as noisy voids sharing a part, in ParaView as on the command line.
+    name, _, points, truth = next(c for c in ss.noisy_isosurfaces()
+                                  if c[0] == "two spheres 0.2 apart, isosurface of a 32^3 grid, noise 1")
+    blurred = os.path.join(WORK, "noisy_spheres.xyz")
+    with open(blurred, "w") as f:
+        f.write(gc.to_xyz_text(points))
+    c = check(name, blurred, None)
+    expect(c["betti"] == truth or any("the samples are noisy" in w for w in c["warnings"]),
+           "%s: answered %s, truth %s, without the noise warning in %s" % (name, c["betti"], truth, c["warnings"]))
     grid, table = pipeline(torus, automatic=False)
     fd = grid.GetFieldData()
     fixed = tuple(int(v) for v in values(fd, "BettiNumbers"))

@@ -395,12 +395,14 @@ bool ThresholdChoice::NeedsJoins() const
 }
 
 bool CheckJoins(ThresholdChoice& choice, const std::vector<Point3>& samples, const CompactComplex& cells,
-  std::vector<double>* spacing)
+  std::vector<double>* spacing, double* noise)
 {
   const ThresholdRule& rule = choice.Rule;
   choice.Joined.clear();
   choice.JoinRatio = 0;
   choice.JoinPlace = { { 0, 0, 0 } };
+  choice.NoisyJoin = false;
+  choice.NoiseFlatness = -1;
   const auto& b = choice.Window.Betti;
   // Only where the profile cannot tell (voids sharing a part, a solid around
   // voids): elsewhere the search for the spacing would cost a k-NN pass.
@@ -420,6 +422,16 @@ bool CheckJoins(ThresholdChoice& choice, const std::vector<Point3>& samples, con
   choice.Joined = std::move(joins.Parts);
   choice.JoinRatio = joins.Ratio;
   choice.JoinPlace = joins.Where;
+  if (choice.Joined.empty() && b[2] > b[0] && samples.size() >= FlatnessMinimumPoints())
+  {
+    const FlatnessScale& smallest = FlatnessScales().front();
+    choice.NoiseFlatness = noise && *noise >= 0 ? *noise : MedianFlatness(samples, smallest.K) / smallest.Volume;
+    if (noise)
+    {
+      *noise = choice.NoiseFlatness;
+    }
+    choice.NoisyJoin = choice.NoiseFlatness >= rule.NoisyFlatness;
+  }
   return true;
 }
 

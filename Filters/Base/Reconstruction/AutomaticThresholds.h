@@ -107,6 +107,15 @@ struct ThresholdRule
   int JoinNeighbours = 6;
   double JoinShare = 0.01;
   Id JoinSmallest = 10;
+  /// Voids sharing a part with no long edge to part them are still warned
+  /// when the samples are noisy: their MedianFlatness at the smallest
+  /// FlatnessScale is at least this share of a volume sample's there. Noise
+  /// blurs a gap narrower than itself into cells of the sample spacing, so
+  /// two surfaces that close apart cannot be told from two that touch.
+  /// Measured (Data/EXPERIMENTS.md): surfaces without noise 0.00-0.06, even
+  /// 316 vertices of a decimated mesh; noise of half the spacing 0.41, of one
+  /// spacing 0.74-0.89.
+  double NoisyFlatness = 0.25;
 };
 
 struct ThresholdChoice
@@ -180,6 +189,13 @@ struct ThresholdChoice
   std::vector<Id> Joined;
   double JoinRatio = 0; ///< the least long edge between two of them, over the spacing at its finer end
   Point3 JoinPlace{ { 0, 0, 0 } }; ///< that edge's midpoint
+  /// Voids sharing a part (b2 > b0) that no long edge holds together, in a
+  /// noisy sample (CheckJoins; warned): NoiseFlatness is at least
+  /// Rule.NoisyFlatness.
+  bool NoisyJoin = false;
+  /// The samples' MedianFlatness at the smallest FlatnessScale over a volume
+  /// sample's there, when CheckJoins measured it (-1: not measured).
+  double NoiseFlatness = -1;
   /// Whether CheckJoins may have something to measure: a window with voids,
   /// where a part holds several of them or the answer is Filled (CheckJoins
   /// also measures answers whose cells are solid enough).
@@ -259,12 +275,15 @@ void CheckRows(ThresholdChoice& choice, const std::vector<Node>& nodes, Id sampl
 /// sets Joined, JoinRatio and JoinPlace (FindLongJoins with the Rule's Join
 /// constants) when the window has voids and a part of it holds several
 /// (b2 > b0), or it is Filled, or `cells` has Rule.SolidShare tetrahedra per
-/// sample in it; clears them otherwise. Returns whether it measured.
+/// sample in it; clears them otherwise. Where a part holds several voids and
+/// no long edge parts it, sets NoiseFlatness and NoisyJoin (at least
+/// FlatnessMinimumPoints samples). Returns whether it measured.
 /// `spacing`, when given, keeps every sample's NeighbourSpacing across calls
 /// on one cloud (filled on the first measure); else only the samples in
-/// `cells` are measured.
+/// `cells` are measured. `noise`, when given, keeps NoiseFlatness the same
+/// way (negative: not measured yet).
 bool CheckJoins(ThresholdChoice& choice, const std::vector<Point3>& samples, const CompactComplex& cells,
-  std::vector<double>* spacing = nullptr);
+  std::vector<double>* spacing = nullptr, double* noise = nullptr);
 
 /// The Threshold of the carrier of every maximum with cells in `run`, sorted:
 /// MaximaBelow at any t (the count below t) once the run is gone.
