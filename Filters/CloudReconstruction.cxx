@@ -353,7 +353,7 @@ void CloudRun::Draw()
     try
     {
       // The compact output stands in for the stable manifolds: none is drawn
-      // (the grid keeps its samples and Gabriel edges, which nothing writes).
+      // (only the samples and Gabriel edges are, which the output leaves out).
       const std::vector<Id> draw = this->Settings.Compact
         ? std::vector<Id>()
         : NodesToDraw(r.Complex.Nodes, r.Carriers, r.Run, this->DrawThreshold);
@@ -485,6 +485,14 @@ void CloudRun::WriteOutputs()
   CloudReconstructionReport& report = this->Result;
   report.TopologyError = settings.Topology ? this->Chosen.TopologyError : "not asked for";
   this->Report(0.95, "output");
+  if (settings.Compact)
+  {
+    // The compact cells replace the exact ones in every caller, which keeps
+    // only this grid's field data: its samples, Gabriel edges and their ten
+    // arrays (1 s and some 100 bytes a sample at 10^6 points) went unread.
+    this->Outputs.Grid->Initialize();
+  }
+  else
   {
     const CellsByNode triangles = PositionsByRow(fc.TriangleNode, fc.Nodes.size());
     const CellsByNode tetrahedra = PositionsByRow(fc.TetrahedronNode, fc.Nodes.size());
