@@ -219,24 +219,21 @@ def main():
     # Two spheres of 6 000 and 600 points joined before the sparse one closes
     # (1 0 2; no t_r has them apart): warned in ParaView as on the command line
     # that only edges far longer than the spacing hold the two parts together.
-    name, _, points, truth = next(c for c in ss.mixed() if c[0].startswith("two spheres 0.5 apart, 6000"))
-    unequal = os.path.join(WORK, "unequal_spheres.xyz")
-    with open(unequal, "w") as f:
-        f.write(gc.to_xyz_text(points))
-    c = check(name, unequal, None)
-    expect(c["betti"] == truth or any("held together only by edges" in w for w in c["warnings"]),
-           "%s: answered %s, truth %s, without the long-edge warning in %s" % (name, c["betti"], truth, c["warnings"]))
     # Two spheres 0.2 apart with noise of the grid spacing, joined where the
     # noise is as wide as the gap (1 0 2), with no long edge across it: warned
-    # as noisy voids sharing a part, in ParaView as on the command line.
-    name, _, points, truth = next(c for c in ss.noisy_isosurfaces()
-                                  if c[0] == "two spheres 0.2 apart, isosurface of a 32^3 grid, noise 1")
-    blurred = os.path.join(WORK, "noisy_spheres.xyz")
-    with open(blurred, "w") as f:
-        f.write(gc.to_xyz_text(points))
-    c = check(name, blurred, None)
-    expect(c["betti"] == truth or any("the samples are noisy" in w for w in c["warnings"]),
-           "%s: answered %s, truth %s, without the noise warning in %s" % (name, c["betti"], truth, c["warnings"]))
+    # as noisy voids sharing a part.
+    unequal = next(c for c in ss.mixed() if c[0].startswith("two spheres 0.5 apart, 6000"))
+    blurred = next(c for c in ss.noisy_isosurfaces()
+                   if c[0] == "two spheres 0.2 apart, isosurface of a 32^3 grid, noise 1")
+    for (name, _, points, truth), file, said in ((unequal, "unequal_spheres.xyz", "held together only by edges"),
+                                                 (blurred, "noisy_spheres.xyz", "the samples are noisy")):
+        path = os.path.join(WORK, file)
+        with open(path, "w") as f:
+            f.write(gc.to_xyz_text(points))
+        c = check(name, path, None)
+        expect(c["betti"] == truth or any(said in w for w in c["warnings"]),
+               "%s: answered %s, truth %s, without the warning '%s' in %s"
+               % (name, c["betti"], truth, said, c["warnings"]))
     grid, table = pipeline(torus, automatic=False)
     fd = grid.GetFieldData()
     fixed = tuple(int(v) for v in values(fd, "BettiNumbers"))
