@@ -122,6 +122,11 @@ public:
   ReconstructionResult Run(const std::vector<Id>& initializationEdges, const Progress& progress)
   {
     this->Result.Nodes.assign(this->Nodes.size(), NoOffer());
+    this->Closed.resize(this->Nodes.size());
+    for (std::size_t d = 0; d < this->Nodes.size(); ++d)
+    {
+      this->Closed[d] = !this->Survives[d] || this->Nodes[d].IsInfinity() ? 1 : 0;
+    }
     std::vector<Id> edges = initializationEdges;
     std::sort(edges.begin(), edges.end());
     edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
@@ -177,6 +182,7 @@ private:
   {
     this->Running = std::max(this->Running, priority);
     Insertion& ins = this->Result.Nodes[node];
+    this->Closed[node] = 1;
     ins.Step = static_cast<Id>(this->Result.Order.size());
     ins.Priority = priority;
     ins.Threshold = this->Running;
@@ -225,7 +231,10 @@ private:
     }
     for (const Id d : g.Out.Row(c))
     {
-      this->Consider(d, PersistenceRatio(this->Nodes[d].Value, vc), 1, Extension::Upflow, c);
+      if (!this->Closed[d])
+      {
+        this->Consider(d, PersistenceRatio(this->Nodes[d].Value, vc), 1, Extension::Upflow, c);
+      }
     }
     // "Index one nodes sponsor nodes with the same dimension": siblings through
     // a common index-0 ancestor. A shorter sibling would give a ratio below 1;
@@ -239,7 +248,7 @@ private:
     {
       for (const Id d : g.Out.Row(b))
       {
-        if (d != c)
+        if (d != c && !this->Closed[d])
         {
           this->Consider(d, PersistenceRatioAtLeastOne(this->Nodes[d].Value, vc), 1, Extension::Horizontal, c);
         }
@@ -324,7 +333,7 @@ private:
 
   void Consider(Id d, double ratio, int gated, Extension kind, Id sponsor)
   {
-    if (this->Result.Nodes[d].Step >= 0 || !this->Survives[d] || this->Nodes[d].IsInfinity())
+    if (this->Closed[d])
     {
       return;
     }
@@ -346,6 +355,10 @@ private:
 
   const std::vector<Node>& Nodes;
   const std::vector<bool>& Survives;
+  /// Per node, 1 once it can take no offer (inserted, cancelled, infinity):
+  /// most neighbours an extension looks at are inserted already, and this
+  /// byte, unlike their records and insertions, stays in the cache.
+  std::vector<std::uint8_t> Closed;
   Adjacency Graph;
   double Tr;
   OfferQueue Queue;
