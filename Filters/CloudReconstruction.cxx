@@ -490,7 +490,10 @@ void CloudRun::WriteOutputs()
     // The compact cells replace the exact ones in every caller, which keeps
     // only this grid's field data: its samples, Gabriel edges and their ten
     // arrays (1 s and some 100 bytes a sample at 10^6 points) went unread.
-    this->Outputs.Grid->Initialize();
+    if (this->Outputs.Grid)
+    {
+      this->Outputs.Grid->Initialize();
+    }
   }
   else
   {

@@ -809,6 +809,34 @@ int main()
     noise = -1;
     CheckJoins(n, points, cells, &kept, &noise);
     CHECK(n.NoisyJoin && noise == n.NoiseFlatness && noise > 0.5);
+    // Neighbourhoods that say nothing of noise are not noisy: samples on
+    // lines 100 times finer along than across (each 10 nearest on one line:
+    // flat, 0, where the ratio of two rounding errors used to stand), and
+    // each sample given 12 times (its copies fill its neighbourhood: the
+    // places are measured).
+    {
+      std::vector<Point3> rows, copies;
+      for (int line = 0; line < 20; ++line)
+      {
+        for (int k = 0; k < 20; ++k)
+        {
+          rows.push_back({ { 0.01 * k + 0.003 * line, 1.0 * line, 0.5 * (line % 3) } });
+        }
+      }
+      CHECK(MedianFlatness(rows, 10) == 0);
+      n.Window.Betti = { { 1, 0, 2 } };
+      std::vector<double> none(rows.size(), 100.0);
+      CheckJoins(n, rows, CompactComplex(), &none);
+      CHECK(n.NoiseFlatness == 0 && !n.NoisyJoin);
+      shaken(0.02, points, cells);
+      for (const Point3& p : points)
+      {
+        copies.insert(copies.end(), 12, p);
+      }
+      std::vector<double> far(copies.size(), 100.0);
+      CheckJoins(n, copies, CompactComplex(), &far);
+      CHECK(n.NoiseFlatness >= 0 && n.NoiseFlatness < n.Rule.NoisyFlatness / 10 && !n.NoisyJoin);
+    }
     points.resize(150); // under FlatnessMinimumPoints: not measured
     cells = CompactComplex();
     kept.clear();

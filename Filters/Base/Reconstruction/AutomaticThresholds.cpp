@@ -425,7 +425,21 @@ bool CheckJoins(ThresholdChoice& choice, const std::vector<Point3>& samples, con
   if (choice.Joined.empty() && b[2] > b[0] && samples.size() >= FlatnessMinimumPoints())
   {
     const FlatnessScale& smallest = FlatnessScales().front();
-    choice.NoiseFlatness = noise && *noise >= 0 ? *noise : MedianFlatness(samples, smallest.K) / smallest.Volume;
+    if (!(noise && *noise >= 0))
+    {
+      // Each place once: copies of a sample would make its neighbourhood one
+      // point, which says nothing of the noise.
+      std::vector<Point3> places(samples);
+      std::sort(places.begin(), places.end());
+      places.erase(std::unique(places.begin(), places.end()), places.end());
+      choice.NoiseFlatness = places.size() >= FlatnessMinimumPoints()
+        ? MedianFlatness(places, smallest.K) / smallest.Volume
+        : -1;
+    }
+    else
+    {
+      choice.NoiseFlatness = *noise;
+    }
     if (noise)
     {
       *noise = choice.NoiseFlatness;

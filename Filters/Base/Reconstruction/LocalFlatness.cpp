@@ -26,10 +26,16 @@ double Median(std::vector<double>& values)
 }
 
 /// lambda_min / lambda_mid of the covariance of `near`'s first k points;
-/// negative when the neighbourhood is degenerate (duplicates: it says
-/// nothing either way).
+/// negative when they are one place (duplicates: it says nothing either way);
+/// 0 when they lie on a line (a curve's sample, flat: the ratio of two
+/// rounding errors said anything from 0 to 1 there).
 double Flatness(const std::vector<Eigen::Vector3d>& near, std::size_t k)
 {
+  if (std::all_of(near.begin(), near.begin() + static_cast<std::ptrdiff_t>(k),
+        [&near](const Eigen::Vector3d& p) { return p == near[0]; }))
+  {
+    return -1;
+  }
   Eigen::Vector3d mean = Eigen::Vector3d::Zero();
   for (std::size_t i = 0; i < k; ++i)
   {
@@ -42,7 +48,7 @@ double Flatness(const std::vector<Eigen::Vector3d>& near, std::size_t k)
     c += (near[i] - mean) * (near[i] - mean).transpose();
   }
   const Eigen::Vector3d ev = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(c, Eigen::EigenvaluesOnly).eigenvalues();
-  return ev[1] > 0 ? std::max(0.0, ev[0]) / ev[1] : -1;
+  return ev[1] > 1e-12 * ev[2] ? std::max(0.0, ev[0]) / ev[1] : 0.0;
 }
 
 } // namespace

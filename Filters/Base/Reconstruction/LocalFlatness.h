@@ -34,7 +34,9 @@ const std::array<FlatnessScale, 3>& FlatnessScales();
 /// n/probes-th), of lambda_min / lambda_mid, the two smallest eigenvalues of
 /// the covariance of the probe's `k` nearest samples (the probe included):
 /// near 0 where the samples lie on a surface or a curve, 0.6-0.8 inside a
-/// volume sampled uniformly (k 30). 1 for fewer than k + 1 points.
+/// volume sampled uniformly (k 30); 0 for a neighbourhood on one line, and a
+/// neighbourhood that is one place (duplicates) is left out. 1 for fewer than
+/// k + 1 points.
 double MedianFlatness(const std::vector<Point3>& points, int k = 30, std::size_t probes = 2000);
 
 /// MedianFlatness for several neighbourhood sizes at once (one search per
