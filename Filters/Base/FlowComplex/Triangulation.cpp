@@ -65,6 +65,12 @@ Triangulation::Triangulation(const std::vector<Point3>& points, const Progress& 
   {
     this->Vertices[v->info()] = v;
   }
+  // Per-cell tables, the lists of critical simplices and the cells' own ids
+  // are 32-bit.
+  if (this->DT.number_of_cells() >= static_cast<std::size_t>(INT32_MAX))
+  {
+    throw InputError("the Delaunay triangulation of this many points exceeds 2^31 cells");
+  }
   // One pass: dense ids for finite cells, -1 for the infinite ones (CGAL's
   // number_of_finite_cells() is itself a pass over the cells).
   this->Cells.reserve(this->DT.number_of_cells());
@@ -76,14 +82,9 @@ Triangulation::Triangulation(const std::vector<Point3>& points, const Progress& 
     }
     else
     {
-      c->info() = static_cast<Id>(this->Cells.size());
+      c->info() = static_cast<std::int32_t>(this->Cells.size());
       this->Cells.push_back(c);
     }
-  }
-  // Per-cell tables and the lists of critical simplices use 32-bit cell ids.
-  if (this->Cells.size() >= static_cast<std::size_t>(INT32_MAX))
-  {
-    throw InputError("the Delaunay triangulation of this many points exceeds 2^31 cells");
   }
   if (threads >= 4)
   {
@@ -187,7 +188,7 @@ void Triangulation::NumberCellsByVertices()
   for (std::size_t k = 0; k < keyed.size(); ++k)
   {
     this->Cells[k] = keyed[k].Cell;
-    keyed[k].Cell->info() = static_cast<Id>(k);
+    keyed[k].Cell->info() = static_cast<std::int32_t>(k);
   }
 }
 
