@@ -80,7 +80,6 @@ Candidate Run(CappedBuild& build, double tp, bool take, const CloudReconstructio
   // what they need): it would only add to the topology's peak.
   c.R.Simplification = SimplificationResult();
   KeepEdgeArcs(c.R.Complex);
-  c.R.Run.Profile = std::vector<double>(); // unread: the output's profile comes from the steps
   // The queue's freed memory, handed back: the topology's allocations did not
   // reuse it (about 20 MB at 10^6 points).
   ReleaseFreedMemory();

@@ -159,7 +159,6 @@ public:
       const Insertion& best = this->Result.Nodes[top.Node];
       const double priority = best.Priority;
       this->Insert(top.Node, priority, best.Kind, best.Sponsor);
-      this->Result.Profile.push_back(priority);
       this->Extend(top.Node);
       if (this->Result.Order.size() % 4096 == 0)
       {

@@ -40,10 +40,10 @@ struct ReconstructionResult
 {
   std::vector<Insertion> Nodes; ///< one per node of the diagram
   std::vector<Id> Order;        ///< node id of each step
-  Id InitializationCount = 0;   ///< steps [0, InitializationCount) are initialization edges
-  /// Priorities of the popped nodes in pop order: the paper's reconstruction
-  /// profile when t_r = inf. Profile[i] is the priority of Order[InitializationCount + i].
-  std::vector<double> Profile;
+  /// Steps [0, InitializationCount) are initialization edges; the priorities
+  /// of the later ones (Nodes[Order[k]].Priority) are the paper's
+  /// reconstruction profile when t_r = inf.
+  Id InitializationCount = 0;
 
   /// Whether `node` belongs to the reconstruction at threshold t (t > 1).
   bool Contains(Id node, double t) const
