@@ -849,7 +849,7 @@ void SetBettiNumbers(CompactComplex& out)
 } // namespace
 
 CompactPieces PrepareCompact(const Retriangulation& re, const std::vector<Node>& nodes,
-  const std::vector<Id>& candidates, const Progress& progress)
+  const std::vector<Id>& candidates, const Progress& progress, bool releaseFlow)
 {
   std::vector<Id> patches, maxima;
   for (const Id node : SortedNodes(nodes, candidates))
@@ -864,12 +864,25 @@ CompactPieces PrepareCompact(const Retriangulation& re, const std::vector<Node>&
     }
   }
   CompactPieces pieces;
-  pieces.Neighbours = Neighbours(re.Tri());
+  // The patches' walks do not follow the flow, the maxima's cells do: without
+  // a maximum it goes first (13 bytes a cell; the walks' lists are a
+  // surface sample's peak).
+  if (releaseFlow && maxima.empty())
+  {
+    re.ReleaseFlow();
+  }
   WalkPatches(re, nodes, patches, progress, pieces);
   if (!maxima.empty())
   {
     FlowCells(re, nodes, maxima, progress, pieces);
+    if (releaseFlow)
+    {
+      re.ReleaseFlow();
+    }
   }
+  // After the walks, whose per-patch lists set that peak: 16 bytes a cell
+  // less there.
+  pieces.Neighbours = Neighbours(re.Tri());
   progress(1.0, "compact pieces");
   return pieces;
 }
@@ -950,11 +963,7 @@ CompactCells CellsOf(const Retriangulation& re)
 CompactComplex CompactReconstruction(const Retriangulation& re, const std::vector<Node>& nodes,
   const std::vector<Id>& selected, const Progress& progress, bool releaseFlow)
 {
-  const CompactPieces pieces = PrepareCompact(re, nodes, selected, progress.Range(0, 0.9));
-  if (releaseFlow)
-  {
-    re.ReleaseFlow();
-  }
+  const CompactPieces pieces = PrepareCompact(re, nodes, selected, progress.Range(0, 0.9), releaseFlow);
   progress(0.9, "compact voids");
   CompactComplex out = SelectCompact(re, nodes, pieces, selected);
   progress(1.0, "compact output");

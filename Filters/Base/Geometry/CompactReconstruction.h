@@ -137,9 +137,10 @@ struct CompactPieces
 };
 
 /// The pieces of the nodes `candidates` (as `selected` below); progress from
-/// 0 to 1 of `progress`.
+/// 0 to 1 of `progress`. With `releaseFlow`, re's flow (Retriangulation::Flow)
+/// is freed once the last piece that follows it is made.
 CompactPieces PrepareCompact(const Retriangulation& re, const std::vector<Node>& nodes,
-  const std::vector<Id>& candidates, const Progress& progress = Progress());
+  const std::vector<Id>& candidates, const Progress& progress = Progress(), bool releaseFlow = false);
 
 /// What the selection reads of the Delaunay cells, without the triangulation:
 /// a caller that keeps the pieces for many thresholds (CompactFamily) frees
@@ -173,8 +174,9 @@ CompactComplex SelectCompact(const CompactCells& cells, const std::vector<Node>&
 /// region of the complement that holds no maximum is filled with its cells:
 /// the exact reconstruction has no such void. Throws InputError when a node
 /// does not belong to `re`, Degenerate if a walk meets a tie. With
-/// `releaseFlow`, re's flow is freed after the walks (Retriangulation::ReleaseFlow:
-/// only for a caller that knows nothing else holds it).
+/// `releaseFlow`, re's flow is freed once no piece needs it (PrepareCompact;
+/// Retriangulation::ReleaseFlow: only for a caller that knows nothing else
+/// holds it).
 CompactComplex CompactReconstruction(const Retriangulation& re, const std::vector<Node>& nodes,
   const std::vector<Id>& selected, const Progress& progress = Progress(), bool releaseFlow = false);
 
