@@ -198,6 +198,8 @@ public:
     }
     this->Options.StableManifolds = false;
     this->Options.UnstableManifolds = false;
+    // The compact output's pieces are the triangles the build's walks cross.
+    this->Options.RecordWalks = settings.Compact;
   }
 
   void BuildAndChoose(); ///< [0, 0.7]: the flow complex, a run per t_p, the choice

@@ -399,6 +399,68 @@ Id SelectedFromPieces(const std::string& name, const std::vector<Point3>& p, dou
   return FamilyAgrees(b, tmax, 40);
 }
 
+/// The cells on the two sides of a claim's triangle, in either order: a walk
+/// names a triangle by whichever of its cells the link cache gave.
+std::set<std::pair<std::int32_t, int>> SidesOf(const CompactClaim& c)
+{
+  return { { c.Cells[0], c.Cells[0] < 0 ? 0 : c.Facets[0] }, { c.Cells[1], c.Cells[1] < 0 ? 0 : c.Facets[1] } };
+}
+
+/// A build that records its patches' walks (BuildOptions::RecordWalks) gives
+/// the compact pieces and output of a build that does not, which walks them
+/// again: at several t_r, with patches deferred (walked late, not recorded)
+/// or not.
+void RecordedWalksAgree(const std::string& name, const std::vector<Point3>& p, double defer)
+{
+  BuildOptions options;
+  options.StableManifolds = false;
+  options.UnstableManifolds = false;
+  options.DeferPatchesAboveRatio = defer;
+  Built plain, recorded;
+  plain.Complex = BuildFlowComplex(p, options, Progress(), &plain.Re);
+  options.RecordWalks = true;
+  recorded.Complex = BuildFlowComplex(p, options, Progress(), &recorded.Re);
+  CHECK(plain.Re->Walks().Known.empty());
+  const RecordedWalks& walks = recorded.Re->Walks();
+  const std::size_t facets = recorded.Re->Critical().Facets.size();
+  std::size_t known = 0;
+  for (std::size_t f = 0; f < facets; ++f)
+  {
+    known += walks.Has(f) ? 1 : 0;
+  }
+  // Every patch the build walked is recorded, and no deferred one.
+  CHECK(known + recorded.Complex.DeferredPatches.size() == facets);
+  CHECK(known > 0);
+  // The pieces themselves, with the cells on each side of every triangle.
+  const std::vector<Id> all = ReconstructionNodes(recorded.Complex, HUGE_VAL);
+  const CompactPieces walked = PrepareCompact(*plain.Re, plain.Complex.Nodes, all);
+  const CompactPieces replayed = PrepareCompact(*recorded.Re, recorded.Complex.Nodes, all);
+  bool samePieces = walked.Claims.size() == replayed.Claims.size() &&
+    walked.ExactFallbacks == replayed.ExactFallbacks;
+  for (std::size_t k = 0; samePieces && k < walked.Claims.size(); ++k)
+  {
+    const CompactClaim& a = walked.Claims[k];
+    const CompactClaim& b = replayed.Claims[k];
+    samePieces = a.Triangle == b.Triangle && a.Node == b.Node && SidesOf(a) == SidesOf(b);
+  }
+  CHECK(samePieces);
+  int same = 0, tried = 0;
+  for (const double tr : { 1.5, 2.0, 3.0, HUGE_VAL })
+  {
+    ++tried;
+    const std::vector<Id> selected = ReconstructionNodes(recorded.Complex, tr);
+    same += SameComplex(CompactReconstruction(*plain.Re, plain.Complex.Nodes, selected),
+              CompactReconstruction(*recorded.Re, recorded.Complex.Nodes, selected))
+      ? 1
+      : 0;
+  }
+  std::cout << "-- " << name << ": " << known << " of " << facets << " patches recorded, "
+            << walks.Codes.size() << " triangles; the pieces "
+            << (samePieces ? "equal" : "differ from") << " those walked again, and " << same
+            << " of " << tried << " compact outputs\n";
+  CHECK(same == tried);
+}
+
 } // namespace
 
 int main()
@@ -421,5 +483,9 @@ int main()
   std::cout << "-- cube, 600 i.i.d. points, and torus, 800, every threshold:\n";
   CHECK(FamilyAgrees(Build(clouds::Cube(600, 15)), 4, 0) +
       FamilyAgrees(Build(clouds::Torus(800, 15)), 4, 0) > 0);
+  // The walks the build records stand for the compact output's own.
+  RecordedWalksAgree("cube, 1500 i.i.d. points", clouds::Cube(1500, 21), HUGE_VAL);
+  RecordedWalksAgree("torus, 2000 i.i.d. points, far patches deferred", clouds::Torus(2000, 22), 1.0);
+  RecordedWalksAgree("grid of 6^3 points (cospherical ties)", clouds::Grid(6, 0, 23), HUGE_VAL);
   return check::Finish("TestCompactReconstruction");
 }

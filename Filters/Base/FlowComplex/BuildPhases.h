@@ -11,6 +11,7 @@
 #include "FlowComplexBuilder.h"
 #include "InputPreparation.h"
 #include "Progress.h"
+#include "RecordedWalks.h"
 #include "SuccessorForest.h"
 #include "Triangulation.h"
 
@@ -84,6 +85,8 @@ public:
   /// cell, whose memoised chains later stages continue (Retriangulation::Flow).
   std::unique_ptr<const std::vector<std::int32_t>> KeptMaximumOfCell;
   std::unique_ptr<SuccessorForest> KeptForest;
+  /// With Keep and options.RecordWalks: the triangles the patches' walks crossed.
+  RecordedWalks KeptWalks;
 
 private:
   // The phases, in the order Run calls them.
@@ -99,6 +102,7 @@ private:
   struct PatchBatch;
   void WalkPatches(std::size_t begin, PatchBatch& batch) const; ///< one chunk, in parallel
   void MergePatches(PatchBatch& batch);            ///< its 1-2 arcs (and geometry), in order
+  void RecordWalk(std::size_t i, PatchBatch& batch); ///< KeptWalks of patch i
   void ReserveArcsFor(const PatchBatch& batch);    ///< room for its arcs, or a refusal
   void AppendPatchGeometry(std::size_t i, const Patch& patch); ///< the triangles of patch i
 
@@ -131,6 +135,7 @@ private:
   Id M = 0, NEdges = 0, NFacets = 0;  ///< vertices, Gabriel edges, index-2 facets
   Id Base1 = 0, Base2 = 0, Base3 = 0; ///< first node id of each index
   std::vector<char> Deferred;         ///< per facet: patch not walked
+  bool RecordingWalks = false;        ///< the walks record their triangles (KeptWalks)
   std::vector<Id> TriangleBegin;      ///< per facet: first triangle (geometry only)
   std::vector<std::array<std::int32_t, 2>> Ends; ///< per facet: the maxima reached
   std::vector<char> PatchFaces;       ///< per facet: which end its normals face

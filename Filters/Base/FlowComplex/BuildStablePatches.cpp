@@ -25,7 +25,34 @@ struct Builder::PatchBatch
   std::size_t Begin = 0, Last = 0;
   std::vector<Patch> Patches;
   std::vector<Id> Fallbacks;
+  std::vector<std::vector<std::uint32_t>> Walked; ///< RecordedWalks codes, when recording
 };
+
+namespace
+{
+
+/// The RecordedWalks codes of a patch's Walked triangles (which it frees).
+std::vector<std::uint32_t> WalkCodes(const Triangulation& tri, Patch& patch)
+{
+  std::vector<std::uint32_t> codes(patch.Walked.size());
+  for (std::size_t j = 0; j < patch.Walked.size(); ++j)
+  {
+    CellHandle cell = patch.WalkedCells[j];
+    int opposite = tri.OppositeOf(cell, patch.Walked[j]);
+    if (tri.CellId(cell) < 0)
+    {
+      const CellHandle other = cell->neighbor(opposite);
+      opposite = other->index(cell);
+      cell = other;
+    }
+    codes[j] = static_cast<std::uint32_t>(tri.CellId(cell) * 4 + opposite);
+  }
+  patch.Walked = {};
+  patch.WalkedCells = {};
+  return codes;
+}
+
+} // namespace
 
 void Builder::WalkStablePatches()
 {
@@ -36,6 +63,15 @@ void Builder::WalkStablePatches()
   fc.TriangleNode.clear();
   // Where each patch's triangles start (for the index-3 cones); geometry only.
   this->TriangleBegin.assign(this->Options.StableManifolds ? this->Cs.Facets.size() + 1 : 0, 0);
+  this->KeptWalks = RecordedWalks();
+  this->RecordingWalks = this->Keep && this->Options.RecordWalks &&
+    this->Tri->NumberOfCells() < RecordedWalks::CellLimit;
+  if (this->RecordingWalks)
+  {
+    this->KeptWalks.Offsets.reserve(this->Cs.Facets.size() + 1);
+    this->KeptWalks.Offsets.push_back(0);
+    this->KeptWalks.Known.assign(this->Cs.Facets.size(), false);
+  }
   const double nf = static_cast<double>(this->NFacets) + 1;
   // Patches are independent: compute them in parallel, chunk by chunk, and merge
   // them in node order on this thread (which also reports progress).
@@ -100,6 +136,7 @@ void Builder::WalkPatches(std::size_t begin, PatchBatch& batch) const
   batch.Last = std::min(this->Cs.Facets.size(), begin + PatchChunk);
   batch.Patches.assign(batch.Last - begin, Patch());
   batch.Fallbacks.assign(batch.Last - begin, 0);
+  batch.Walked.assign(this->RecordingWalks ? batch.Last - begin : 0, {});
   tbb::parallel_for(tbb::blocked_range<std::size_t>(begin, batch.Last),
     [&](const tbb::blocked_range<std::size_t>& r) {
       for (std::size_t i = r.begin(); i != r.end(); ++i)
@@ -109,9 +146,12 @@ void Builder::WalkPatches(std::size_t begin, PatchBatch& batch) const
         {
           continue;
         }
-        patch = ComputeStableManifold(
-          *this->Tri, this->Cs, i, this->Options.StableManifolds, batch.Fallbacks[i - begin],
-          this->Options.ExactOnly);
+        patch = ComputeStableManifold(*this->Tri, this->Cs, i, this->Options.StableManifolds,
+          batch.Fallbacks[i - begin], this->Options.ExactOnly, this->RecordingWalks);
+        if (this->RecordingWalks)
+        {
+          batch.Walked[i - begin] = WalkCodes(*this->Tri, patch);
+        }
         // Sorted here, in parallel: equal runs are the 1-2 multiplicities.
         std::sort(patch.Arrivals.begin(), patch.Arrivals.end());
       }
@@ -173,8 +213,37 @@ void Builder::MergePatches(PatchBatch& batch)
     {
       this->AppendPatchGeometry(i, patch);
     }
+    if (this->RecordingWalks)
+    {
+      this->RecordWalk(i, batch);
+    }
     patch = Patch(); // release memory early
   }
+}
+
+void Builder::RecordWalk(std::size_t i, PatchBatch& batch)
+{
+  RecordedWalks& w = this->KeptWalks;
+  if (w.Offsets.empty())
+  {
+    return; // given up: more codes than 32-bit offsets hold
+  }
+  std::vector<std::uint32_t>& codes = batch.Walked[i - batch.Begin];
+  if (w.Codes.size() + codes.size() > UINT32_MAX)
+  {
+    w = RecordedWalks(); // the compact output walks the patches itself
+    return;
+  }
+  const bool walked = this->Deferred.empty() || !this->Deferred[i];
+  w.Known[i] = walked;
+  w.Codes.insert(w.Codes.end(), codes.begin(), codes.end());
+  w.Offsets.push_back(static_cast<std::uint32_t>(w.Codes.size()));
+  if (walked && batch.Fallbacks[i - batch.Begin] > 0)
+  {
+    w.Fallbacks.emplace_back(
+      static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(batch.Fallbacks[i - batch.Begin]));
+  }
+  std::vector<std::uint32_t>().swap(codes);
 }
 
 void Builder::AppendPatchGeometry(std::size_t i, const Patch& patch)

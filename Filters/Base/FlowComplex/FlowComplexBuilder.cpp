@@ -288,7 +288,8 @@ FlowComplex BuildFlowComplex(const std::vector<Point3>& points, const BuildOptio
   {
     *keep = std::make_unique<Retriangulation>(std::move(in), options, std::move(coords),
       std::move(builder.KeptTriangulation), std::move(builder.KeptCritical),
-      std::move(builder.KeptForest), std::move(builder.KeptMaximumOfCell));
+      std::move(builder.KeptForest), std::move(builder.KeptMaximumOfCell),
+      std::move(builder.KeptWalks));
   }
   fc.Time.Total = Seconds(start);
   progress(1.0, "done");

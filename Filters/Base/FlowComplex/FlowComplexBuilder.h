@@ -36,6 +36,10 @@ struct BuildOptions
   /// no 2-3 arc): every ratio of its arc is above it. DeferredFlowLines.h
   /// follows them when a stage needs them.
   double DeferFlowLinesAboveRatio = HUGE_VAL;
+  /// With a kept triangulation: the triangles each patch's walk crosses are
+  /// recorded there (Retriangulation::Walks), 4 bytes each, for a compact
+  /// output that would otherwise walk the patches again.
+  bool RecordWalks = false;
 };
 
 /// The flow complex of `points`. Throws InputError for unusable input (non-finite

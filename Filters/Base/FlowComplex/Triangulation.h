@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <stdexcept>
 #include <vector>
 
 namespace flowrecon
@@ -50,6 +51,23 @@ public:
       c->vertex(3)->info() } };
     std::sort(v.begin(), v.end());
     return v;
+  }
+
+  /// The index in `cell` of its vertex not in the triangle `t` (vertex ids),
+  /// which the cell must hold.
+  int OppositeOf(CellHandle cell, const std::array<Id, 3>& t) const
+  {
+    int sum = 0;
+    for (const Id v : t)
+    {
+      int i = 0;
+      if (!cell->has_vertex(this->Vertices[v], i))
+      {
+        throw std::logic_error("triangulation: a cell misses a triangle said to be its facet");
+      }
+      sum += i;
+    }
+    return 6 - sum;
   }
 
   /// Appends to `out` the finite vertices s such that (u, v, s) is a Delaunay facet,

@@ -146,21 +146,6 @@ Claim Sides(const Triangulation& tri, CellHandle cell, int opposite, Claim claim
   return claim;
 }
 
-/// The index in `cell` of its vertex not in the triangle `t` (triangulation ids).
-int OppositeOf(const Triangulation& tri, CellHandle cell, const std::array<Id, 3>& t)
-{
-  int sum = 0;
-  for (const Id v : t)
-  {
-    int i = 0;
-    if (!cell->has_vertex(tri.Vertex(v), i))
-    {
-      throw std::logic_error("compact reconstruction: a walk's cell misses its triangle");
-    }
-    sum += i;
-  }
-  return 6 - sum;
-}
 
 /// The claims of the walks of `patches` (index-2 node ids): each one's facet
 /// and every triangle its walk crosses, sorted.
@@ -173,6 +158,7 @@ void WalkPatches(const Retriangulation& re, const std::vector<Node>& nodes,
   std::vector<Id> fallbacks(patches.size(), 0);
   std::vector<char> foreign(patches.size(), 0);
   const Triangulation& tri = re.Tri();
+  const RecordedWalks& walks = re.Walks();
   ParallelSlices(static_cast<Id>(patches.size()), Id(1) << 14, progress, 0.0, 0.6,
     "compact patches", [&](Id first, Id last) {
       for (Id k = first; k < last; ++k)
@@ -192,6 +178,30 @@ void WalkPatches(const Retriangulation& re, const std::vector<Node>& nodes,
           foreign[k] = 1;
           continue;
         }
+        if (walks.Has(static_cast<std::size_t>(f)))
+        {
+          // As the build walked it (RecordedWalks.h): the same claims.
+          const std::uint32_t begin = walks.Offsets[f], end = walks.Offsets[f + 1];
+          fallbacks[k] = walks.FallbacksOf(static_cast<std::size_t>(f));
+          claims[k].reserve(end - begin + 1);
+          claims[k].push_back(Sides(tri, tri.Cell(facet.Cell), facet.Opposite, { own, node }));
+          for (std::uint32_t j = begin; j < end; ++j)
+          {
+            const std::uint32_t code = walks.Codes[j];
+            const CellHandle cell = tri.Cell(static_cast<Id>(code >> 2));
+            const int opposite = static_cast<int>(code & 3);
+            std::array<Id, 3> t;
+            for (int i = 0, n = 0; i < 4; ++i)
+            {
+              if (i != opposite)
+              {
+                t[n++] = cell->vertex(i)->info();
+              }
+            }
+            claims[k].push_back(Sides(tri, cell, opposite, { InputSimplex<3>(re, t), node }));
+          }
+          continue;
+        }
         const Patch patch = ComputeStableManifold(
           tri, cs, static_cast<std::size_t>(f), false, fallbacks[k], false, true);
         claims[k].reserve(patch.Walked.size() + 1);
@@ -201,7 +211,7 @@ void WalkPatches(const Retriangulation& re, const std::vector<Node>& nodes,
           const std::array<Id, 3>& t = patch.Walked[j];
           const CellHandle cell = patch.WalkedCells[j];
           claims[k].push_back(
-            Sides(tri, cell, OppositeOf(tri, cell, t), { InputSimplex<3>(re, t), node }));
+            Sides(tri, cell, tri.OppositeOf(cell, t), { InputSimplex<3>(re, t), node }));
         }
       }
     });
@@ -872,6 +882,10 @@ CompactPieces PrepareCompact(const Retriangulation& re, const std::vector<Node>&
     re.ReleaseFlow();
   }
   WalkPatches(re, nodes, patches, progress, pieces);
+  if (releaseFlow)
+  {
+    re.ReleaseWalks();
+  }
   if (!maxima.empty())
   {
     FlowCells(re, nodes, maxima, progress, pieces);

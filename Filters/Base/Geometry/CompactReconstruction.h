@@ -137,8 +137,9 @@ struct CompactPieces
 };
 
 /// The pieces of the nodes `candidates` (as `selected` below); progress from
-/// 0 to 1 of `progress`. With `releaseFlow`, re's flow (Retriangulation::Flow)
-/// is freed once the last piece that follows it is made.
+/// 0 to 1 of `progress`. The patches the build recorded (RecordedWalks.h) are
+/// not walked again. With `releaseFlow`, re's flow (Retriangulation::Flow) and
+/// recorded walks are freed once the last piece that reads them is made.
 CompactPieces PrepareCompact(const Retriangulation& re, const std::vector<Node>& nodes,
   const std::vector<Id>& candidates, const Progress& progress = Progress(), bool releaseFlow = false);
 

@@ -92,7 +92,7 @@ std::unique_ptr<Retriangulation> Retriangulation::OfStoredComplex(
 Retriangulation::Retriangulation(PreparedInput in, const BuildOptions& options,
   std::unique_ptr<const std::vector<Point3>> coords, std::unique_ptr<const Triangulation> tri,
   CriticalSimplices cs, std::unique_ptr<SuccessorForest> flow,
-  std::unique_ptr<const std::vector<std::int32_t>> maximumOfCell)
+  std::unique_ptr<const std::vector<std::int32_t>> maximumOfCell, RecordedWalks walks)
   : In(std::move(in))
   , Opts(options)
   , Coords(std::move(coords))
@@ -100,6 +100,7 @@ Retriangulation::Retriangulation(PreparedInput in, const BuildOptions& options,
   , Cs(std::move(cs))
   , MaximumOfCell(std::move(maximumOfCell))
   , Forest(std::move(flow))
+  , Walks_(std::move(walks))
 {
   if (static_cast<bool>(this->Forest) != static_cast<bool>(this->MaximumOfCell))
   {
@@ -129,6 +130,11 @@ SuccessorForest& Retriangulation::Flow() const
       this->Base3_ + static_cast<Id>(this->Cs.Cells.size()), 0, false, this->Opts.ExactOnly);
   }
   return *this->Forest;
+}
+
+void Retriangulation::ReleaseWalks() const
+{
+  this->Walks_ = RecordedWalks();
 }
 
 void Retriangulation::ReleaseFlow() const

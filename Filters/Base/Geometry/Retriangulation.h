@@ -8,6 +8,7 @@
 #include "CriticalSimplices.h"
 #include "FlowComplexBuilder.h"
 #include "InputPreparation.h"
+#include "RecordedWalks.h"
 #include "SuccessorForest.h"
 #include "Triangulation.h"
 
@@ -41,7 +42,8 @@ public:
   Retriangulation(PreparedInput in, const BuildOptions& options,
     std::unique_ptr<const std::vector<Point3>> coords, std::unique_ptr<const Triangulation> tri,
     CriticalSimplices cs, std::unique_ptr<SuccessorForest> flow = nullptr,
-    std::unique_ptr<const std::vector<std::int32_t>> maximumOfCell = nullptr);
+    std::unique_ptr<const std::vector<std::int32_t>> maximumOfCell = nullptr,
+    RecordedWalks walks = RecordedWalks());
   ~Retriangulation();
   /// The triangulation refers to Coords: not copied, not moved.
   Retriangulation(const Retriangulation&) = delete;
@@ -71,6 +73,11 @@ public:
   /// needs the memory (10^6 torus points: 19 M cells, 9 bytes each).
   void ReleaseFlow() const;
 
+  /// The triangles the build's walks crossed (BuildOptions::RecordWalks;
+  /// empty otherwise), and their release.
+  const RecordedWalks& Walks() const { return this->Walks_; }
+  void ReleaseWalks() const;
+
   static const char* Mismatch();
 
 private:
@@ -82,6 +89,7 @@ private:
   Id Base2_ = 0, Base3_ = 0;
   mutable std::unique_ptr<const std::vector<std::int32_t>> MaximumOfCell;
   mutable std::unique_ptr<SuccessorForest> Forest; ///< refers to Tri_ and MaximumOfCell
+  mutable RecordedWalks Walks_;
 
   void SetBases();
 };
