@@ -5,6 +5,7 @@
 #include "HasseTopology.h"
 #include "TopologyInput.h"
 #include "MemoryGuard.h"
+#include "NodeIndices.h"
 #include "ReconstructionConversion.h"
 #include "TopologyConversion.h"
 #include "StableManifoldGeometry.h"
@@ -57,7 +58,8 @@ struct Candidate
 /// (edge multiplicities): the others would add to the topology's peak.
 void KeepEdgeArcs(FlowComplex& fc)
 {
-  const auto edge = [&fc](const Arc& a) { return fc.Nodes[a.Lower].Index == 1; };
+  const std::vector<std::int8_t> index = NodeIndices(fc.Nodes);
+  const auto edge = [&index](const Arc& a) { return index[static_cast<std::size_t>(a.Lower)] == 1; };
   std::vector<Arc> kept;
   kept.reserve(static_cast<std::size_t>(std::count_if(fc.Arcs.begin(), fc.Arcs.end(), edge)));
   std::copy_if(fc.Arcs.begin(), fc.Arcs.end(), std::back_inserter(kept), edge);

@@ -5,6 +5,7 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
 
 #include <algorithm>
 #include <cmath>
@@ -415,7 +416,8 @@ void DeferredFlowLines::SetSimplification(const SimplificationResult* s, double 
       this->ByLowerBound.emplace_back(this->LowerBound(this->LeastBound(k)), k);
     }
   }
-  std::sort(this->ByLowerBound.begin(), this->ByLowerBound.end());
+  // Distinct keys (the second member): any sort gives the same order.
+  tbb::parallel_sort(this->ByLowerBound.begin(), this->ByLowerBound.end());
   this->NextByBound = 0;
 }
 

@@ -4,6 +4,9 @@
 #include "DeferredReconstruction.h"
 #include "HasseTopology.h"
 #include "MemoryGuard.h"
+#include "NodeIndices.h"
+
+#include <tbb/parallel_sort.h>
 
 #include <algorithm>
 #include <chrono>
@@ -42,7 +45,10 @@ CappedBuild Build(const std::vector<Point3>& points, const BuildOptions& options
 /// build does not hold them a second time.
 void TakeBuild(CappedBuild& b, bool take, CappedReconstruction& r)
 {
-  const auto lowerIndex = [&b](const Arc& a) { return b.Complex.Nodes[a.Lower].Index; };
+  // The indices by themselves: every arc reads its lower node's, at random,
+  // and a Node is 56 bytes.
+  const std::vector<std::int8_t> index = NodeIndices(b.Complex.Nodes);
+  const auto lowerIndex = [&index](const Arc& a) { return index[static_cast<std::size_t>(a.Lower)]; };
   std::size_t cones = 0, raw = 0;
   for (const Arc& a : b.Complex.Arcs)
   {
@@ -136,8 +142,11 @@ void SimplifyRun(CappedReconstruction& r, double tp, double cap, const Progress&
   }
   else if (r.Lines)
   {
-    std::sort(fc.Arcs.begin(), fc.Arcs.end(),
-      [](const Arc& a, const Arc& b) { return std::tie(a.Lower, a.Upper) < std::tie(b.Lower, b.Upper); });
+    // On every field: arcs that compare equal are equal, so the order does
+    // not depend on the schedule.
+    tbb::parallel_sort(fc.Arcs.begin(), fc.Arcs.end(), [](const Arc& a, const Arc& b) {
+      return std::tie(a.Lower, a.Upper, a.Multiplicity) < std::tie(b.Lower, b.Upper, b.Multiplicity);
+    });
   }
   if (r.Lines)
   {

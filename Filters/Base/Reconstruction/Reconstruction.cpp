@@ -3,6 +3,10 @@
 #include "CompressedRows.h"
 #include "HasseDiagram.h"
 #include "IndexedHeap.h"
+#include "NodeIndices.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
 
 #include <algorithm>
 #include <array>
@@ -21,14 +25,32 @@ namespace
 void CheckArcs(const std::vector<Node>& nodes, const std::vector<Arc>& arcs,
   const std::vector<bool>* survives)
 {
-  for (std::size_t i = 0; i < arcs.size(); ++i)
+  // In parallel, on the indices by themselves (a Node is 56 bytes and every
+  // arc reads two at random); the first bad arc then gives the message.
+  const Id n = static_cast<Id>(nodes.size());
+  const std::vector<std::int8_t> index = NodeIndices(nodes);
+  const auto bad = [&](const Arc& a) {
+    return a.Lower < 0 || a.Lower >= n || a.Upper < 0 || a.Upper >= n ||
+      index[a.Upper] != index[a.Lower] + 1 || a.Multiplicity < 0 ||
+      (survives && a.Multiplicity > 0 && (!(*survives)[a.Lower] || !(*survives)[a.Upper]));
+  };
+  const std::size_t first = tbb::parallel_reduce(
+    tbb::blocked_range<std::size_t>(0, arcs.size()), arcs.size(),
+    [&](const tbb::blocked_range<std::size_t>& r, std::size_t found) {
+      for (std::size_t i = r.begin(); i < r.end() && i < found; ++i)
+      {
+        if (bad(arcs[i]))
+        {
+          return i;
+        }
+      }
+      return found;
+    },
+    [](std::size_t a, std::size_t b) { return std::min(a, b); });
+  if (first < arcs.size())
   {
-    const Arc& a = arcs[i];
-    ValidateArc(nodes, a, i);
-    if (survives && a.Multiplicity > 0 && (!(*survives)[a.Lower] || !(*survives)[a.Upper]))
-    {
-      throw InputError("Hasse diagram: arc " + std::to_string(i) + " touches a cancelled node");
-    }
+    ValidateArc(nodes, arcs[first], first);
+    throw InputError("Hasse diagram: arc " + std::to_string(first) + " touches a cancelled node");
   }
 }
 

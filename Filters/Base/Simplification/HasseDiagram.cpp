@@ -1,6 +1,10 @@
 #include "HasseDiagram.h"
 
+#include "NodeIndices.h"
+
 #include "Progress.h"
+
+#include <tbb/parallel_sort.h>
 
 #include <algorithm>
 #include <limits>
@@ -39,11 +43,7 @@ HasseDiagram::HasseDiagram(const std::vector<Node>& nodes, const std::vector<Arc
     throw InputError("Hasse diagram: more than 2^31 nodes");
   }
   // The indices by themselves: every arc reads two, and a Node is 56 bytes.
-  std::vector<int> index(nodes.size());
-  for (std::size_t i = 0; i < nodes.size(); ++i)
-  {
-    index[i] = nodes[i].Index;
-  }
+  const std::vector<std::int8_t> index = NodeIndices(nodes);
   const auto valid = [&](const Arc& a) {
     return a.Lower >= 0 && a.Lower < n && a.Upper >= 0 && a.Upper < n &&
       index[a.Upper] == index[a.Lower] + 1 && a.Multiplicity >= 0;
@@ -90,7 +90,9 @@ HasseDiagram::HasseDiagram(const std::vector<Node>& nodes, const std::vector<Arc
                             [&](const Arc& a, const Arc& b) { return !before(a, b); }) == arcs.end();
   if (!increasing)
   {
-    std::sort(this->SampleArcs.begin(), this->SampleArcs.end(), before);
+    // Repeats are merged next, their multiplicities summed: the order among
+    // them, which a parallel sort does not fix, does not matter.
+    tbb::parallel_sort(this->SampleArcs.begin(), this->SampleArcs.end(), before);
     this->MergeRepeatedArcs();
   }
 }

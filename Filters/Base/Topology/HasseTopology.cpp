@@ -1,5 +1,7 @@
 #include "HasseTopology.h"
 
+#include "NodeIndices.h"
+
 #include "StableRadixSort.h"
 #include "UnionFind.h"
 
@@ -53,16 +55,6 @@ std::vector<Int> PairsOf(const std::vector<std::int8_t>& index, const std::vecto
     slot[slot[0] >= 0 ? 1 : 0] = static_cast<Int>(other);
   }
   return ends;
-}
-
-/// The nodes' indices side by side: the passes over the arcs read them at
-/// random, and a node is 56 bytes (at 10^6 points the nodes are 200 MB).
-std::vector<std::int8_t> Indices(const std::vector<Node>& nodes)
-{
-  std::vector<std::int8_t> index(nodes.size());
-  tbb::parallel_for(std::size_t(0), nodes.size(),
-    [&](std::size_t v) { index[v] = static_cast<std::int8_t>(nodes[v].Index); });
-  return index;
 }
 
 /// The barcode of the presence filtration, built in two passes over it (the
@@ -350,7 +342,7 @@ std::vector<double> PresenceTimes(const std::vector<Node>& nodes, const std::vec
     }
   }
   // Every face of a drawn cell is drawn with it: from the maxima down.
-  const std::vector<std::int8_t> index = Indices(nodes);
+  const std::vector<std::int8_t> index = NodeIndices(nodes);
   for (int upper = 3; upper >= 1; --upper)
   {
     for (const Arc& a : rawArcs)
@@ -371,7 +363,7 @@ std::vector<Bar> HasseBarcode(const std::vector<Node>& nodes, const std::vector<
   {
     NotClosed("the presence times and the diagram have different nodes");
   }
-  Barcode code(Indices(nodes), presence);
+  Barcode code(NodeIndices(nodes), presence);
   // Two passes of union-find, each bound by its random reads: side by side.
   // Their errors are reported in a fixed order (the output is deterministic).
   std::exception_ptr outside, components;
