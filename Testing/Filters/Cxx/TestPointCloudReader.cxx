@@ -41,6 +41,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -1223,6 +1224,39 @@ void TestCorruptSizes()
 
 } // namespace
 
+// Files of several megabytes are parsed in parallel chunks split at line ends
+// (PointCloudTextFormats.cxx): the same points in the same order as the text,
+// with CRLF ends, comments and blank lines anywhere, a count line first; and a
+// bad line deep in the file still named by its number.
+void TestLargeText()
+{
+  const int n = 300000; // ~13 MB: a dozen chunks
+  Points expected;
+  std::string text = "300000\r\n";
+  char buffer[128];
+  for (int i = 0; i < n; ++i)
+  {
+    const std::array<double, 3> p{ { std::ldexp(i, -7) - 1000.0, std::sin(0.001 * i), 1e-3 * (i % 977) } };
+    expected.push_back(p);
+    std::snprintf(buffer, sizeof(buffer), "%.17g %.17g %.17g%s", p[0], p[1], p[2],
+      i % 3 == 0 ? "\r\n" : "\n");
+    text += buffer;
+    if (i % 50001 == 0)
+    {
+      text += "# a comment\n\n";
+    }
+  }
+  ExpectPoints(Write("large.xyz", text), expected);
+  std::string bad = text;
+  const std::size_t at = bad.find('\n', bad.size() * 3 / 4) + 1;
+  const long line = std::count(bad.begin(), bad.begin() + static_cast<std::ptrdiff_t>(at), '\n') + 1;
+  bad.insert(at, "1 2 three\n");
+  ExpectError(Write("large_bad.xyz", bad), static_cast<int>(line), "cannot parse 'three'");
+  // The count must still match every point read.
+  ExpectError(Write("large_count.xyz", "300001" + text.substr(text.find('\r'))), 1,
+    "the first line announces 300001 points, the file holds 300000");
+}
+
 int main(int argc, char* argv[])
 {
   if (argc < 2)
@@ -1243,6 +1277,7 @@ int main(int argc, char* argv[])
 
   TestTextFormats();
   TestBadInput();
+  TestLargeText();
   TestWhatLibraryReadersMisread();
   TestStlAndPwn();
   TestLas();
