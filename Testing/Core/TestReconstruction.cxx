@@ -11,7 +11,9 @@
 #include "Reconstruction.h"
 #include "Simplification.h"
 
+#include <algorithm>
 #include <iostream>
+#include <iterator>
 #include <set>
 #include <string>
 #include <tuple>
@@ -238,6 +240,41 @@ void TestErrors()
   std::vector<Arc> bad = d.Arcs;
   bad.push_back(Arc{ P0, M1, 1 });
   CHECK(throws(bad, all, { S1 }, 2));
+  // The arcs are checked in parallel: the message still names the first bad
+  // arc of a long list, whatever its fault, and ids out of range are caught
+  // before they are read.
+  auto message = [&](const std::vector<Arc>& arcs, const std::vector<bool>& survives) {
+    try
+    {
+      Reconstruct(d.Nodes, arcs, survives, { S1 }, 2, Progress());
+    }
+    catch (const InputError& e)
+    {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  std::vector<Arc> many; // Fig. 1's arcs but M1's, again and again
+  while (many.size() < 200000)
+  {
+    std::copy_if(d.Arcs.begin(), d.Arcs.end(), std::back_inserter(many),
+      [](const Arc& x) { return x.Lower != M1 && x.Upper != M1; });
+  }
+  const std::size_t early = 70001, late = 150003;
+  std::vector<Arc> cancelledFirst = many, indexFirst = many, outOfRange = many;
+  cancelledFirst[early] = Arc{ S2, M1, 1 };
+  cancelledFirst[late] = Arc{ P0, M1, 1 };
+  indexFirst[early] = Arc{ P0, M1, 1 };
+  indexFirst[late] = Arc{ S2, M1, 1 };
+  outOfRange[early] = Arc{ 1 << 30, M1, 1 };
+  outOfRange[late] = Arc{ P0, M1, 1 };
+  const std::string a = message(cancelledFirst, cancelled);
+  const std::string b = message(indexFirst, cancelled);
+  const std::string c = message(outOfRange, all);
+  CHECK(a == "Hasse diagram: arc 70001 touches a cancelled node");
+  CHECK(b == "Hasse diagram: arc 70001 does not go up by one index");
+  CHECK(c == "Hasse diagram: arc 70001 refers to a node that does not exist");
+  std::cout << "   " << a << "; " << b << "; " << c << "\n";
   bool nnThrows = false;
   try
   {

@@ -45,7 +45,7 @@ std::vector<std::uint32_t> WalkCodes(const Triangulation& tri, Patch& patch)
       opposite = other->index(cell);
       cell = other;
     }
-    codes[j] = static_cast<std::uint32_t>(tri.CellId(cell) * 4 + opposite);
+    codes[j] = RecordedWalks::Code(tri.CellId(cell), opposite);
   }
   patch.Walked = {};
   patch.WalkedCells = {};

@@ -23,6 +23,12 @@ struct RecordedWalks
   /// triangle: which of its two cells names a triangle does not matter (the
   /// walk's own exit cell depends on the link cache, VoronoiWalk.h).
   static constexpr std::int64_t CellLimit = std::int64_t(1) << 30;
+  static std::uint32_t Code(std::int64_t cell, int opposite)
+  {
+    return static_cast<std::uint32_t>(cell * 4 + opposite);
+  }
+  static std::int64_t CellOf(std::uint32_t code) { return code >> 2; }
+  static int OppositeOf(std::uint32_t code) { return static_cast<int>(code & 3); }
 
   std::vector<std::uint32_t> Offsets; ///< per facet, where its codes start (facets + 1)
   std::vector<std::uint32_t> Codes;

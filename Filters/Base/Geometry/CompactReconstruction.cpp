@@ -146,7 +146,6 @@ Claim Sides(const Triangulation& tri, CellHandle cell, int opposite, Claim claim
   return claim;
 }
 
-
 /// The claims of the walks of `patches` (index-2 node ids): each one's facet
 /// and every triangle its walk crosses, sorted.
 void WalkPatches(const Retriangulation& re, const std::vector<Node>& nodes,
@@ -187,9 +186,8 @@ void WalkPatches(const Retriangulation& re, const std::vector<Node>& nodes,
           claims[k].push_back(Sides(tri, tri.Cell(facet.Cell), facet.Opposite, { own, node }));
           for (std::uint32_t j = begin; j < end; ++j)
           {
-            const std::uint32_t code = walks.Codes[j];
-            const CellHandle cell = tri.Cell(static_cast<Id>(code >> 2));
-            const int opposite = static_cast<int>(code & 3);
+            const CellHandle cell = tri.Cell(RecordedWalks::CellOf(walks.Codes[j]));
+            const int opposite = RecordedWalks::OppositeOf(walks.Codes[j]);
             std::array<Id, 3> t;
             for (int i = 0, n = 0; i < 4; ++i)
             {

@@ -1,7 +1,6 @@
 #include "HasseDiagram.h"
 
 #include "NodeIndices.h"
-
 #include "Progress.h"
 
 #include <tbb/parallel_sort.h>
