@@ -17,6 +17,7 @@
 #include "CliError.h"
 #include "CommandLine.h"
 #include "Commands.h"
+#include "HugePages.h"
 #include "Interrupt.h"
 #include "VtkMessageCapture.h"
 
@@ -223,6 +224,8 @@ std::string Version()
 
 int main(int argc, char* argv[])
 {
+  // Before anything else: the restarted process must see the same start.
+  flowrecon::cli::RestartWithHugePages(argv);
   // First thing: a Ctrl-C during start-up (loading VTK can take a while on a
   // busy machine) must also end with the one-line message, not a bare kill.
   CatchInterrupt();

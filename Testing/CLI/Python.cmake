@@ -21,6 +21,10 @@ flowrecon_add_cli_python_test(py.diagram_gudhi test_diagram_gudhi.py diagram_gud
 # The flow complex is the same on 1, 2 and all threads (the core is parallel).
 flowrecon_add_cli_python_test(py.threads_determinism test_threads.py threads)
 
+# The restart with huge pages (Apps/HugePages.h): the tunable reaches the running
+# process as documented, the arguments survive, the output does not change.
+flowrecon_add_cli_python_test(py.huge_pages test_huge_pages.py huge_pages)
+
 # The output-sensitive reconstruction equals the eager one below every t_r
 # (docs/design.md, "Cost follows the output").
 flowrecon_add_cli_python_test(py.reconstruction.lazy_equals_eager test_lazy_equals_eager.py lazy_equals_eager)
