@@ -27,11 +27,9 @@ void CheckArcs(const std::vector<Node>& nodes, const std::vector<Arc>& arcs,
 {
   // In parallel, on the indices by themselves (a Node is 56 bytes and every
   // arc reads two at random); the first bad arc then gives the message.
-  const Id n = static_cast<Id>(nodes.size());
   const std::vector<std::int8_t> index = NodeIndices(nodes);
   const auto bad = [&](const Arc& a) {
-    return a.Lower < 0 || a.Lower >= n || a.Upper < 0 || a.Upper >= n ||
-      index[a.Upper] != index[a.Lower] + 1 || a.Multiplicity < 0 ||
+    return !IsValidArc(index, a) ||
       (survives && a.Multiplicity > 0 && (!(*survives)[a.Lower] || !(*survives)[a.Upper]));
   };
   const std::size_t first = tbb::parallel_reduce(

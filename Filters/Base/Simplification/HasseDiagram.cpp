@@ -43,10 +43,7 @@ HasseDiagram::HasseDiagram(const std::vector<Node>& nodes, const std::vector<Arc
   }
   // The indices by themselves: every arc reads two, and a Node is 56 bytes.
   const std::vector<std::int8_t> index = NodeIndices(nodes);
-  const auto valid = [&](const Arc& a) {
-    return a.Lower >= 0 && a.Lower < n && a.Upper >= 0 && a.Upper < n &&
-      index[a.Upper] == index[a.Lower] + 1 && a.Multiplicity >= 0;
-  };
+  const auto valid = [&index](const Arc& a) { return IsValidArc(index, a); };
   // Lists laid out with the capacity of their first arcs (~3 a node).
   std::vector<std::uint32_t> inDegree(nodes.size(), 0), outDegree(nodes.size(), 0);
   std::size_t sampleArcs = 0;
