@@ -223,6 +223,41 @@ void ReturnNodes(CappedReconstruction& r, CappedBuild& build)
   MoveNodes(r.Complex, build.Complex);
 }
 
+HeldRun Hold(CappedReconstruction&& r)
+{
+  HeldRun h;
+  h.Run = Pack(r.Run, r.Carriers);
+  h.Simplified = r.Simplified;
+  h.DeferredPatches = r.DeferredPatches;
+  h.WalkedLate = r.WalkedLate;
+  h.ReplayedOwners = r.ReplayedOwners;
+  h.EagerBecause = r.EagerBecause;
+  h.SimplificationSeconds = r.SimplificationSeconds;
+  h.QueueSeconds = r.QueueSeconds;
+  r = CappedReconstruction();
+  return h;
+}
+
+CappedReconstruction Restore(HeldRun&& h, CappedBuild& build)
+{
+  CappedReconstruction r;
+  r.Complex = std::move(build.Complex);
+  // The build's own arcs and lines, not the run's (it simplified a copy).
+  r.Complex.Arcs = std::vector<Arc>();
+  r.Complex.PendingFlowLines = std::vector<PendingFlowLine>();
+  r.Triangulation = build.Triangulation;
+  Unpack(h.Run, r.Run, r.Carriers);
+  h.Run = PackedRun();
+  r.Simplified = h.Simplified;
+  r.DeferredPatches = h.DeferredPatches;
+  r.WalkedLate = h.WalkedLate;
+  r.ReplayedOwners = h.ReplayedOwners;
+  r.EagerBecause = std::move(h.EagerBecause);
+  r.SimplificationSeconds = h.SimplificationSeconds;
+  r.QueueSeconds = h.QueueSeconds;
+  return r;
+}
+
 double FlowLineDeferralRatio(double cap, double persistenceThreshold)
 {
   return 1.25 * cap * std::max(1.0, persistenceThreshold);

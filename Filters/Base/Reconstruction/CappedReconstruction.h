@@ -7,6 +7,7 @@
 
 #include "DeferredFlowLines.h"
 #include "FlowComplexBuilder.h"
+#include "PackedRun.h"
 #include "Reconstruction.h"
 #include "Retriangulation.h"
 #include "Simplification.h"
@@ -93,6 +94,29 @@ CappedBuild BuildBelow(const std::vector<Point3>& points, BuildOptions options,
   bool keepRawPatchArcs);
 CappedReconstruction ReconstructBuilt(
   CappedBuild& build, double persistenceThreshold, bool take, const Progress& progress);
+
+/// A run of a build kept for an output that reads only its insertions and
+/// carriers (the compact output: no drawn stable manifolds, hence no cones,
+/// lines or arcs), while the build serves another t_p. About a third of the
+/// memory of the run held whole, and no time to make it again.
+struct HeldRun
+{
+  PackedRun Run;
+  bool Simplified = false;
+  Id DeferredPatches = 0, WalkedLate = 0, ReplayedOwners = 0;
+  std::string EagerBecause;
+  double SimplificationSeconds = 0, QueueSeconds = 0;
+};
+
+/// Keeps what an output without drawn stable manifolds reads of `r` (a run of
+/// a build that did not take it, its nodes given back) and frees the rest.
+HeldRun Hold(CappedReconstruction&& r);
+
+/// The held run made whole again on the build's complex, which it takes (the
+/// build is spent): nodes and triangulation, without the build's arcs or
+/// pending lines. Its Lines, Cones and arcs are empty: the stable manifolds
+/// cannot be drawn from it, and CompleteCones does nothing.
+CappedReconstruction Restore(HeldRun&& held, CappedBuild& build);
 
 /// Moves the parts of a flow complex that no run changes (nodes, points,
 /// representatives): lent by the build to a run that does not take it, so

@@ -1,0 +1,138 @@
+// A t_p candidate's run held packed while the build serves the next one
+// (HeldRun, as `flowrecon reconstruct` holds it for the compact output) must
+// come back as the run a build of its own makes at that t_p: every insertion,
+// the order and the carriers, on the same nodes. The oracle is that separate
+// build and run (ReconstructBelow), not the packing. Pack itself must keep
+// thresholds that are not the running maximum, and refuse carriers that do not
+// match the run.
+#include "CappedReconstruction.h"
+#include "Check.h"
+#include "Clouds.h"
+#include "PackedRun.h"
+#include "Reconstruction.h"
+
+#include <cmath>
+#include <iostream>
+#include <string>
+#include <vector>
+
+using namespace flowrecon;
+
+namespace
+{
+
+constexpr double Cap = 5; // the command line's T_max
+
+BuildOptions NoGeometry()
+{
+  BuildOptions options;
+  options.StableManifolds = false;
+  options.UnstableManifolds = false;
+  return options;
+}
+
+bool SameInsertions(const ReconstructionResult& a, const ReconstructionResult& b)
+{
+  if (a.Nodes.size() != b.Nodes.size() || a.Order != b.Order ||
+    a.InitializationCount != b.InitializationCount)
+  {
+    return false;
+  }
+  for (std::size_t i = 0; i < a.Nodes.size(); ++i)
+  {
+    const Insertion& x = a.Nodes[i];
+    const Insertion& y = b.Nodes[i];
+    if (x.Step != y.Step || x.Priority != y.Priority || x.Threshold != y.Threshold ||
+      x.Kind != y.Kind || x.Sponsor != y.Sponsor)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+bool SameNodes(const std::vector<Node>& a, const std::vector<Node>& b)
+{
+  if (a.size() != b.size())
+  {
+    return false;
+  }
+  for (std::size_t i = 0; i < a.size(); ++i)
+  {
+    if (a[i].Value != b[i].Value || a[i].Index != b[i].Index || a[i].Simplex != b[i].Simplex)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+/// t_p 1.1 held while t_p 0 runs, then restored; against t_p 1.1 built alone.
+void HeldAgainstAlone(const std::string& name, const std::vector<Point3>& cloud)
+{
+  CappedBuild build = BuildBelow(cloud, NoGeometry(), 1.1, Cap, true, Progress(), true);
+  CappedReconstruction first = ReconstructBuilt(build, 1.1, false, Progress());
+  ReturnNodes(first, build);
+  HeldRun held = Hold(std::move(first));
+  CHECK(first.Run.Nodes.empty() && first.Carriers.empty());
+  CappedReconstruction second = ReconstructBuilt(build, 0, false, Progress());
+  ReturnNodes(second, build);
+  second = CappedReconstruction();
+  const CappedReconstruction restored = Restore(std::move(held), build);
+
+  const CappedReconstruction alone = ReconstructBelow(cloud, NoGeometry(), 1.1, Cap, true, Progress());
+  std::cout << name << ": " << restored.Run.Order.size() << " of " << restored.Run.Nodes.size()
+            << " nodes inserted below the cap, " << restored.WalkedLate << " patches walked late\n";
+  CHECK(restored.Run.Order.size() > 10);
+  CHECK(SameInsertions(restored.Run, alone.Run));
+  CHECK(restored.Carriers == alone.Carriers);
+  CHECK(SameNodes(restored.Complex.Nodes, alone.Complex.Nodes));
+  CHECK(restored.Complex.InfinityNode == alone.Complex.InfinityNode);
+  CHECK(restored.Simplified && restored.WalkedLate == alone.WalkedLate);
+  CHECK(restored.Triangulation != nullptr && restored.Lines == nullptr);
+  CHECK(build.Complex.Nodes.empty()); // taken: the build is spent
+}
+
+/// A run whose thresholds are not the running maximum of its priorities
+/// (Reconstruct never makes one): Pack must keep them as they are.
+void OtherThresholds()
+{
+  const std::vector<Point3> cloud = clouds::Sphere(300, 11);
+  const CappedReconstruction r = ReconstructBelow(cloud, NoGeometry(), 0, Cap, true, Progress());
+  ReconstructionResult run = r.Run;
+  CHECK(run.Order.size() > 3);
+  run.Nodes[run.Order[1]].Threshold = 7.5;
+  ReconstructionResult back;
+  std::vector<Id> carriers;
+  const PackedRun p = Pack(run, r.Carriers);
+  CHECK(!p.Threshold.empty());
+  Unpack(p, back, carriers);
+  CHECK(SameInsertions(back, run));
+  CHECK(carriers == r.Carriers);
+  // As Reconstruct made it, the thresholds are not stored.
+  CHECK(Pack(r.Run, r.Carriers).Threshold.empty());
+
+  bool refused = false;
+  try
+  {
+    Pack(run, std::vector<Id>(r.Carriers.size() + 1, -1));
+  }
+  catch (const InputError&)
+  {
+    refused = true;
+  }
+  CHECK(refused);
+}
+
+} // namespace
+
+int main()
+{
+  HeldAgainstAlone("sphere", clouds::Sphere(1500, 3));
+  HeldAgainstAlone("torus", clouds::Torus(2000, 6));
+  HeldAgainstAlone("icosahedron", clouds::Icosahedron(1500, 7));
+  HeldAgainstAlone("cube", clouds::Cube(1000, 8));
+  HeldAgainstAlone("sparse sphere", clouds::Sphere(60, 9));
+  OtherThresholds();
+  return check::Finish("TestHeldRun");
+}
