@@ -338,13 +338,19 @@ std::vector<Candidate> CloudRun::RunEach(CappedBuild& build, SharedRegions& regi
   for (std::size_t k = 0; k < this->Tps.size(); ++k)
   {
     const bool last = k + 1 == this->Tps.size();
-    candidates.push_back(Run(build, this->Tps[k], one, this->Settings, regions, this->RunRange(k)));
+    // With the compact output no run is made again after the last one: it
+    // takes the build's arcs and lines instead of copying them, and gives
+    // back only the nodes, which the choice and a held run read.
+    const bool takeLast = last && !one && this->Settings.Compact;
+    candidates.push_back(
+      Run(build, this->Tps[k], one || takeLast, this->Settings, regions, this->RunRange(k)));
+    if (takeLast)
+    {
+      ReturnNodes(candidates.back().R, build);
+    }
     if (!last && this->Settings.Compact)
     {
       candidates.back().Held = Hold(std::move(candidates.back().R));
-      // The run's blocks lie under the packed ones: handed back, so that the
-      // next run's peak is not the sum of both.
-      ReleaseFreedMemory();
     }
     else if (!last)
     {
