@@ -6,6 +6,7 @@
 
 #include "Clouds.h"
 #include "FlowComplex.h"
+#include "FlowComplexBuilder.h"
 #include "Progress.h"
 #include "Reconstruction.h"
 
@@ -25,6 +26,18 @@ using clouds::Rng;
 using clouds::Cube;
 using clouds::Sphere;
 using clouds::Torus;
+
+/// The command line's T_max.
+constexpr double CommandLineCap = 5;
+
+/// A build of the Hasse diagram alone, as `reconstruct` makes it.
+inline BuildOptions DiagramOnly()
+{
+  BuildOptions options;
+  options.StableManifolds = false;
+  options.UnstableManifolds = false;
+  return options;
+}
 
 inline Node MakeNode(int index, double value, std::array<Id, 4> simplex)
 {

@@ -8,6 +8,7 @@
 #include "CappedReconstruction.h"
 #include "Check.h"
 #include "Clouds.h"
+#include "ReconFixtures.h"
 #include "PackedRun.h"
 #include "Reconstruction.h"
 
@@ -21,15 +22,8 @@ using namespace flowrecon;
 namespace
 {
 
-constexpr double Cap = 5; // the command line's T_max
-
-BuildOptions NoGeometry()
-{
-  BuildOptions options;
-  options.StableManifolds = false;
-  options.UnstableManifolds = false;
-  return options;
-}
+using fixtures::DiagramOnly;
+constexpr double Cap = fixtures::CommandLineCap;
 
 bool SameInsertions(const ReconstructionResult& a, const ReconstructionResult& b)
 {
@@ -70,7 +64,7 @@ bool SameNodes(const std::vector<Node>& a, const std::vector<Node>& b)
 /// t_p 1.1 held while t_p 0 runs, then restored; against t_p 1.1 built alone.
 void HeldAgainstAlone(const std::string& name, const std::vector<Point3>& cloud)
 {
-  CappedBuild build = BuildBelow(cloud, NoGeometry(), 1.1, Cap, true, Progress(), true);
+  CappedBuild build = BuildBelow(cloud, DiagramOnly(), 1.1, Cap, true, Progress(), true);
   CappedReconstruction first = ReconstructBuilt(build, 1.1, false, Progress());
   ReturnNodes(first, build);
   HeldRun held = Hold(std::move(first));
@@ -80,7 +74,7 @@ void HeldAgainstAlone(const std::string& name, const std::vector<Point3>& cloud)
   second = CappedReconstruction();
   const CappedReconstruction restored = Restore(std::move(held), build);
 
-  const CappedReconstruction alone = ReconstructBelow(cloud, NoGeometry(), 1.1, Cap, true, Progress());
+  const CappedReconstruction alone = ReconstructBelow(cloud, DiagramOnly(), 1.1, Cap, true, Progress());
   std::cout << name << ": " << restored.Run.Order.size() << " of " << restored.Run.Nodes.size()
             << " nodes inserted below the cap, " << restored.WalkedLate << " patches walked late\n";
   CHECK(restored.Run.Order.size() > 10);
@@ -98,7 +92,7 @@ void HeldAgainstAlone(const std::string& name, const std::vector<Point3>& cloud)
 void OtherThresholds()
 {
   const std::vector<Point3> cloud = clouds::Sphere(300, 11);
-  const CappedReconstruction r = ReconstructBelow(cloud, NoGeometry(), 0, Cap, true, Progress());
+  const CappedReconstruction r = ReconstructBelow(cloud, DiagramOnly(), 0, Cap, true, Progress());
   ReconstructionResult run = r.Run;
   CHECK(run.Order.size() > 3);
   run.Nodes[run.Order[1]].Threshold = 7.5;

@@ -11,6 +11,7 @@
 #include "Check.h"
 #include "CellHomology.h"
 #include "Clouds.h"
+#include "ReconFixtures.h"
 #include "HasseTopology.h"
 #include "Reconstruction.h"
 #include "Simplification.h"
@@ -26,21 +27,14 @@ using namespace flowrecon;
 namespace
 {
 
-constexpr double Cap = 5; // the command line's T_max
-
-BuildOptions NoGeometry()
-{
-  BuildOptions options;
-  options.StableManifolds = false;
-  options.UnstableManifolds = false;
-  return options;
-}
+using fixtures::DiagramOnly;
+constexpr double Cap = fixtures::CommandLineCap;
 
 /// Every reconstruction below the cap from the whole diagram (every line
 /// followed by the build), simplified at t_p.
 std::vector<TopologyStep> Eager(const std::vector<Point3>& cloud, double tp)
 {
-  const FlowComplex fc = BuildFlowComplex(cloud, NoGeometry(), Progress());
+  const FlowComplex fc = BuildFlowComplex(cloud, DiagramOnly(), Progress());
   const SimplificationResult s = Simplify(fc.Nodes, fc.Arcs, tp, Progress());
   const std::vector<Arc>& arcs = tp >= 1 ? s.Arcs : fc.Arcs;
   const std::vector<bool> survives =
@@ -73,7 +67,7 @@ bool Same(const std::vector<TopologyStep>& a, const std::vector<TopologyStep>& b
 /// ended at the first one's r*.
 Id Candidates(const std::string& name, const std::vector<Point3>& cloud)
 {
-  CappedBuild build = BuildBelow(cloud, NoGeometry(), 1.1, Cap, true, Progress(), true);
+  CappedBuild build = BuildBelow(cloud, DiagramOnly(), 1.1, Cap, true, Progress(), true);
   SharedRegions shared;
   Id sharedLines = 0;
   for (const double tp : { 1.1, 0.0 })

@@ -227,20 +227,21 @@ HeldRun Hold(CappedReconstruction&& r)
 {
   HeldRun h;
   h.Run = Pack(r.Run, r.Carriers);
-  h.Simplified = r.Simplified;
-  h.DeferredPatches = r.DeferredPatches;
-  h.WalkedLate = r.WalkedLate;
-  h.ReplayedOwners = r.ReplayedOwners;
-  h.EagerBecause = r.EagerBecause;
-  h.SimplificationSeconds = r.SimplificationSeconds;
-  h.QueueSeconds = r.QueueSeconds;
-  r = CappedReconstruction();
+  r.Complex = FlowComplex();
+  r.Cones = std::vector<Arc>();
+  r.RawPatchArcs = std::vector<Arc>();
+  r.Simplification = SimplificationResult();
+  r.Run = ReconstructionResult();
+  r.Carriers = std::vector<Id>();
+  r.Triangulation.reset();
+  r.Lines.reset();
+  h.Rest = std::move(r);
   return h;
 }
 
 CappedReconstruction Restore(HeldRun&& h, CappedBuild& build)
 {
-  CappedReconstruction r;
+  CappedReconstruction r = std::move(h.Rest);
   r.Complex = std::move(build.Complex);
   // The build's own arcs and lines, not the run's (it simplified a copy).
   r.Complex.Arcs = std::vector<Arc>();
@@ -248,13 +249,6 @@ CappedReconstruction Restore(HeldRun&& h, CappedBuild& build)
   r.Triangulation = build.Triangulation;
   Unpack(h.Run, r.Run, r.Carriers);
   h.Run = PackedRun();
-  r.Simplified = h.Simplified;
-  r.DeferredPatches = h.DeferredPatches;
-  r.WalkedLate = h.WalkedLate;
-  r.ReplayedOwners = h.ReplayedOwners;
-  r.EagerBecause = std::move(h.EagerBecause);
-  r.SimplificationSeconds = h.SimplificationSeconds;
-  r.QueueSeconds = h.QueueSeconds;
   return r;
 }
 

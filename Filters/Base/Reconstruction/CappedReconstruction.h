@@ -102,10 +102,9 @@ CappedReconstruction ReconstructBuilt(
 struct HeldRun
 {
   PackedRun Run;
-  bool Simplified = false;
-  Id DeferredPatches = 0, WalkedLate = 0, ReplayedOwners = 0;
-  std::string EagerBecause;
-  double SimplificationSeconds = 0, QueueSeconds = 0;
+  /// The run without its tables (complex, arcs, cones, lines, simplification,
+  /// insertions, carriers): its counts, times and flags.
+  CappedReconstruction Rest;
 };
 
 /// Keeps what an output without drawn stable manifolds reads of `r` (a run of
