@@ -42,6 +42,8 @@
 //     deferred patches) equals the eager one below its cap: the same nodes
 //     with the same Step, Priority, Threshold, Kind and Sponsor, and the same
 //     cell carriers where they are below the cap (-1 elsewhere).
+//   - a run and its carriers, packed as a held t_p candidate is (PackedRun),
+//     come back field for field.
 //   - the eager build, closure as a set (CheckSetClosure): a face of a drawn
 //     cell that is not drawn by then lies inside that cell's drawn geometry.
 //     Through simplification owners the node-level closure holds on the
@@ -463,6 +465,20 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     REQUIRE((at2.Nodes[i].Step >= 0) == run.Contains(static_cast<Id>(i), 2.0));
   }
   const std::vector<Id> carriers = CellCarriers(run, tp >= 1 ? &s : nullptr);
+  {
+    ReconstructionResult back;
+    std::vector<Id> backCarriers;
+    Unpack(Pack(run, carriers), back, backCarriers);
+    REQUIRE(back.Order == run.Order && back.InitializationCount == run.InitializationCount &&
+      back.Nodes.size() == run.Nodes.size() && backCarriers == carriers);
+    for (std::size_t i = 0; i < run.Nodes.size(); ++i)
+    {
+      const Insertion& a = run.Nodes[i];
+      const Insertion& b = back.Nodes[i];
+      REQUIRE(a.Step == b.Step && a.Priority == b.Priority && a.Threshold == b.Threshold &&
+        a.Kind == b.Kind && a.Sponsor == b.Sponsor);
+    }
+  }
   if (eager)
   {
     Id seams = 0;
