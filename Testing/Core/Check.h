@@ -47,4 +47,25 @@ inline int Finish(const char* name)
     }                                                                                           \
   } while (0)
 
+/// Fails unless `statement` throws `exception`.
+#define CHECK_THROWS(statement, exception)                                                      \
+  do                                                                                            \
+  {                                                                                             \
+    bool threw_ = false;                                                                        \
+    try                                                                                         \
+    {                                                                                           \
+      statement;                                                                                \
+    }                                                                                           \
+    catch (const exception&)                                                                    \
+    {                                                                                           \
+      threw_ = true;                                                                            \
+    }                                                                                           \
+    if (!threw_)                                                                                \
+    {                                                                                           \
+      std::cout << __FILE__ << ":" << __LINE__ << ": expected " #exception " from " #statement  \
+                << "\n";                                                                        \
+      ++check::Failures();                                                                      \
+    }                                                                                           \
+  } while (0)
+
 #endif

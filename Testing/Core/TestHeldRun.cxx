@@ -62,29 +62,35 @@ bool SameNodes(const std::vector<Node>& a, const std::vector<Node>& b)
 }
 
 /// t_p 1.1 held while t_p 0 runs, then restored; against t_p 1.1 built alone.
-void HeldAgainstAlone(const std::string& name, const std::vector<Point3>& cloud)
+/// The run at `heldTp` kept while the one at `otherTp` runs (the command line's
+/// order is 1.1 then 0); a low `cap` makes the build defer patches. Returns
+/// how many it deferred.
+Id HeldAgainstAlone(const std::string& name, const std::vector<Point3>& cloud, double cap = Cap,
+  double heldTp = 1.1, double otherTp = 0)
 {
-  CappedBuild build = BuildBelow(cloud, DiagramOnly(), 1.1, Cap, true, Progress(), true);
-  CappedReconstruction first = ReconstructBuilt(build, 1.1, false, Progress());
+  CappedBuild build = BuildBelow(cloud, DiagramOnly(), 1.1, cap, true, Progress(), true);
+  CappedReconstruction first = ReconstructBuilt(build, heldTp, false, Progress());
   ReturnNodes(first, build);
   HeldRun held = Hold(std::move(first));
   CHECK(first.Run.Nodes.empty() && first.Carriers.empty());
-  CappedReconstruction second = ReconstructBuilt(build, 0, false, Progress());
+  CappedReconstruction second = ReconstructBuilt(build, otherTp, false, Progress());
   ReturnNodes(second, build);
   second = CappedReconstruction();
   const CappedReconstruction restored = Restore(std::move(held), build);
 
-  const CappedReconstruction alone = ReconstructBelow(cloud, DiagramOnly(), 1.1, Cap, true, Progress());
+  const CappedReconstruction alone = ReconstructBelow(cloud, DiagramOnly(), heldTp, cap, true, Progress());
   std::cout << name << ": " << restored.Run.Order.size() << " of " << restored.Run.Nodes.size()
-            << " nodes inserted below the cap, " << restored.WalkedLate << " patches walked late\n";
+            << " nodes inserted below the cap, " << restored.DeferredPatches << " patches deferred, "
+            << restored.WalkedLate << " walked late\n";
   CHECK(restored.Run.Order.size() > 10);
   CHECK(SameInsertions(restored.Run, alone.Run));
   CHECK(restored.Carriers == alone.Carriers);
   CHECK(SameNodes(restored.Complex.Nodes, alone.Complex.Nodes));
   CHECK(restored.Complex.InfinityNode == alone.Complex.InfinityNode);
-  CHECK(restored.Simplified && restored.WalkedLate == alone.WalkedLate);
+  CHECK(restored.Simplified == (heldTp >= 1) && restored.WalkedLate == alone.WalkedLate);
   CHECK(restored.Triangulation != nullptr && restored.Lines == nullptr);
   CHECK(build.Complex.Nodes.empty()); // taken: the build is spent
+  return restored.DeferredPatches;
 }
 
 /// A run whose thresholds are not the running maximum of its priorities
@@ -106,16 +112,13 @@ void OtherThresholds()
   // As Reconstruct made it, the thresholds are not stored.
   CHECK(Pack(r.Run, r.Carriers).Threshold.empty());
 
-  bool refused = false;
-  try
-  {
-    Pack(run, std::vector<Id>(r.Carriers.size() + 1, -1));
-  }
-  catch (const InputError&)
-  {
-    refused = true;
-  }
-  CHECK(refused);
+  CHECK_THROWS(Pack(run, std::vector<Id>(r.Carriers.size() + 1, -1)), InputError);
+  std::vector<Id> outside = r.Carriers;
+  outside.back() = static_cast<Id>(outside.size());
+  CHECK_THROWS(Pack(r.Run, outside), InputError);
+  ReconstructionResult misordered = r.Run;
+  std::swap(misordered.Order[0], misordered.Order[1]);
+  CHECK_THROWS(Pack(misordered, r.Carriers), InputError);
 }
 
 } // namespace
@@ -127,6 +130,12 @@ int main()
   HeldAgainstAlone("icosahedron", clouds::Icosahedron(1500, 7));
   HeldAgainstAlone("cube", clouds::Cube(1000, 8));
   HeldAgainstAlone("sparse sphere", clouds::Sphere(60, 9));
+  // Below a cap of 1.5 a chart-uniform torus's far patches are deferred by the
+  // build the two runs share (none is walked late here: the queues below the
+  // cap do not need them), with either candidate held.
+  Id deferred = HeldAgainstAlone("torus 4000, cap 1.5", clouds::Torus(4000, 8), 1.5);
+  deferred += HeldAgainstAlone("torus 4000, t_p 0 held, cap 1.5", clouds::Torus(4000, 8), 1.5, 0, 1.1);
+  CHECK(deferred > 0);
   OtherThresholds();
   return check::Finish("TestHeldRun");
 }

@@ -58,16 +58,7 @@ void TestCoincidingPoints()
   std::cout << "-- coinciding points\n";
   std::vector<Point3> points = clouds::Cube(200, 43);
   points.push_back(points[17]);
-  bool refused = false;
-  try
-  {
-    const Triangulation tri(points);
-  }
-  catch (const InputError&)
-  {
-    refused = true;
-  }
-  CHECK(refused);
+  CHECK_THROWS(const Triangulation tri(points), InputError);
 }
 
 } // namespace

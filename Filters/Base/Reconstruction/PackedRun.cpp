@@ -57,7 +57,11 @@ PackedRun Pack(const ReconstructionResult& run, const std::vector<Id>& carriers)
       p.Threshold[k] = run.Nodes[run.Order[k]].Threshold;
     }
   }
-  p.Carriers.assign(carriers.begin(), carriers.end()); // node ids fit 32 bits (checked above)
+  if (std::any_of(carriers.begin(), carriers.end(), [nodes](Id c) { return c < -1 || c >= nodes; }))
+  {
+    throw InputError("packing a run: a carrier names no node");
+  }
+  p.Carriers.assign(carriers.begin(), carriers.end()); // node ids: 32 bits (checked above)
   return p;
 }
 

@@ -30,7 +30,8 @@ struct PackedRun
 };
 
 /// Packs `run` and its `carriers` (CellCarriers). Throws InputError when they
-/// do not match (sizes, a step's node out of range, ids beyond 32 bits).
+/// do not match (sizes, a step's node out of range or not inserted at that
+/// step, a carrier that names no node, ids beyond 32 bits).
 PackedRun Pack(const ReconstructionResult& run, const std::vector<Id>& carriers);
 
 /// The run and carriers Pack was given, field for field.
