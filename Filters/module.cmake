@@ -19,6 +19,7 @@ vtk_module_add_module(FlowRecon::Filters
     ${_flowrecon_filters_dir}/Conversion/FlowComplexFromVTK.h
     ${_flowrecon_filters_dir}/Conversion/FlowComplexToVTK.h
     ${_flowrecon_filters_dir}/FlowReconNames.h
+    ${_flowrecon_filters_dir}/Conversion/HugePageArrays.h
     ${_flowrecon_filters_dir}/IO/IsolatedRead.h
     ${_flowrecon_filters_dir}/IO/LasPoints.h
     ${_flowrecon_filters_dir}/IO/PackedPoints.h

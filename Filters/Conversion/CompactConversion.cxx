@@ -2,6 +2,7 @@
 
 #include "ContractArrays.h"
 #include "FlowReconNames.h"
+#include "HugePageArrays.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -34,8 +35,8 @@ vtkSmartPointer<vtkCellArray> CellArray(const CompactComplex& compact)
 {
   const vtkIdType cells = static_cast<vtkIdType>(compact.NumberOfCells());
   vtkNew<Ids> offsets, connectivity;
-  offsets->SetNumberOfValues(cells + 1);
-  connectivity->SetNumberOfValues(static_cast<vtkIdType>(compact.Vertices.size() +
+  SetNumberOfTuplesOnHugePages(offsets.Get(), cells + 1);
+  SetNumberOfTuplesOnHugePages(connectivity.Get(), static_cast<vtkIdType>(compact.Vertices.size() +
     2 * compact.Edges.size() + 3 * compact.Triangles.size() + 4 * compact.Tetrahedra.size()));
   auto* offset = offsets->GetPointer(0);
   auto* point = connectivity->GetPointer(0);
@@ -87,15 +88,16 @@ void CompactCellsToVTK(const CompactComplex& compact, const std::vector<Point3>&
     ? CellArray<vtkTypeInt32Array>(compact)
     : CellArray<vtkTypeInt64Array>(compact);
   vtkNew<vtkUnsignedCharArray> types;
-  types->SetNumberOfValues(cells);
+  SetNumberOfTuplesOnHugePages(types.Get(), cells);
   auto nodeId = NamedArray<vtkIntArray>(names::NodeId);
   auto index = NamedArray<vtkIntArray>(names::Index);
   auto threshold = NamedArray<vtkDoubleArray>(names::Threshold);
   auto claims = NamedArray<vtkIntArray>(names::Claims);
-  for (vtkDataArray* a : std::initializer_list<vtkDataArray*>{ nodeId, index, threshold, claims })
+  for (vtkIntArray* a : { nodeId.Get(), index.Get(), claims.Get() })
   {
-    a->SetNumberOfTuples(cells);
+    SetNumberOfTuplesOnHugePages(a, cells);
   }
+  SetNumberOfTuplesOnHugePages(threshold.Get(), cells);
   unsigned char* type = types->GetPointer(0);
   int* node = nodeId->GetPointer(0);
   int* nodeIndex = index->GetPointer(0);
