@@ -24,12 +24,15 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkTable.h"
+#include "vtkTypeInt32Array.h"
+#include "vtkTypeInt64Array.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <type_traits>
 
 namespace flowrecon
 {
@@ -41,25 +44,43 @@ vtkSmartPointer<vtkPolyData> CriticalPointsBlock(const FlowComplex& fc)
 {
   std::vector<Point3> locations;
   locations.reserve(fc.Nodes.size());
-  auto nodeId = NamedArray<vtkIdTypeArray>(flowrecon::names::NodeId);
+  // Node and input ids in 32 bits (flow complexes are limited to 2^31 nodes,
+  // and a node's samples are fewer): half the memory of vtkIdType's, which
+  // ParaView holds for as long as the filter is.
+  auto nodeId = NamedArray<vtkTypeInt32Array>(flowrecon::names::NodeId);
   auto index = NamedArray<vtkIntArray>(flowrecon::names::Index);
   auto value = NamedArray<vtkDoubleArray>(flowrecon::names::CriticalValue);
-  auto simplex = NamedArray<vtkIdTypeArray>(flowrecon::names::Simplex, 4);
+  auto simplex = NamedArray<vtkTypeInt32Array>(flowrecon::names::Simplex, 4);
   // Written, not left to be found again by coordinates: a node's critical point
   // is one point of StableManifolds (a sample's vertex cell uses Simplex[0]).
-  auto point = NamedArray<vtkIdTypeArray>(flowrecon::names::StableManifoldPointId);
   const bool drawn = fc.NodePoint.size() == fc.Nodes.size();
+  const bool narrowPoints = !drawn ||
+    std::all_of(fc.NodePoint.begin(), fc.NodePoint.end(), [](Id p) { return p < INT32_MAX; });
+  auto point = narrowPoints
+    ? vtkSmartPointer<vtkDataArray>(NamedArray<vtkTypeInt32Array>(flowrecon::names::StableManifoldPointId))
+    : vtkSmartPointer<vtkDataArray>(NamedArray<vtkIdTypeArray>(flowrecon::names::StableManifoldPointId));
+  const vtkIdType count = static_cast<vtkIdType>(fc.Nodes.size());
+  nodeId->SetNumberOfTuples(count);
+  index->SetNumberOfTuples(count);
+  value->SetNumberOfTuples(count);
+  simplex->SetNumberOfTuples(count);
+  point->SetNumberOfTuples(count);
   vtkNew<vtkCellArray> verts;
+  verts->Use32BitStorage(); // node ids fit
+  verts->AllocateExact(count, count);
   for (std::size_t i = 0; i < fc.Nodes.size(); ++i)
   {
     const Node& n = fc.Nodes[i];
+    const vtkIdType k = static_cast<vtkIdType>(i);
     locations.push_back(n.Location);
-    nodeId->InsertNextValue(static_cast<vtkIdType>(i));
-    index->InsertNextValue(n.Index);
-    value->InsertNextValue(n.Value);
-    const vtkIdType s[4] = { n.Simplex[0], n.Simplex[1], n.Simplex[2], n.Simplex[3] };
-    simplex->InsertNextTypedTuple(s);
-    point->InsertNextValue(drawn ? fc.NodePoint[i] : (n.Index == 0 ? n.Simplex[0] : -1));
+    nodeId->SetValue(k, static_cast<std::int32_t>(i));
+    index->SetValue(k, n.Index);
+    value->SetValue(k, n.Value);
+    for (int j = 0; j < 4; ++j)
+    {
+      simplex->SetTypedComponent(k, j, static_cast<std::int32_t>(n.Simplex[j]));
+    }
+    point->SetTuple1(k, static_cast<double>(drawn ? fc.NodePoint[i] : (n.Index == 0 ? n.Simplex[0] : -1)));
     if (!n.IsInfinity()) // the maximum at infinity is kept as data, never drawn
     {
       const vtkIdType id = static_cast<vtkIdType>(i);
@@ -102,10 +123,11 @@ vtkSmartPointer<vtkPolyData> GabrielEdgesBlock(const FlowComplex& fc)
     pointOfInput.emplace(fc.Nodes[i].Simplex[0], static_cast<vtkIdType>(samples.size()));
     samples.push_back(fc.Nodes[i].Location);
   }
-  auto nodeId = NamedArray<vtkIdTypeArray>(flowrecon::names::NodeId);
+  auto nodeId = NamedArray<vtkTypeInt32Array>(flowrecon::names::NodeId);
   auto index = NamedArray<vtkIntArray>(flowrecon::names::Index);
   auto value = NamedArray<vtkDoubleArray>(flowrecon::names::CriticalValue);
   vtkNew<vtkCellArray> lines;
+  lines->Use32BitStorage(); // the samples are fewer than the nodes
   for (std::size_t i = 0; i < fc.Nodes.size(); ++i)
   {
     const Node& n = fc.Nodes[i];
@@ -120,7 +142,7 @@ vtkSmartPointer<vtkPolyData> GabrielEdgesBlock(const FlowComplex& fc)
     }
     const vtkIdType ends[2] = { a->second, b->second };
     lines->InsertNextCell(2, ends);
-    nodeId->InsertNextValue(static_cast<vtkIdType>(i));
+    nodeId->InsertNextValue(static_cast<std::int32_t>(i));
     index->InsertNextValue(1);
     value->InsertNextValue(n.Value);
   }
@@ -144,60 +166,85 @@ vtkSmartPointer<vtkPolyData> HasseDiagramBlock(const FlowComplex& fc)
   const Point3 centre = fc.InfinityNode >= 0 ? fc.Nodes[fc.InfinityNode].Location : Point3{};
   const vtkIdType nodes = static_cast<vtkIdType>(fc.Nodes.size());
   const vtkIdType arcs = static_cast<vtkIdType>(fc.Arcs.size());
+  vtkIdType stubs = 0;
+  for (const Arc& a : fc.Arcs)
+  {
+    stubs += fc.Nodes[a.Upper].IsInfinity() ? 1 : 0;
+  }
   std::vector<Point3> pts;
-  pts.reserve(fc.Nodes.size());
+  pts.reserve(fc.Nodes.size() + static_cast<std::size_t>(stubs));
   for (const Node& node : fc.Nodes)
   {
     pts.push_back(node.Location);
   }
-  auto nodeId = NamedArray<vtkIdTypeArray>(flowrecon::names::NodeId);
+  // Ids in 32 bits (node ids always fit; the lines' where the points and
+  // corners do): 20 bytes an arc less than vtkIdType's, on a block of ~100
+  // arcs a sample that ParaView holds for as long as the filter is.
+  auto nodeId = NamedArray<vtkTypeInt32Array>(flowrecon::names::NodeId);
   auto mult = NamedArray<vtkIntArray>(flowrecon::names::Multiplicity);
   auto ratio = NamedArray<vtkDoubleArray>(flowrecon::names::Ratio);
-  auto lowerId = NamedArray<vtkIdTypeArray>(flowrecon::names::LowerNodeId);
-  auto upperId = NamedArray<vtkIdTypeArray>(flowrecon::names::UpperNodeId);
-  vtkNew<vtkIdTypeArray> offsets, connectivity;
-  offsets->SetNumberOfValues(arcs + 1);
-  connectivity->SetNumberOfValues(2 * arcs);
+  auto lowerId = NamedArray<vtkTypeInt32Array>(flowrecon::names::LowerNodeId);
+  auto upperId = NamedArray<vtkTypeInt32Array>(flowrecon::names::UpperNodeId);
   for (auto* a : { static_cast<vtkDataArray*>(mult), static_cast<vtkDataArray*>(ratio),
          static_cast<vtkDataArray*>(lowerId), static_cast<vtkDataArray*>(upperId) })
   {
     a->SetNumberOfTuples(arcs);
   }
-  for (vtkIdType c = 0; c < arcs; ++c)
-  {
-    const Arc& a = fc.Arcs[c];
-    const Node& lo = fc.Nodes[a.Lower];
-    const Node& up = fc.Nodes[a.Upper];
-    vtkIdType end = a.Upper;
-    if (up.IsInfinity())
+  // One line per arc, filled through raw pointers of either width.
+  const auto fill = [&](auto* offset, auto* point) {
+    using Value = std::remove_pointer_t<decltype(offset)>;
+    for (vtkIdType c = 0; c < arcs; ++c)
     {
-      Point3 d{ { lo.Location[0] - centre[0], lo.Location[1] - centre[1],
-        lo.Location[2] - centre[2] } };
-      const double n = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-      Point3 tip;
-      for (int k = 0; k < 3; ++k)
+      const Arc& a = fc.Arcs[c];
+      const Node& lo = fc.Nodes[a.Lower];
+      const Node& up = fc.Nodes[a.Upper];
+      vtkIdType end = a.Upper;
+      if (up.IsInfinity())
       {
-        tip[k] = lo.Location[k] + (n > 0 ? d[k] / n * stub : (k == 2 ? stub : 0));
+        Point3 d{ { lo.Location[0] - centre[0], lo.Location[1] - centre[1],
+          lo.Location[2] - centre[2] } };
+        const double n = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+        Point3 tip;
+        for (int k = 0; k < 3; ++k)
+        {
+          tip[k] = lo.Location[k] + (n > 0 ? d[k] / n * stub : (k == 2 ? stub : 0));
+        }
+        end = static_cast<vtkIdType>(pts.size());
+        pts.push_back(tip);
       }
-      end = static_cast<vtkIdType>(pts.size());
-      pts.push_back(tip);
+      offset[c] = static_cast<Value>(2 * c);
+      point[2 * c] = static_cast<Value>(a.Lower);
+      point[2 * c + 1] = static_cast<Value>(end);
+      mult->SetValue(c, a.Multiplicity);
+      ratio->SetValue(c, PersistenceRatioAtLeastOne(up.Value, lo.Value));
+      lowerId->SetValue(c, static_cast<std::int32_t>(a.Lower));
+      upperId->SetValue(c, static_cast<std::int32_t>(a.Upper));
     }
-    offsets->SetValue(c, 2 * c);
-    connectivity->SetValue(2 * c, a.Lower);
-    connectivity->SetValue(2 * c + 1, end);
-    mult->SetValue(c, a.Multiplicity);
-    ratio->SetValue(c, PersistenceRatioAtLeastOne(up.Value, lo.Value));
-    lowerId->SetValue(c, a.Lower);
-    upperId->SetValue(c, a.Upper);
+    offset[arcs] = static_cast<Value>(2 * arcs);
+  };
+  vtkNew<vtkCellArray> lines;
+  if (std::max(nodes + stubs, 2 * arcs) < static_cast<vtkIdType>(INT32_MAX))
+  {
+    vtkNew<vtkTypeInt32Array> offsets, connectivity;
+    offsets->SetNumberOfValues(arcs + 1);
+    connectivity->SetNumberOfValues(2 * arcs);
+    fill(offsets->GetPointer(0), connectivity->GetPointer(0));
+    lines->SetData(offsets, connectivity);
   }
-  offsets->SetValue(arcs, 2 * arcs);
+  else
+  {
+    vtkNew<vtkTypeInt64Array> offsets, connectivity;
+    offsets->SetNumberOfValues(arcs + 1);
+    connectivity->SetNumberOfValues(2 * arcs);
+    fill(offsets->GetPointer(0), connectivity->GetPointer(0));
+    lines->SetData(offsets, connectivity);
+  }
   nodeId->SetNumberOfValues(static_cast<vtkIdType>(pts.size()));
   for (vtkIdType k = 0; k < static_cast<vtkIdType>(pts.size()); ++k)
   {
-    nodeId->SetValue(k, k < nodes ? k : fc.InfinityNode); // stubs stand for infinity
+    // stubs stand for infinity
+    nodeId->SetValue(k, static_cast<std::int32_t>(k < nodes ? k : fc.InfinityNode));
   }
-  vtkNew<vtkCellArray> lines;
-  lines->SetData(offsets, connectivity);
   vtkNew<vtkPolyData> pd;
   pd->SetPoints(MakePoints(pts));
   pd->SetLines(lines);
@@ -223,12 +270,18 @@ vtkSmartPointer<vtkUnstructuredGrid> StableManifoldsBlock(
   }
   ug->GetPointData()->AddArray(original);
 
-  auto nodeId = NamedArray<vtkIdTypeArray>(flowrecon::names::NodeId);
+  auto nodeId = NamedArray<vtkTypeInt32Array>(flowrecon::names::NodeId); // node ids fit
   auto index = NamedArray<vtkIntArray>(flowrecon::names::Index);
   auto value = NamedArray<vtkDoubleArray>(flowrecon::names::CriticalValue);
-  ug->AllocateExact(static_cast<vtkIdType>(fc.Nodes.size() + fc.Triangles.size() +
-                      fc.Tetrahedra.size()),
-    4);
+  const vtkIdType cellCount = static_cast<vtkIdType>(fc.Nodes.size() + fc.Triangles.size() +
+    fc.Tetrahedra.size());
+  ug->AllocateExact(cellCount, 4);
+  if (fc.Points.size() < static_cast<std::size_t>(INT32_MAX))
+  {
+    // 32-bit point ids: half the connectivity's memory.
+    ug->GetCells()->Use32BitStorage();
+    ug->GetCells()->AllocateEstimate(cellCount, 4);
+  }
   const double cells = static_cast<double>(fc.Nodes.size() + fc.Triangles.size() +
     fc.Tetrahedra.size()) + 1;
   auto add = [&](int type, int n, const vtkIdType* ids, Id node) {
@@ -237,7 +290,7 @@ vtkSmartPointer<vtkUnstructuredGrid> StableManifoldsBlock(
     {
       progress(static_cast<double>(k) / cells, "VTK output: stable manifolds");
     }
-    nodeId->InsertNextValue(node);
+    nodeId->InsertNextValue(static_cast<std::int32_t>(node));
     index->InsertNextValue(fc.Nodes[node].Index);
     value->InsertNextValue(fc.Nodes[node].Value);
   };
@@ -276,9 +329,20 @@ vtkSmartPointer<vtkUnstructuredGrid> StableManifoldsBlock(
 vtkSmartPointer<vtkPolyData> UnstableManifoldsBlock(const FlowComplex& fc)
 {
   std::vector<Point3> pts;
+  std::size_t corners = 0;
+  for (const FlowLine& line : fc.FlowLines)
+  {
+    corners += line.Points.size();
+  }
+  pts.reserve(corners);
   vtkNew<vtkCellArray> lines;
-  auto nodeId = NamedArray<vtkIdTypeArray>(flowrecon::names::NodeId);
-  auto target = NamedArray<vtkIdTypeArray>(flowrecon::names::TargetNodeId);
+  if (corners < static_cast<std::size_t>(INT32_MAX))
+  {
+    lines->Use32BitStorage(); // half the connectivity's memory
+  }
+  lines->AllocateExact(static_cast<vtkIdType>(fc.FlowLines.size()), static_cast<vtkIdType>(corners));
+  auto nodeId = NamedArray<vtkTypeInt32Array>(flowrecon::names::NodeId); // node ids fit
+  auto target = NamedArray<vtkTypeInt32Array>(flowrecon::names::TargetNodeId);
   std::vector<vtkIdType> ids;
   for (const FlowLine& line : fc.FlowLines)
   {
@@ -289,8 +353,8 @@ vtkSmartPointer<vtkPolyData> UnstableManifoldsBlock(const FlowComplex& fc)
       pts.push_back(p);
     }
     lines->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
-    nodeId->InsertNextValue(line.Node);
-    target->InsertNextValue(line.Target);
+    nodeId->InsertNextValue(static_cast<std::int32_t>(line.Node));
+    target->InsertNextValue(static_cast<std::int32_t>(line.Target));
   }
   vtkNew<vtkPolyData> pd;
   pd->SetPoints(MakePoints(pts));

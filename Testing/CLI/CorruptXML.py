@@ -3,9 +3,10 @@
 Usage: CorruptXML.py COMPLEX.vtm OUTDIR
 
 Writes OUTDIR/COMPLEX.vtm (with its folder), whose StableManifolds piece has
-its last cell offset raised by 2^32, and OUTDIR/cloud.vtp, a copy of the
+its last cell offset raised by 2^32 (64-bit offsets, as older versions wrote
+them) or to about 2^31 (32-bit ones), and OUTDIR/cloud.vtp, a copy of the
 CriticalPoints piece with its last vertex offset raised the same way. VTK 9.2's
-reader sizes the connectivity by that offset: 32 GB. The pieces are LZ4
+reader sizes the connectivity by that offset: 32 or 8 GB. The pieces are LZ4
 compressed, but an LZ4 block always ends with 5 literal bytes, so the high
 bytes of the last offset can be edited in place. And OUTDIR/noprimary.vtm, the
 .vtm with its <vtkMultiBlockDataSet> element renamed.
@@ -22,16 +23,25 @@ def raise_last_offset(path, section):
     appended = data.index(b"<AppendedData")
     header = bytes(data[:appended])
     match = re.search(
-        rb"<" + section + rb">.*?Name=\"offsets\"[^>]*offset=\"\s*(\d+)", header, re.S)
-    start = data.index(b"_", appended) + 1 + int(match.group(1))
+        rb"<" + section + rb">.*?<DataArray type=\"(Int32|Int64)\"[^>]*Name=\"offsets\"[^>]*offset=\"\s*(\d+)",
+        header, re.S)
+    if not match:
+        sys.exit(path + ": no Int32 or Int64 offsets in <" + section.decode() + ">")
+    wide = match.group(1) == b"Int64"
+    start = data.index(b"_", appended) + 1 + int(match.group(2))
     if b'header_type="UInt32"' not in header or b"vtkLZ4DataCompressor" not in header:
         sys.exit(path + ": expected UInt32 headers and LZ4 compression")
     blocks = struct.unpack_from("<I", data, start)[0]
     sizes = struct.unpack_from("<%dI" % blocks, data, start + 12)
     end = start + 12 + 4 * blocks + sum(sizes)
-    if data[end - 4:end] != b"\0\0\0\0":
-        sys.exit(path + ": the last offset is not below 2^32")
-    data[end - 4] = 1  # byte 4 of the little-endian Int64
+    if wide:
+        if data[end - 4:end] != b"\0\0\0\0":
+            sys.exit(path + ": the last offset is not below 2^32")
+        data[end - 4] = 1  # byte 4 of the little-endian Int64
+    else:
+        if data[end - 1] != 0:
+            sys.exit(path + ": the last offset is not below 2^24")
+        data[end - 1] = 0x7F  # the top byte of the little-endian Int32
     open(path, "wb").write(data)
 
 

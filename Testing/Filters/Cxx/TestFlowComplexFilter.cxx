@@ -11,6 +11,9 @@
 #include "vtkCompositeDataSet.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
+#include "vtkCellArray.h"
+#include "vtkDataArray.h"
+#include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkIntArray.h"
@@ -119,6 +122,46 @@ void CheckOutput(vtkMultiBlockDataSet* mb)
   CHECK(patches >= 3 * n[2]);
   // Every index-2 point has two unstable flow lines.
   CHECK(um->GetNumberOfCells() == 2 * n[2]);
+
+  // Node and point ids in 32 bits (what ParaView holds for as long as the
+  // filter is), and the same lines as before: line k of HasseDiagram runs from
+  // its LowerNodeId to its UpperNodeId (point k is node k; an arc to infinity
+  // ends on a stub whose NodeId is infinity's), vertex k of CriticalPoints is
+  // point k.
+  for (vtkCellArray* cells : { cp->GetVerts(), hd->GetLines(), sm->GetCells(), um->GetLines(),
+         ge ? ge->GetLines() : nullptr })
+  {
+    CHECK(cells && !cells->IsStorage64Bit());
+  }
+  vtkDataArray* lower = hd->GetCellData()->GetArray("LowerNodeId");
+  vtkDataArray* upper = hd->GetCellData()->GetArray("UpperNodeId");
+  vtkDataArray* pointNode = hd->GetPointData()->GetArray("NodeId");
+  CHECK(lower && upper && pointNode);
+  for (vtkDataArray* a : { lower, upper, pointNode, cp->GetPointData()->GetArray("NodeId"),
+         cp->GetPointData()->GetArray("Simplex"), sm->GetCellData()->GetArray("NodeId") })
+  {
+    CHECK(a && a->GetDataTypeSize() == 4);
+  }
+  const vtkIdType infinity = static_cast<vtkIdType>(
+    mb->GetFieldData()->GetArray("InfinityNodeId")->GetTuple1(0));
+  bool same = lower && upper && pointNode;
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; same && c < hd->GetNumberOfCells(); ++c)
+  {
+    hd->GetCellPoints(c, ids);
+    const vtkIdType up = static_cast<vtkIdType>(upper->GetTuple1(c));
+    same = ids->GetNumberOfIds() == 2 && ids->GetId(0) == static_cast<vtkIdType>(lower->GetTuple1(c)) &&
+      (ids->GetId(1) == up ||
+        (up == infinity && static_cast<vtkIdType>(pointNode->GetTuple1(ids->GetId(1))) == infinity));
+  }
+  CHECK(same);
+  same = true;
+  for (vtkIdType c = 0; c < cp->GetNumberOfVerts(); ++c)
+  {
+    cp->GetCellPoints(c, ids);
+    same = same && ids->GetNumberOfIds() == 1 && ids->GetId(0) == c;
+  }
+  CHECK(same);
 }
 
 } // namespace
