@@ -2,6 +2,7 @@
 
 #include "FlowComplexConversion.h"
 #include "FlowReconNames.h"
+#include "HugePageArrays.h"
 #include "MemoryGuard.h"
 #include "ProfileJumps.h"
 #include "TopologyConversion.h" // Unbounded
@@ -42,11 +43,13 @@ using flowrecon::NamedArray;
 /// Extension, Sponsor.
 struct InsertionArrays
 {
-  vtkSmartPointer<vtkIdTypeArray> Step = NamedArray<vtkIdTypeArray>(flowrecon::names::Step);
-  vtkSmartPointer<vtkIdTypeArray> NodeId = NamedArray<vtkIdTypeArray>(flowrecon::names::NodeId);
+  // Steps and node ids in 32 bits (a flow complex has fewer than 2^31 nodes):
+  // the profile has a row per step, millions, kept as long as the filter is.
+  vtkSmartPointer<vtkTypeInt32Array> Step = NamedArray<vtkTypeInt32Array>(flowrecon::names::Step);
+  vtkSmartPointer<vtkTypeInt32Array> NodeId = NamedArray<vtkTypeInt32Array>(flowrecon::names::NodeId);
   vtkSmartPointer<vtkDoubleArray> Priority = NamedArray<vtkDoubleArray>(flowrecon::names::Priority);
   vtkSmartPointer<vtkIntArray> Extension = NamedArray<vtkIntArray>(flowrecon::names::Extension);
-  vtkSmartPointer<vtkIdTypeArray> Sponsor = NamedArray<vtkIdTypeArray>(flowrecon::names::Sponsor);
+  vtkSmartPointer<vtkTypeInt32Array> Sponsor = NamedArray<vtkTypeInt32Array>(flowrecon::names::Sponsor);
 
   /// `n` rows, to be filled by Set (millions of steps: no growth by copies).
   void Resize(vtkIdType n)
@@ -58,11 +61,11 @@ struct InsertionArrays
   }
   void Set(vtkIdType row, Id step, Id node, const flowrecon::Insertion& in)
   {
-    this->Step->SetValue(row, step);
-    this->NodeId->SetValue(row, node);
+    this->Step->SetValue(row, static_cast<std::int32_t>(step));
+    this->NodeId->SetValue(row, static_cast<std::int32_t>(node));
     this->Priority->SetValue(row, in.Priority);
     this->Extension->SetValue(row, static_cast<int>(in.Kind));
-    this->Sponsor->SetValue(row, in.Sponsor);
+    this->Sponsor->SetValue(row, static_cast<std::int32_t>(in.Sponsor));
   }
   std::array<vtkDataArray*, 5> All() const
   {
@@ -172,7 +175,9 @@ vtkSmartPointer<vtkDataArray> Prefix(vtkDataArray* a, vtkIdType tuples)
 void MarkProfile(vtkTable* profile, double t)
 {
   // The mark of t_r in the profile's chart: a horizontal line, so t on every row.
-  auto mark = Sized<vtkDoubleArray>("t_r", profile->GetNumberOfRows());
+  // Made again at each t_r change: on 2 MB pages (HugePageArrays.h).
+  auto mark = NamedArray<vtkDoubleArray>("t_r");
+  SetNumberOfTuplesOnHugePages(mark.Get(), profile->GetNumberOfRows());
   mark->FillValue(t < Unbounded ? t : std::numeric_limits<double>::quiet_NaN());
   profile->RemoveColumnByName("t_r");
   profile->AddColumn(mark);

@@ -684,6 +684,19 @@ void TestQueueCache(const Cloud& cloud)
     ok = step->GetComponent(k, 0) == k && threshold->GetComponent(k, 0) == running;
   }
   CHECK(ok);
+  // Its ids in 32 bits (a row per step, millions of them), and t_r on every row.
+  for (const char* name : { "Step", "NodeId", "Sponsor" })
+  {
+    auto* a = vtkDataArray::SafeDownCast(profile->GetColumnByName(name));
+    CHECK(a && a->GetDataTypeSize() == 4);
+  }
+  auto* mark = vtkDataArray::SafeDownCast(profile->GetColumnByName("t_r"));
+  ok = mark && mark->GetNumberOfTuples() == profile->GetNumberOfRows();
+  for (vtkIdType k = 0; ok && k < profile->GetNumberOfRows(); ++k)
+  {
+    ok = mark->GetComponent(k, 0) == 2.0;
+  }
+  CHECK(ok);
 
   // An abort leaves every output empty and caches nothing: the next update reruns.
   CHECK(!Empty(r->GetOutputDataObject(vtkFlowReconstruction::TOPOLOGY_PROFILE)));
