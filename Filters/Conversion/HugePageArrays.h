@@ -6,14 +6,12 @@
 #ifndef flowrecon_HugePageArrays_h
 #define flowrecon_HugePageArrays_h
 
+#include "HugePages.h" // the core's page size and madvise, for std::vector
+
 #include "vtkAOSDataArrayTemplate.h"
 
 #include <cstddef>
 #include <cstdlib>
-
-#if defined(__linux__)
-#include <sys/mman.h>
-#endif
 
 namespace flowrecon
 {
@@ -25,7 +23,7 @@ template <class T>
 void SetNumberOfTuplesOnHugePages(vtkAOSDataArrayTemplate<T>* a, vtkIdType tuples)
 {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
-  constexpr std::size_t page = std::size_t(1) << 21;
+  constexpr std::size_t page = detail::HugePage;
   const vtkIdType values = tuples * a->GetNumberOfComponents();
   const std::size_t bytes = static_cast<std::size_t>(values) * sizeof(T);
   if (values > 0 && bytes >= page)
