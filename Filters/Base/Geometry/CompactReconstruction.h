@@ -20,6 +20,7 @@
 #include "Progress.h"
 
 #include <array>
+#include <tuple>
 #include <cstdint>
 #include <vector>
 
@@ -110,9 +111,13 @@ struct CompactClaim
   /// triangle's index in each: where the search for voids meets it as a wall.
   std::array<std::int32_t, 2> Cells{ { -1, -1 } };
   std::array<std::int8_t, 2> Facets{ { 0, 0 } };
+  /// By triangle, then node; the sides break the remaining ties (one walk
+  /// crossing a triangle twice, once from each side), so that any sort, a
+  /// parallel one too, gives one order.
   bool operator<(const CompactClaim& o) const
   {
-    return this->Triangle != o.Triangle ? this->Triangle < o.Triangle : this->Node < o.Node;
+    return std::tie(this->Triangle, this->Node, this->Cells, this->Facets) <
+      std::tie(o.Triangle, o.Node, o.Cells, o.Facets);
   }
 };
 
