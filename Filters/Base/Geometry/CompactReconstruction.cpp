@@ -229,6 +229,7 @@ void WalkPatches(const Retriangulation& re, const std::vector<Node>& nodes,
         }
       }
     });
+  std::size_t total = 0;
   for (std::size_t k = 0; k < patches.size(); ++k)
   {
     if (foreign[k])
@@ -239,23 +240,18 @@ void WalkPatches(const Retriangulation& re, const std::vector<Node>& nodes,
     {
       pieces.ExactFallbacks.emplace_back(patches[k], fallbacks[k]);
     }
+    total += claims[k].size();
   }
-  // Millions on a solid (a patch between every two of its maxima): gathered
-  // and sorted in parallel (the order is total, so it is the sort's alone).
-  std::vector<std::size_t> offset(patches.size() + 1, pieces.Claims.size());
-  for (std::size_t k = 0; k < patches.size(); ++k)
+  // Gathered in turn, each patch's list freed once copied (this is a surface
+  // sample's peak: the whole array filled at once would add to it), then
+  // sorted in parallel, millions on a solid (a patch between every two of its
+  // maxima; the order is total, so it is the sort's alone).
+  pieces.Claims.reserve(pieces.Claims.size() + total);
+  for (std::vector<Claim>& c : claims)
   {
-    offset[k + 1] = offset[k] + claims[k].size();
+    pieces.Claims.insert(pieces.Claims.end(), c.begin(), c.end());
+    std::vector<Claim>().swap(c);
   }
-  pieces.Claims.resize(offset.back());
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, patches.size(), CellBlock),
-    [&](const tbb::blocked_range<std::size_t>& r) {
-      for (std::size_t k = r.begin(); k != r.end(); ++k)
-      {
-        std::copy(claims[k].begin(), claims[k].end(), pieces.Claims.begin() + offset[k]);
-        std::vector<Claim>().swap(claims[k]);
-      }
-    });
   tbb::parallel_sort(pieces.Claims.begin(), pieces.Claims.end());
 }
 
