@@ -2,6 +2,7 @@
 
 #include "Arithmetic.h"
 #include "MemoryGuard.h"
+#include "StoredCriticalSimplices.h"
 
 #include <algorithm>
 #include <cmath>
@@ -50,26 +51,11 @@ Retriangulation::Retriangulation(const std::vector<Point3>& points, const BuildO
   progress(0.0, "Delaunay triangulation");
   this->Tri_ = std::make_unique<const Triangulation>(*this->Coords, progress.Range(0, 0.2));
   progress(0.2, "critical points");
-  try
-  {
-    this->Cs = FindCriticalSimplices(*this->Tri_, progress);
-  }
-  catch (const Degenerate&)
-  {
-    throw InputError(Mismatch()); // the stored perturbation did not remove every tie
-  }
-  if (this->Cs.Degenerate())
-  {
-    throw InputError(Mismatch());
-  }
-  const Triangulation& tri = *this->Tri_;
+  // The nodes name the critical simplices; each is checked on the new
+  // triangulation rather than every simplex classified again.
+  this->Cs = StoredCriticalSimplices(*this->Tri_, fc.Nodes, this->In.InputId, Mismatch(), progress);
   this->SetBases();
-  const Id m = tri.NumberOfVertices();
-  const Id nEdges = this->Cs.Edges.ValueCount();
-  const Id nFacets = static_cast<Id>(this->Cs.Facets.size());
-  const Id nCells = static_cast<Id>(this->Cs.Cells.size());
-  if (tri.Dimension() < 3 || m != n[0] || nEdges != n[1] || nFacets != n[2] || nCells != n[3] ||
-    fc.InfinityNode != this->Base3_ + nCells)
+  if (fc.InfinityNode != this->Base3_ + static_cast<Id>(this->Cs.Cells.size()))
   {
     throw InputError(Mismatch());
   }

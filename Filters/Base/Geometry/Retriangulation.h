@@ -1,6 +1,6 @@
-// The Delaunay triangulation and critical simplices of the points a flow complex
-// was built from, computed again (the floor cost) and checked against the
-// complex: what walking some of its patches later needs (the drawing of chosen
+// The Delaunay triangulation of the points a flow complex was built from,
+// computed again (the floor cost), with the critical simplices its nodes name,
+// checked on it (StoredCriticalSimplices.h): what walking some of its patches later needs (the drawing of chosen
 // nodes, deferred patches). Carrying them through a pipeline would cost more.
 #ifndef flowrecon_Retriangulation_h
 #define flowrecon_Retriangulation_h
@@ -24,7 +24,7 @@ class Retriangulation
 public:
   /// `fc` must be the flow complex BuildFlowComplex computed from `points` with
   /// options.Seed (its Nodes and Report.Attempts are used). Throws InputError
-  /// when the counts of critical simplices differ, or when the triangulation
+  /// when a node is not a critical simplex of the points, or when the triangulation
   /// would not fit in memory (`advice` says what to do); Aborted on request.
   /// Reports progress from 0 to 0.35 of `progress` (the builder's shares).
   Retriangulation(const std::vector<Point3>& points, const BuildOptions& options,
