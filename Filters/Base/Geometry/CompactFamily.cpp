@@ -63,10 +63,10 @@ CompactFamily::CompactFamily(const FlowComplex& fc, const std::vector<Id>& carri
       this->Candidates.push_back(static_cast<Id>(i));
     }
   }
-  this->Pieces = PrepareCompact(*re, nodes, this->Candidates, progress.Range(0.4, 0.85));
-  CompactCells cells = CellsOf(*re);
-  re.reset(); // the tables below are what a t_r change reads
-  this->CellVertices = std::move(cells.Vertices);
+  // The family is the triangulation's last user: its flow lines and recorded
+  // walks go as soon as the pieces no longer read them (before the search for
+  // voids, which runs while it is still held).
+  this->Pieces = PrepareCompact(*re, nodes, this->Candidates, progress.Range(0.4, 0.85), true);
 
   // The claims of each triangle, and the threshold above which it is written.
   const std::vector<CompactClaim>& claims = this->Pieces.Claims;
@@ -110,9 +110,24 @@ CompactFamily::CompactFamily(const FlowComplex& fc, const std::vector<Id>& carri
   sweep.Claims = &claims;
   sweep.GroupStart = &this->GroupStart;
   sweep.GroupEntry = &this->GroupEntry;
-  sweep.Maxima = &cells.Maxima;
+  const std::vector<std::int32_t> maxima = MaximumCells(*re);
+  sweep.Maxima = &maxima;
   this->Voids = SweepVoids(sweep, progress.Range(0.9, 0.97));
   std::vector<std::array<std::int32_t, 4>>().swap(this->Pieces.Neighbours);
+  // Of the cells, a t_r change writes the solid ones and those of voids: their
+  // vertices are kept, not every cell's (10^6 torus points: 17 M cells, 0.27
+  // GB, which a table made before the triangulation is freed added to the
+  // filter's peak).
+  this->SolidVertices = VerticesOfCells(*re, this->SolidCells);
+  {
+    std::vector<std::int32_t> voidCells(this->Voids.size());
+    for (std::size_t v = 0; v < voidCells.size(); ++v)
+    {
+      voidCells[v] = this->Voids[v].Cell;
+    }
+    this->VoidVertices = VerticesOfCells(*re, voidCells);
+  }
+  re.reset(); // the tables above are what a t_r change reads
 
   // When a triangle or a solid cell holds each candidate edge, and when any
   // written cell or selected edge uses each candidate sample. Edges are found
@@ -135,9 +150,9 @@ CompactFamily::CompactFamily(const FlowComplex& fc, const std::vector<Id>& carri
   {
     points = std::max(points, static_cast<std::size_t>(c.Triangle[2]) + 1);
   }
-  for (const std::int32_t c : this->SolidCells)
+  for (const auto& v : this->SolidVertices)
   {
-    points = std::max(points, static_cast<std::size_t>(this->CellVertices[c][3]) + 1);
+    points = std::max(points, static_cast<std::size_t>(v[3]) + 1);
   }
   std::vector<double> usedAbove(points, HUGE_VAL);
   std::vector<std::size_t> row(points + 1, 0);
@@ -180,9 +195,9 @@ CompactFamily::CompactFamily(const FlowComplex& fc, const std::vector<Id>& carri
   {
     touch(claims[this->GroupStart[g]].Triangle, 3, this->GroupEntry[g]);
   }
-  for (const std::int32_t c : this->SolidCells)
+  for (std::size_t k = 0; k < this->SolidCells.size(); ++k)
   {
-    touch(this->CellVertices[c], 4, this->NodeEntry[cellMaximum[c]]);
+    touch(this->SolidVertices[k], 4, this->NodeEntry[cellMaximum[this->SolidCells[k]]]);
   }
   for (Lone& s : this->Samples)
   {
@@ -209,8 +224,7 @@ void CompactFamily::At(double tr, std::vector<double>& nodeThreshold, CompactCom
   const auto solid = [&](std::int32_t c) {
     return c >= 0 && !cellMaximum.empty() && cellMaximum[c] >= 0 && in(cellMaximum[c]);
   };
-  const auto tetrahedron = [&](std::int32_t c) {
-    const auto& v = this->CellVertices[c];
+  const auto tetrahedron = [](const std::array<std::int32_t, 4>& v) {
     return std::array<Id, 4>{ { v[0], v[1], v[2], v[3] } };
   };
   nodeThreshold.assign(nodes.size(), std::nan(""));
@@ -275,11 +289,12 @@ void CompactFamily::At(double tr, std::vector<double>& nodeThreshold, CompactCom
     out.TriangleThreshold.push_back(e - b == 1 ? this->GroupEntry[g] : this->NodeEntry[c.First]);
     written.push_back(g);
   }
-  for (const std::int32_t c : this->SolidCells)
+  for (std::size_t k = 0; k < this->SolidCells.size(); ++k)
   {
+    const std::int32_t c = this->SolidCells[k];
     if (in(cellMaximum[c]))
     {
-      out.Tetrahedra.push_back(tetrahedron(c));
+      out.Tetrahedra.push_back(tetrahedron(this->SolidVertices[k]));
       out.TetrahedronNode.push_back(cellMaximum[c]);
     }
   }
@@ -301,7 +316,8 @@ void CompactFamily::At(double tr, std::vector<double>& nodeThreshold, CompactCom
   const auto wallAt = [&](std::int32_t g) { return g >= 0 && this->GroupEntry[g] < t; };
   std::vector<char> visited(voids.size(), 0);
   std::vector<std::size_t> region, stack;
-  std::vector<std::int32_t> filled;
+  std::vector<std::int32_t> filled;   // their cells
+  std::vector<std::size_t> filledAt; // and their places in voids
   for (std::size_t i = 0; i < voids.size(); ++i)
   {
     if (visited[i] || !active(i))
@@ -362,9 +378,10 @@ void CompactFamily::At(double tr, std::vector<double>& nodeThreshold, CompactCom
     ++out.FilledVoids;
     for (const std::size_t v : region)
     {
-      out.Tetrahedra.push_back(tetrahedron(voids[v].Cell));
+      out.Tetrahedra.push_back(tetrahedron(this->VoidVertices[v]));
       out.TetrahedronNode.push_back(wall);
       filled.push_back(voids[v].Cell);
+      filledAt.push_back(v);
     }
   }
   std::sort(filled.begin(), filled.end());
@@ -400,9 +417,9 @@ void CompactFamily::At(double tr, std::vector<double>& nodeThreshold, CompactCom
   // a filled void's cells hold what they touch.
   std::vector<std::pair<std::int32_t, std::int32_t>> filledEdges;
   std::vector<std::int32_t> filledPoints;
-  for (const std::int32_t c : filled)
+  for (const std::size_t at : filledAt)
   {
-    const auto& v = this->CellVertices[c];
+    const auto& v = this->VoidVertices[at];
     for (int a = 0; a < 4; ++a)
     {
       filledPoints.push_back(v[a]);

@@ -56,7 +56,6 @@ private:
   const FlowComplex& FC;
   double Tmax;
   CompactPieces Pieces; // without Neighbours: the void cells keep theirs
-  std::vector<std::array<std::int32_t, 4>> CellVertices; ///< input ids, sorted
   /// Per node, the threshold above which it is in (HUGE_VAL: never below T_max).
   std::vector<double> NodeEntry;
   /// The nodes in at T_max, sorted.
@@ -80,6 +79,9 @@ private:
   std::vector<double> GroupCover;
   std::vector<std::int32_t> SolidCells; ///< the cells that flow to a candidate maximum
   std::vector<VoidCell> Voids;
+  /// The input ids (sorted) of each of SolidCells and of each cell of Voids:
+  /// the only cells a t_r writes.
+  std::vector<std::array<std::int32_t, 4>> SolidVertices, VoidVertices;
   /// At's list of the written triangles' groups, kept like `out` (At is not
   /// to be called from two threads at once).
   mutable std::vector<std::size_t> Written;

@@ -1090,29 +1090,68 @@ CompactComplex SelectCompact(const CompactCells& cells, const std::vector<Node>&
   return Select(CellView(cells), nodes, pieces, selected, betti);
 }
 
-CompactCells CellsOf(const Retriangulation& re)
+namespace
+{
+
+std::array<std::int32_t, 4> VerticesOfCell(const Retriangulation& re, Id c)
 {
   const Triangulation& tri = re.Tri();
+  const std::array<Id, 4> t = InputSimplex<4>(re, tri.SortedVertices(tri.Cell(c)));
+  return { { static_cast<std::int32_t>(t[0]), static_cast<std::int32_t>(t[1]),
+    static_cast<std::int32_t>(t[2]), static_cast<std::int32_t>(t[3]) } };
+}
+
+void RequireNarrowIds(const Retriangulation& re)
+{
   if (re.Prepared().InputId.size() > static_cast<std::size_t>(INT32_MAX))
   {
     throw InputError("compact output: more than 2^31 samples");
   }
+}
+
+} // namespace
+
+CompactCells CellsOf(const Retriangulation& re)
+{
+  const Triangulation& tri = re.Tri();
+  RequireNarrowIds(re);
   CompactCells cells;
   cells.Vertices.resize(static_cast<std::size_t>(tri.NumberOfCells()));
   ParallelSlices(tri.NumberOfCells(), Id(1) << 16, Progress(), 0.0, 0.0, "compact cells",
     [&](Id from, Id to) {
       for (Id c = from; c < to; ++c)
       {
-        const std::array<Id, 4> t = InputSimplex<4>(re, tri.SortedVertices(tri.Cell(c)));
-        cells.Vertices[c] = { { static_cast<std::int32_t>(t[0]), static_cast<std::int32_t>(t[1]),
-          static_cast<std::int32_t>(t[2]), static_cast<std::int32_t>(t[3]) } };
+        cells.Vertices[c] = VerticesOfCell(re, c);
       }
     });
+  cells.Maxima = MaximumCells(re);
+  return cells;
+}
+
+std::vector<std::array<std::int32_t, 4>> VerticesOfCells(
+  const Retriangulation& re, const std::vector<std::int32_t>& ids)
+{
+  RequireNarrowIds(re);
+  std::vector<std::array<std::int32_t, 4>> vertices(ids.size());
+  ParallelSlices(static_cast<Id>(ids.size()), Id(1) << 16, Progress(), 0.0, 0.0, "compact cells",
+    [&](Id from, Id to) {
+      for (Id k = from; k < to; ++k)
+      {
+        vertices[static_cast<std::size_t>(k)] = VerticesOfCell(re, ids[static_cast<std::size_t>(k)]);
+      }
+    });
+  return vertices;
+}
+
+std::vector<std::int32_t> MaximumCells(const Retriangulation& re)
+{
+  std::vector<std::int32_t> maxima;
+  maxima.reserve(re.Critical().Cells.size());
   for (const CriticalCell& c : re.Critical().Cells)
   {
-    cells.Maxima.push_back(static_cast<std::int32_t>(c.Cell));
+    maxima.push_back(static_cast<std::int32_t>(c.Cell));
   }
-  return cells;
+  return maxima;
 }
 
 CompactComplex CompactReconstruction(const Retriangulation& re, const std::vector<Node>& nodes,

@@ -160,6 +160,12 @@ struct CompactCells
 
 /// The cells of `re` (input ids below 2^31; throws InputError otherwise).
 CompactCells CellsOf(const Retriangulation& re);
+/// The sorted input ids of the cells `ids` of `re` alone (as CellsOf): what a
+/// caller that frees the triangulation keeps of the cells it may write.
+std::vector<std::array<std::int32_t, 4>> VerticesOfCells(
+  const Retriangulation& re, const std::vector<std::int32_t>& ids);
+/// The cells of `re` that hold a maximum (CompactCells::Maxima).
+std::vector<std::int32_t> MaximumCells(const Retriangulation& re);
 
 /// The compact complex of `selected`, which must be among the candidates
 /// `pieces` were prepared for: the same complex as CompactReconstruction's, in
