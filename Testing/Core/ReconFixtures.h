@@ -9,12 +9,14 @@
 #include "FlowComplexBuilder.h"
 #include "Progress.h"
 #include "Reconstruction.h"
+#include "Retriangulation.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <random>
 #include <utility>
 #include <vector>
@@ -37,6 +39,22 @@ inline BuildOptions DiagramOnly()
   options.StableManifolds = false;
   options.UnstableManifolds = false;
   return options;
+}
+
+/// The flow complex of `points` (the Hasse diagram alone) with the builder's
+/// triangulation kept: its classification of the critical simplices, and what
+/// the compact output walks.
+struct Built
+{
+  FlowComplex Complex;
+  std::unique_ptr<Retriangulation> Re;
+};
+
+inline Built Build(const std::vector<Point3>& points)
+{
+  Built b;
+  b.Complex = BuildFlowComplex(points, DiagramOnly(), Progress(), &b.Re);
+  return b;
 }
 
 inline Node MakeNode(int index, double value, std::array<Id, 4> simplex)

@@ -35,22 +35,8 @@ namespace
 {
 using namespace flowrecon;
 
-/// The flow complex of `points` with its triangulation kept.
-struct Built
-{
-  FlowComplex Complex;
-  std::unique_ptr<Retriangulation> Re;
-};
-
-Built Build(const std::vector<Point3>& points)
-{
-  BuildOptions options;
-  options.StableManifolds = false;
-  options.UnstableManifolds = false;
-  Built b;
-  b.Complex = BuildFlowComplex(points, options, Progress(), &b.Re);
-  return b;
-}
+using fixtures::Build;
+using fixtures::Built;
 
 using fixtures::ReconstructionNodes;
 

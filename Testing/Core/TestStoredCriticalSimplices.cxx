@@ -9,6 +9,7 @@
 // perturbation its complex was built with.
 #include "Check.h"
 #include "Clouds.h"
+#include "ReconFixtures.h"
 
 #include "CriticalSimplices.h"
 #include "FlowComplexBuilder.h"
@@ -31,21 +32,8 @@ using namespace flowrecon;
 
 const char* const Refused = "refused";
 
-struct Built
-{
-  FlowComplex Complex;
-  std::unique_ptr<Retriangulation> Re; ///< the builder's, with its classification
-};
-
-Built Build(const std::vector<Point3>& points)
-{
-  BuildOptions options;
-  options.StableManifolds = false;
-  options.UnstableManifolds = false;
-  Built b;
-  b.Complex = BuildFlowComplex(points, options, Progress(), &b.Re);
-  return b;
-}
+using fixtures::Build;
+using fixtures::Built;
 
 bool Same(const CriticalSimplices& a, const CriticalSimplices& b)
 {
